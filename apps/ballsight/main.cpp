@@ -1,0 +1,33 @@
+// ballsight: the command line. Thin: every subcommand parses options and calls the library.
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "ballsight/core/error.hpp"
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ballsight: vision for ball-collecting and ball-playing robots"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ballsight 0.1.0");
+
+  CLI::App* sim = app.add_subcommand("sim", "Render simulated scenes with their ground truth");
+  sim->require_subcommand(1);
+  ballsight::app::add_sim_omni_command(*sim);
+  ballsight::app::add_sim_court_command(*sim);
+  ballsight::app::add_demo_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const ballsight::InputError& e) {
+    std::cerr << "ballsight: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "ballsight: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,22 @@
+#pragma once
+// Camera effects applied to a rendered frame: brightness gain, blur and sensor noise.
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+
+namespace ballsight::sim {
+
+struct ImageEffects {
+  double brightness_gain = 1.0;  // multiplies every channel
+  double blur_sigma_px = 0.0;    // Gaussian blur, 0 = none
+  double noise_sigma = 0.0;      // Gaussian sensor noise in grey levels, 0 = none
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+/// Applies the effects in camera order (light -> optics -> sensor), in place. Noise is drawn
+/// from `seed`, so the same seed gives the same bytes.
+void apply_image_effects(cv::Mat& bgr, const ImageEffects& effects, std::uint64_t seed);
+
+}  // namespace ballsight::sim
