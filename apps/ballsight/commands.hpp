@@ -6,8 +6,6 @@
 
 namespace ballsight::app {
 
-void add_sim_omni_command(CLI::App& sim);
-void add_sim_court_command(CLI::App& sim);
-void add_demo_command(CLI::App& app);
+// Registrations, one per command file (apps/ballsight/<name>_command.cpp).
 
 }  // namespace ballsight::app
