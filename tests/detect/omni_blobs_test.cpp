@@ -1,4 +1,4 @@
-#include "ballsight/detect/ball_blob.hpp"
+#include "ballsight/detect/omni_blobs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -28,11 +28,11 @@ cv::Mat scene_with_discs(const std::vector<std::pair<Vec2, double>>& discs) {
   return bgr;
 }
 
-TEST(OmniBallFinder, FindsDiscsWithSubPixelCentroids) {
+TEST(OmniBlobFinder, FindsDiscsWithSubPixelCentroids) {
   const std::vector<std::pair<Vec2, double>> discs = {{{420.3, 200.7}, 9.0}, {{250.6, 330.2}, 4.0}};
   const cv::Mat bgr = scene_with_discs(discs);
-  const OmniBallFinder finder(bgr.size(), OmniBlobOptions{});
-  const std::vector<BallBlob> blobs = finder.find(bgr, orange_table(), 1);
+  const OmniBlobFinder finder(bgr.size(), OmniBlobOptions{});
+  const std::vector<OmniBlob> blobs = finder.find(bgr, orange_table(), 1);
   ASSERT_EQ(blobs.size(), 2u);
   EXPECT_GT(blobs[0].area_px, blobs[1].area_px);
   for (size_t i = 0; i < 2; ++i) {
@@ -45,18 +45,18 @@ TEST(OmniBallFinder, FindsDiscsWithSubPixelCentroids) {
   }
 }
 
-TEST(OmniBallFinder, IgnoresTheRobotBodyAndBeyondTheMirror) {
+TEST(OmniBlobFinder, IgnoresTheRobotBodyAndBeyondTheMirror) {
   const cv::Mat bgr = scene_with_discs({{kCenter, 10.0}, {{630.0, 20.0}, 6.0}});
-  const OmniBallFinder finder(bgr.size(), OmniBlobOptions{});
+  const OmniBlobFinder finder(bgr.size(), OmniBlobOptions{});
   EXPECT_TRUE(finder.find(bgr, orange_table(), 1).empty());
 }
 
-TEST(OmniBallFinder, RejectsWrongImages) {
-  const OmniBallFinder finder({640, 480}, OmniBlobOptions{});
+TEST(OmniBlobFinder, RejectsWrongImages) {
+  const OmniBlobFinder finder({640, 480}, OmniBlobOptions{});
   EXPECT_THROW(finder.find(cv::Mat(240, 320, CV_8UC3), orange_table(), 1), InputError);
   OmniBlobOptions bad;
   bad.seed_step_px = 0;
-  EXPECT_THROW(OmniBallFinder({640, 480}, bad), InputError);
+  EXPECT_THROW(OmniBlobFinder({640, 480}, bad), InputError);
 }
 
 TEST(RadialScan, ReturnsTheFirstBallPixelOfTheLastRayThatMeetsTheBall) {

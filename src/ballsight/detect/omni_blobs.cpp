@@ -1,4 +1,4 @@
-#include "ballsight/detect/ball_blob.hpp"
+#include "ballsight/detect/omni_blobs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@ void OmniBlobOptions::validate() const {
           "need 1 <= min_area_px <= max_area_px");
 }
 
-OmniBallFinder::OmniBallFinder(cv::Size image_size, const OmniBlobOptions& options)
+OmniBlobFinder::OmniBlobFinder(cv::Size image_size, const OmniBlobOptions& options)
     : size_(image_size), options_(options) {
   options_.validate();
   require(image_size.width > 0 && image_size.height > 0, "blob finder", "empty image size");
@@ -36,7 +36,7 @@ namespace {
 // Radial extent of the blob's pixels along the ray through its centroid: pixels whose centre
 // lies within a pixel of that ray, extended by half a pixel on either side.
 void measure_radial_extent(const std::vector<int>& pixels, int width, const Vec2& center,
-                           BallBlob& blob) {
+                           OmniBlob& blob) {
   const Vec2 direction = (blob.centroid_px - center).normalized();
   double inner = std::numeric_limits<double>::max(), outer = 0.0;
   for (int index : pixels) {
@@ -53,16 +53,16 @@ void measure_radial_extent(const std::vector<int>& pixels, int width, const Vec2
 
 }  // namespace
 
-std::vector<BallBlob> OmniBallFinder::find(const cv::Mat& bgr, const ColorClassTable& table,
+std::vector<OmniBlob> OmniBlobFinder::find(const cv::Mat& bgr, const ColorClassTable& table,
                                            ColorClassMask mask) const {
-  require(bgr.type() == CV_8UC3 && bgr.size() == size_, "ball finder",
+  require(bgr.type() == CV_8UC3 && bgr.size() == size_, "blob finder",
           "expected a " + std::to_string(size_.width) + "x" + std::to_string(size_.height) +
               " BGR image, got " + std::to_string(bgr.cols) + "x" + std::to_string(bgr.rows));
-  require(bgr.isContinuous(), "ball finder", "expected a continuous image");
+  require(bgr.isContinuous(), "blob finder", "expected a continuous image");
   const auto* pixels = bgr.ptr<cv::Vec3b>(0);
   const int width = size_.width;
   std::vector<std::uint8_t> visited(static_cast<size_t>(size_.area()), 0);
-  std::vector<BallBlob> blobs;
+  std::vector<OmniBlob> blobs;
   std::vector<int> stack, members;
   for (int seed : seeds_) {
     if (visited[static_cast<size_t>(seed)] || !(table.classify(pixels[seed]) & mask)) continue;
@@ -92,7 +92,7 @@ std::vector<BallBlob> OmniBallFinder::find(const cv::Mat& bgr, const ColorClassT
     }
     const int area = static_cast<int>(members.size());
     if (area < options_.min_area_px || area > options_.max_area_px) continue;
-    BallBlob blob;
+    OmniBlob blob;
     blob.area_px = area;
     blob.centroid_px = Vec2(sum_x / area, sum_y / area);
     blob.bbox = cv::Rect(min_x, min_y, max_x - min_x + 1, max_y - min_y + 1);
@@ -101,7 +101,7 @@ std::vector<BallBlob> OmniBallFinder::find(const cv::Mat& bgr, const ColorClassT
     blobs.push_back(blob);
   }
   std::sort(blobs.begin(), blobs.end(),
-            [](const BallBlob& a, const BallBlob& b) { return a.area_px > b.area_px; });
+            [](const OmniBlob& a, const OmniBlob& b) { return a.area_px > b.area_px; });
   return blobs;
 }
 

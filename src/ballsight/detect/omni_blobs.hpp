@@ -1,8 +1,8 @@
 #pragma once
-// ballsight's omni ball finder: seeds on a sparse grid inside the mirror annulus, grows each seed
-// into a 4-connected blob through the colour-class table (only pixels near a ball are ever
-// classified) and measures the whole blob: area, sub-pixel centroid, angular position and the
-// radial extent of the silhouette around the image centre.
+// ballsight's omni blob finder (balls and calibration markers): seeds on a sparse grid inside the
+// mirror annulus, grows each seed into a 4-connected blob through the colour-class table (only
+// pixels near a blob are ever classified) and measures the whole blob: area, sub-pixel centroid,
+// angular position and the radial extent of the silhouette around the image centre.
 
 #include <opencv2/core.hpp>
 #include <vector>
@@ -24,7 +24,7 @@ struct OmniBlobOptions {
   void validate() const;
 };
 
-struct BallBlob {
+struct OmniBlob {
   Vec2 centroid_px = Vec2::Zero();  // mean of the blob's pixel centres
   int area_px = 0;
   cv::Rect bbox;
@@ -33,12 +33,12 @@ struct BallBlob {
   double outer_radius_px = 0.0;
 };
 
-class OmniBallFinder {
+class OmniBlobFinder {
  public:
-  OmniBallFinder(cv::Size image_size, const OmniBlobOptions& options);
+  OmniBlobFinder(cv::Size image_size, const OmniBlobOptions& options);
 
   /// Every blob of the given colour classes, largest first.
-  std::vector<BallBlob> find(const cv::Mat& bgr, const ColorClassTable& table,
+  std::vector<OmniBlob> find(const cv::Mat& bgr, const ColorClassTable& table,
                              ColorClassMask mask) const;
 
  private:
