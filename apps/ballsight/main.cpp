@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "ballsight/core/error.hpp"
 #include "commands.hpp"
@@ -11,9 +12,14 @@ int main(int argc, char** argv) {
   CLI::App app{"ballsight: vision for ball-collecting and ball-playing robots"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "ballsight 0.1.0");
+  // Errors from option parsing stay on one line, as the library's errors do.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "ballsight: error: " + std::string(e.what()) + " (see --help)\n";
+  });
 
   CLI::App* sim = app.add_subcommand("sim", "Render simulated scenes with their ground truth");
   sim->require_subcommand(1);
+  ballsight::app::add_sim_omni_command(*sim);
 
   try {
     app.parse(argc, argv);
