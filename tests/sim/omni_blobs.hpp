@@ -2,6 +2,7 @@
 // Test helpers: segment the simulator's object colours in a clean render (cv::inRange) and
 // measure blobs (cv::moments, connected components), independently of the renderer.
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <vector>
@@ -19,12 +20,22 @@ inline cv::Mat ball_mask(const cv::Mat& bgr) {
   return mask;
 }
 
-/// The markers' flat colour, exactly.
-inline cv::Mat marker_mask(const cv::Mat& bgr, const OmniPalette& palette = {}) {
-  cv::Mat mask;
-  const cv::Scalar c(palette.marker_bgr[0], palette.marker_bgr[1], palette.marker_bgr[2]);
-  cv::inRange(bgr, c, c, mask);
-  return mask;
+/// How much of each pixel a flat `colour` covers (CV_32F in [0, 1]), from a render `with` the
+/// coloured objects and one `without` them: with = a * colour + (1 - a) * without.
+inline cv::Mat coverage(const cv::Mat& with, const cv::Mat& without, const cv::Vec3b& colour) {
+  cv::Mat a(with.size(), CV_32F, cv::Scalar(0));
+  for (int y = 0; y < with.rows; ++y) {
+    for (int x = 0; x < with.cols; ++x) {
+      const cv::Vec3d i(with.at<cv::Vec3b>(y, x));
+      const cv::Vec3d f(without.at<cv::Vec3b>(y, x));
+      const cv::Vec3d m(colour);
+      const double denominator = (m - f).dot(m - f);
+      if (denominator > 0.0)
+        a.at<float>(y, x) =
+            static_cast<float>(std::clamp((i - f).dot(m - f) / denominator, 0.0, 1.0));
+    }
+  }
+  return a;
 }
 
 struct Blob {

@@ -16,7 +16,7 @@ struct MarkerLayout {
   double distance_step_m = 0.5;
   /// Marker diameter as a fraction of the distance to its nearest neighbour: large enough for
   /// the far markers to span several pixels, small enough to keep a gap between neighbours.
-  double fill = 0.72;
+  double fill = 0.7;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

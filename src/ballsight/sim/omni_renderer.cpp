@@ -21,6 +21,26 @@ bool same_rig(const OmniRigParams& a, const OmniRigParams& b) {
          a.mirror_radius_px == b.mirror_radius_px;
 }
 
+// Objects are sampled on a kGrid x kGrid grid of sub-pixel offsets in (-0.5, 0.5).
+constexpr int kGrid = 4;
+constexpr int kSamples = kGrid * kGrid;
+
+template <class F>
+void for_each_subsample(F&& f) {
+  for (int sy = 0; sy < kGrid; ++sy) {
+    for (int sx = 0; sx < kGrid; ++sx) f((sx + 0.5) / kGrid - 0.5, (sy + 0.5) / kGrid - 0.5);
+  }
+}
+
+// Lays `hits` of kSamples samples whose colours sum to `sum` over the pixel.
+void blend(cv::Vec3b& pixel, const Vec3& sum, int hits) {
+  if (hits == 0) return;
+  const int rest = kSamples - hits;
+  for (int c = 0; c < 3; ++c) {
+    pixel[c] = cv::saturate_cast<uchar>((sum[c] + rest * pixel[c]) / kSamples);
+  }
+}
+
 // The sun of the scene, high above the field.
 Vec3 to_light_in_field() {
   return Vec3(0.3, -0.2, 1.0).normalized();
@@ -101,18 +121,53 @@ void OmniRenderer::shade_floor(const OmniScene& scene, const MslField& field, cv
   }
 }
 
+template <class V>
+OmniRenderer::Local<V> OmniRenderer::local(const std::vector<V>& values, int x, int y,
+                                           PixelKind least) const {
+  const int w = rig_.params().width;
+  const int h = rig_.params().height;
+  const auto usable = [&](int u, int v) {
+    return u >= 0 && v >= 0 && u < w && v < h &&
+           kind_[static_cast<std::size_t>(v) * w + u] >= least;
+  };
+  const auto value = [&](int u, int v) { return values[static_cast<std::size_t>(v) * w + u]; };
+  // Central difference where both neighbours exist, one-sided at an edge, flat without any.
+  const auto derivative = [&](int ux, int uy) -> V {
+    const bool ahead = usable(x + ux, y + uy);
+    const bool behind = usable(x - ux, y - uy);
+    if (ahead && behind) return 0.5 * (value(x + ux, y + uy) - value(x - ux, y - uy));
+    if (ahead) return value(x + ux, y + uy) - value(x, y);
+    if (behind) return value(x, y) - value(x - ux, y - uy);
+    return V::Zero();
+  };
+  return {value(x, y), derivative(1, 0), derivative(0, 1)};
+}
+
 void OmniRenderer::draw_marker(const OmniScene& scene, const FloorMarker& marker,
                                cv::Mat& bgr) const {
   const Vec2 center = robot_from_field_point(scene.robot_pose, marker.position_in_field);
-  const double radius2 = marker.radius_m * marker.radius_m;
-  const cv::Rect box = image_box(floor_disc_rim(center, marker.radius_m, kOutlineSamples));
+  const double radius = marker.radius_m;
+  const cv::Rect box = image_box(floor_disc_rim(center, radius, kOutlineSamples));
+  const cv::Vec3b& colour = scene.palette.marker_bgr;
   for (int y = box.y; y < box.y + box.height; ++y) {
     auto* row = bgr.ptr<cv::Vec3b>(y);
     for (int x = box.x; x < box.x + box.width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * bgr.cols + x;
-      if (kind_[i] == PixelKind::kFloor && (floor_[i] - center).squaredNorm() <= radius2) {
-        row[x] = scene.palette.marker_bgr;
+      if (kind_[i] != PixelKind::kFloor) continue;
+      const Local<Vec2> floor = local(floor_, x, y, PixelKind::kFloor);
+      const double reach = 0.5 * (floor.d_dx.norm() + floor.d_dy.norm());  // pixel's half size
+      const double distance = (floor.value - center).norm();
+      if (distance > radius + reach) continue;
+      int hits = 0;
+      if (distance < radius - reach) {
+        hits = kSamples;
+      } else {
+        for_each_subsample([&](double dx, double dy) {
+          hits += (floor.at(dx, dy) - center).squaredNorm() <= radius * radius ? 1 : 0;
+        });
       }
+      const Vec3 sum = hits * Vec3(colour[0], colour[1], colour[2]);
+      blend(row[x], sum, hits);
     }
   }
 }
@@ -132,10 +187,20 @@ void OmniRenderer::draw_ball(const OmniScene& scene, cv::Mat& bgr) const {
     for (int x = box.x; x < box.x + box.width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * bgr.cols + x;
       if (kind_[i] == PixelKind::kOutsideMirror) continue;
-      const std::optional<double> t = intersect_sphere(viewpoint, ray_[i], center, ball.radius_m);
-      if (!t) continue;
-      const Vec3 normal = (viewpoint + *t * ray_[i] - center) / ball.radius_m;
-      row[x] = shade(scene.palette.ball_bgr, normal, to_light);
+      const Local<Vec3> ray = local(ray_, x, y, PixelKind::kAboveHorizon);
+      int hits = 0;
+      Vec3 sum = Vec3::Zero();
+      for_each_subsample([&](double dx, double dy) {
+        const Vec3 direction = ray.at(dx, dy).normalized();
+        const std::optional<double> t =
+            intersect_sphere(viewpoint, direction, center, ball.radius_m);
+        if (!t) return;
+        const Vec3 normal = (viewpoint + *t * direction - center) / ball.radius_m;
+        const cv::Vec3b c = shade(scene.palette.ball_bgr, normal, to_light);
+        sum += Vec3(c[0], c[1], c[2]);
+        ++hits;
+      });
+      blend(row[x], sum, hits);
     }
   }
 }

@@ -1,8 +1,10 @@
 #pragma once
 // Renders an omni scene by casting each pixel's ray from the rig's single effective viewpoint:
 // the rays (and their floor hits in the robot frame) are computed once per rig; a frame then
-// shades the floor for every pixel and ray-casts only the pixels inside each object's image
-// bounding box. Pixels outside the mirror circle are black.
+// shades the floor for every pixel (one sample per pixel) and ray-casts only the pixels inside
+// each object's image bounding box, 4x4 samples per pixel, so that object edges are anti-aliased
+// (pixel colour = the covered fraction's colour blended over the floor). Pixels outside the
+// mirror circle are black.
 
 #include <cstdint>
 #include <opencv2/core.hpp>
@@ -33,11 +35,22 @@ class OmniRenderer {
  private:
   enum class PixelKind : std::uint8_t { kOutsideMirror, kAboveHorizon, kFloor };
 
+  /// A per-pixel quantity near a pixel centre to first order: value + dx * d_dx + dy * d_dy for
+  /// sub-pixel offsets (dx, dy).
+  template <class V>
+  struct Local {
+    V value, d_dx, d_dy;
+    V at(double dx, double dy) const { return value + dx * d_dx + dy * d_dy; }
+  };
+
   void shade_floor(const OmniScene& scene, const MslField& field, cv::Mat& bgr) const;
   void draw_marker(const OmniScene& scene, const FloorMarker& marker, cv::Mat& bgr) const;
   void draw_ball(const OmniScene& scene, cv::Mat& bgr) const;
   /// Pixel rectangle around the image of robot-frame outline points, clipped to the image.
   cv::Rect image_box(const std::vector<Vec3>& outline_in_robot) const;
+  /// `values` around pixel (x, y) from differences with the neighbours of kind >= `least`.
+  template <class V>
+  Local<V> local(const std::vector<V>& values, int x, int y, PixelKind least) const;
 
   OmniRig rig_;
   std::vector<PixelKind> kind_;  // row-major, one per pixel

@@ -21,6 +21,15 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
   return lo + (hi - lo) * unit;
 }
 
+// An independent stream per frame (splitmix64 of seed and frame), so that a frame does not
+// depend on what the frames before it drew.
+std::mt19937_64 frame_rng(std::uint64_t seed, int frame) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (static_cast<std::uint64_t>(frame) + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return std::mt19937_64(z ^ (z >> 31));
+}
+
 OmniRigParams rig_params(const OmniScenarioOptions& options, std::mt19937_64& rng) {
   // Always draw all three so that overriding one does not change the rest of the scenario.
   const double tilt_deg = uniform(rng, 1.0, 2.0);
@@ -75,11 +84,12 @@ void OmniScenarioOptions::validate() const {
 
 OmniScenario make_omni_scenario(const OmniScenarioOptions& options) {
   options.validate();
-  std::mt19937_64 rng(options.seed);
+  std::mt19937_64 rig_rng(options.seed);
   OmniScenario scenario;
-  scenario.rig = rig_params(options, rng);
+  scenario.rig = rig_params(options, rig_rng);
   const MslField field;
   for (int frame = 0; frame < options.frames; ++frame) {
+    std::mt19937_64 rng = frame_rng(options.seed, frame);
     OmniScene scene;
     scene.rig = scenario.rig;
     scene.field = field.spec();

@@ -1,8 +1,8 @@
 #pragma once
 // Deterministic omni scenarios: one misaligned rig (as the omnivision paper's robot), a robot at
 // random poses on the field and a ball 0.5-5 m away, optionally preceded by a calibration frame
-// showing the paper's marker layout. Everything is drawn from one std::mt19937_64 seeded with
-// `seed` (portable: the draws do not use the standard library's distributions).
+// showing the paper's marker layout. Everything is drawn from std::mt19937_64 streams seeded from
+// `seed` (one for the rig, one per frame; portable: no standard library distributions).
 
 #include <cstdint>
 #include <optional>

@@ -90,8 +90,7 @@ OmniMappingTable sample_omni_mapping(const OmniRig& rig, double theta_step_deg,
                                      double radius_step_px) {
   OmniMappingTable table{theta_step_deg, radius_step_px, {}};
   for (double theta = 0.0; theta < 360.0 - 1e-9; theta += theta_step_deg) {
-    for (double r = radius_step_px; r <= rig.params().mirror_radius_px + 1e-9;
-         r += radius_step_px) {
+    for (double r = radius_step_px; r < rig.params().mirror_radius_px - 1e-6; r += radius_step_px) {
       const Vec2 pixel = pixel_from_image_polar({theta, r}, rig.principal_point());
       const std::optional<Vec2> ground = rig.ground_from_pixel(pixel);
       table.samples.push_back(

@@ -45,7 +45,8 @@ struct OmniMarkerTruth {
 };
 
 /// The true mapping sampled on an image-polar grid around the principal point (Algorithm 2 of
-/// the omnivision paper): every `theta_step_deg` and every `radius_step_px`.
+/// the omnivision paper): every `theta_step_deg` from 0 and every `radius_step_px` from one step
+/// to the last step strictly inside the mirror circle.
 struct OmniMappingSample {
   double theta_deg = 0.0;
   double radius_px = 0.0;
