@@ -1,5 +1,7 @@
 // `ballsight sim omni`: renders a deterministic omni scenario to PNG images and truth JSON files.
 
+#include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -23,6 +25,7 @@ namespace {
 struct SimOmniArgs {
   std::filesystem::path out;
   sim::OmniScenarioOptions scenario;
+  std::string seed = "1";                       // parsed strictly: CLI11 wraps "-5"
   std::optional<std::string> center_offset_px;  // "X,Y"
   bool no_markers = false;
 };
@@ -37,6 +40,15 @@ Vec2 parse_pixel_pair(const std::string& text, const std::string& option) {
   return {x, y};
 }
 
+std::uint64_t parse_seed(const std::string& text) {
+  std::uint64_t seed = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, seed);
+  require(!text.empty() && error == std::errc() && stop == end, "--seed",
+          "expected an integer in [0, 2^64), got '" + text + "'");
+  return seed;
+}
+
 std::string frame_name(int index, const char* extension) {
   char name[32];
   std::snprintf(name, sizeof(name), "omni_%04d.%s", index, extension);
@@ -44,6 +56,7 @@ std::string frame_name(int index, const char* extension) {
 }
 
 void run(SimOmniArgs args) {
+  args.scenario.seed = parse_seed(args.seed);
   if (args.center_offset_px) {
     args.scenario.center_offset_px = parse_pixel_pair(*args.center_offset_px, "--center-offset-px");
   }
@@ -72,8 +85,12 @@ void add_sim_omni_command(CLI::App& sim) {
       "Render an omnidirectional-camera scenario on an MSL field: omni_NNNN.png images and one "
       "truth JSON per image (docs/sim-omni.md). Frame 0 shows the calibration markers unless "
       "--no-markers; the others a ball 0.5-5 m from the robot. Same seed, same bytes.");
-  cmd->add_option("--out", args->out, "Output folder (created if missing)")->required();
-  cmd->add_option("--seed", args->scenario.seed, "Scenario seed")->capture_default_str();
+  cmd->add_option("--out", args->out, "Output folder (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  cmd->add_option("--seed", args->seed, "Scenario seed, an integer in [0, 2^64)")
+      ->type_name("UINT")
+      ->capture_default_str();
   cmd->add_option("--frames", args->scenario.frames, "Number of frames, 1..10000")
       ->capture_default_str();
   cmd->add_option("--tilt-deg", args->scenario.tilt_deg,
@@ -82,7 +99,8 @@ void add_sim_omni_command(CLI::App& sim) {
                   "Robot bearing the axis tilts towards, deg (default: drawn from the seed)");
   cmd->add_option("--center-offset-px", args->center_offset_px,
                   "Mirror centre offset from the image centre X,Y in px, at most 50 px "
-                  "(default: 3-7 px drawn from the seed)");
+                  "(default: 3-7 px drawn from the seed)")
+      ->type_name("X,Y");
   cmd->add_option("--noise", args->scenario.effects.noise_sigma,
                   "Gaussian sensor noise sigma, 0..64 grey levels")
       ->capture_default_str();
