@@ -88,10 +88,10 @@ TEST(OmniTruthJson, RoundTripsEveryField) {
   const OmniScene scene = calibration_scene();
   const OmniTruth truth = make_omni_truth(scene, OmniRig(scene.rig));
   const std::string text = omni_truth_json_text(truth);
-  const OmniTruth back = omni_truth_from_json(nlohmann::ordered_json::parse(text), "test");
+  const OmniTruth back = omni_truth_from_json(Json::parse(text), "test");
   // Everything but the table's distances (cm in the file, m in memory) comes back bit for bit.
-  nlohmann::ordered_json original = omni_truth_to_json(truth);
-  nlohmann::ordered_json again = omni_truth_to_json(back);
+  Json original = omni_truth_to_json(truth);
+  Json again = omni_truth_to_json(back);
   original.erase("mapping");
   again.erase("mapping");
   EXPECT_EQ(again, original);
@@ -115,9 +115,8 @@ TEST(OmniTruthJson, RoundTripsEveryField) {
 
 TEST(OmniTruthJson, NamesTheBadOrMissingKey) {
   const OmniScene scene = calibration_scene();
-  const nlohmann::ordered_json good =
-      omni_truth_to_json(make_omni_truth(scene, OmniRig(scene.rig)));
-  const auto message = [](const nlohmann::ordered_json& doc) {
+  const Json good = omni_truth_to_json(make_omni_truth(scene, OmniRig(scene.rig)));
+  const auto message = [](const Json& doc) {
     try {
       omni_truth_from_json(doc, "scene.json");
     } catch (const InputError& e) {
@@ -125,7 +124,7 @@ TEST(OmniTruthJson, NamesTheBadOrMissingKey) {
     }
     return std::string("no error");
   };
-  nlohmann::ordered_json doc = good;
+  Json doc = good;
   doc["robot"].erase("heading_deg");
   EXPECT_EQ(message(doc), "scene.json: truth.robot.heading_deg: missing");
   doc = good;
@@ -134,7 +133,7 @@ TEST(OmniTruthJson, NamesTheBadOrMissingKey) {
   doc = good;
   doc["version"] = 99;
   EXPECT_NE(message(doc).find("truth.version"), std::string::npos);
-  EXPECT_NE(message(nlohmann::ordered_json::array()).find("expected an object"), std::string::npos);
+  EXPECT_NE(message(Json::array()).find("expected an object"), std::string::npos);
 }
 
 }  // namespace

@@ -14,8 +14,10 @@ struct MarkerLayout {
   double min_distance_m = 0.6;
   double max_distance_m = 4.6;
   double distance_step_m = 0.5;
-  /// Marker diameter as a fraction of the distance to its nearest neighbour: large enough for
-  /// the far markers to span several pixels, small enough to keep a gap between neighbours.
+  /// Marker diameter as a fraction of the distance to its nearest neighbour. With the default
+  /// rig the rings beyond 4 m are ~5 px apart in the image, so this is a narrow window: 0.7 makes
+  /// the far markers ~3.4 px thick with a ~1.6 px gap (0.72 can merge neighbours at half
+  /// coverage, 0.67 leaves some 2 px thick; docs/sim-omni.md).
   double fill = 0.7;
 
   /// Throws InputError naming the first invalid field.

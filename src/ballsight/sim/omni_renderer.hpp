@@ -33,6 +33,7 @@ class OmniRenderer {
   OmniFrame render(const OmniScene& scene) const;
 
  private:
+  // Ordered: a kind has everything the kinds before it have (a ray, then also a floor hit).
   enum class PixelKind : std::uint8_t { kOutsideMirror, kAboveHorizon, kFloor };
 
   /// A per-pixel quantity near a pixel centre to first order: value + dx * d_dx + dy * d_dy for

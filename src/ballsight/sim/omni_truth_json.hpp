@@ -1,10 +1,10 @@
 #pragma once
-// The omni truth as JSON (nlohmann), the format `ballsight sim omni` writes next to each image.
-// Every field, its unit and its axes are documented in docs/sim-omni.md.
+// The omni truth as JSON, the format `ballsight sim omni` writes next to each image. Every field,
+// its unit and its axes are documented in docs/sim-omni.md.
 
-#include <nlohmann/json.hpp>
 #include <string>
 
+#include "ballsight/sim/json_io.hpp"
 #include "ballsight/sim/omni_truth.hpp"
 
 namespace ballsight::sim {
@@ -12,12 +12,12 @@ namespace ballsight::sim {
 inline constexpr const char* kOmniTruthFormat = "ballsight.sim.omni.truth";
 inline constexpr int kOmniTruthVersion = 1;
 
-nlohmann::ordered_json omni_truth_to_json(const OmniTruth& truth);
+Json omni_truth_to_json(const OmniTruth& truth);
 
-/// The document as text: indented objects, arrays of numbers on one line, a final newline.
+/// The document as the file's text (json_text).
 std::string omni_truth_json_text(const OmniTruth& truth);
 
 /// Parses a truth document; throws InputError naming `source` and the bad or missing key.
-OmniTruth omni_truth_from_json(const nlohmann::ordered_json& document, const std::string& source);
+OmniTruth omni_truth_from_json(const Json& document, const std::string& source);
 
 }  // namespace ballsight::sim
