@@ -221,7 +221,6 @@ OmniFrame OmniRenderer::render(const OmniScene& scene) const {
 }
 
 OmniFrame render_omni_scene(const OmniScene& scene) {
-  scene.validate();
   return OmniRenderer(scene.rig).render(scene);
 }
 

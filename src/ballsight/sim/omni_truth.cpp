@@ -4,6 +4,7 @@
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/conventions.hpp"
+#include "ballsight/core/error.hpp"
 #include "ballsight/sim/raycast.hpp"
 #include "ballsight/sim/silhouette.hpp"
 
@@ -88,9 +89,16 @@ RobotRange robot_range(const Vec2& p_in_robot) {
 
 OmniMappingTable sample_omni_mapping(const OmniRig& rig, double theta_step_deg,
                                      double radius_step_px) {
+  require(std::isfinite(theta_step_deg) && theta_step_deg > 0.0 && theta_step_deg <= 360.0,
+          "mapping table", "theta_step_deg must be in (0, 360]");
+  require(std::isfinite(radius_step_px) && radius_step_px >= 0.1, "mapping table",
+          "radius_step_px must be at least 0.1 px");
   OmniMappingTable table{theta_step_deg, radius_step_px, {}};
-  for (double theta = 0.0; theta < 360.0 - 1e-9; theta += theta_step_deg) {
-    for (double r = radius_step_px; r < rig.params().mirror_radius_px - 1e-6; r += radius_step_px) {
+  const double last_radius = rig.params().mirror_radius_px - 1e-6;  // strictly inside
+  for (int i = 0; i * theta_step_deg < 360.0 - 1e-9; ++i) {
+    const double theta = i * theta_step_deg;
+    for (int j = 1; j * radius_step_px < last_radius; ++j) {
+      const double r = j * radius_step_px;
       const Vec2 pixel = pixel_from_image_polar({theta, r}, rig.principal_point());
       const std::optional<Vec2> ground = rig.ground_from_pixel(pixel);
       table.samples.push_back(
