@@ -8,4 +8,7 @@ namespace ballsight::app {
 
 // Registrations, one per command file (apps/ballsight/<name>_command.cpp).
 
+/// `sim omni`: omnidirectional-camera scenes with their truth (on the `sim` subcommand).
+void add_sim_omni_command(CLI::App& sim);
+
 }  // namespace ballsight::app

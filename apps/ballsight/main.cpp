@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
 
   CLI::App* sim = app.add_subcommand("sim", "Render simulated scenes with their ground truth");
   sim->require_subcommand(1);
+  ballsight::app::add_sim_omni_command(*sim);
 
   try {
     app.parse(argc, argv);
