@@ -8,4 +8,7 @@ namespace ballsight::app {
 
 // Registrations, one per command file (apps/ballsight/<name>_command.cpp).
 
+/// `omni inspect` (omni_inspect_command.cpp), registered on the `omni` group.
+void add_omni_inspect_command(CLI::App& omni);
+
 }  // namespace ballsight::app

@@ -15,6 +15,11 @@ int main(int argc, char** argv) {
   CLI::App* sim = app.add_subcommand("sim", "Render simulated scenes with their ground truth");
   sim->require_subcommand(1);
 
+  CLI::App* omni = app.add_subcommand(
+      "omni", "Omnidirectional camera: calibration, lookup tables, ball localisation");
+  omni->require_subcommand(1);
+  ballsight::app::add_omni_inspect_command(*omni);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
