@@ -96,6 +96,7 @@ InspectedLut read_lut_for_inspection(const std::filesystem::path& path, LutForma
   if (format == LutFormat::automatic) {
     const std::string bytes = read_file(path);
     const std::size_t iris_bytes = 2u * IrisLut::kDirections * IrisLut::kPx2cmBins;
+    require(!bytes.empty(), path.string(), "empty file (expected a lookup table)");
     if (has_ground_map_magic(bytes)) {
       format = LutFormat::ballsight;
     } else if (bytes.size() == iris_bytes) {

@@ -98,10 +98,12 @@ void draw_profiles(cv::Mat& figure, const InspectedLut& lut, const LutInspection
                       d.colour});
   }
   if (inspection.monotonic_until_px) {
+    const std::string where = fixed(*inspection.monotonic_until_px, 1) + " px";
     draw_vertical_marker(figure, axes, *inspection.monotonic_until_px, kMarker,
-                         "monotonic until " + fixed(*inspection.monotonic_until_px, 1) +
-                             " px (theta " + std::to_string(inspection.monotonic_until_theta_deg) +
-                             ")");
+                         inspection.non_monotonic_directions == 0
+                             ? "monotonic over the written range (to " + where + ")"
+                             : "monotonic until " + where + " (theta " +
+                                   std::to_string(inspection.monotonic_until_theta_deg) + ")");
   }
   draw_legend(figure, {axes.area.x + 12, axes.area.y + 30}, legend);
 }
