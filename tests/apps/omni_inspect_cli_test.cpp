@@ -12,6 +12,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/little_endian.hpp"
 #include "shared_data.hpp"
+#include "temp_dir.hpp"
 
 namespace ballsight {
 namespace {
@@ -34,15 +35,6 @@ struct CliResult {
 
 class OmniInspectCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir = fs::temp_directory_path() /
-          ("ballsight_omni_inspect_" +
-           std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  void TearDown() override { fs::remove_all(dir); }
-
   CliResult run(const std::string& args) const {
     const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
     std::string command = BALLSIGHT_CLI;
@@ -62,7 +54,7 @@ class OmniInspectCli : public ::testing::Test {
     EXPECT_NE(r.err.find(problem), std::string::npos) << r.err;
   }
 
-  fs::path dir;
+  testing::TempDir dir;
 };
 
 // A ballsight table written field by field from docs/lut-format.md, independently of the

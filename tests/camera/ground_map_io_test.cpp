@@ -10,6 +10,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/little_endian.hpp"
+#include "temp_dir.hpp"
 
 namespace ballsight {
 namespace {
@@ -35,16 +36,6 @@ GroundMap pattern_map(int width, int height) {
 
 class GroundMapFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir = fs::temp_directory_path() /
-          ("ballsight_ground_map_io_" +
-           std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    path = dir / "table.bsgm";
-  }
-  void TearDown() override { fs::remove_all(dir); }
-
   /// Loads `path` and returns the InputError message ("" when it loads).
   std::string load_error(std::optional<cv::Size> expected = std::nullopt) const {
     try {
@@ -63,8 +54,8 @@ class GroundMapFile : public ::testing::Test {
   std::string bytes() const { return read_file(path); }
   void set_bytes(const std::string& b) const { write_file_atomic(path, b); }
 
-  fs::path dir;
-  fs::path path;
+  testing::TempDir dir;
+  fs::path path = dir / "table.bsgm";
 };
 
 TEST_F(GroundMapFile, RoundTripsBitForBit) {

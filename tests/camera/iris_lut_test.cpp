@@ -12,6 +12,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "camera/rig_tables.hpp"
 #include "shared_data.hpp"
+#include "temp_dir.hpp"
 
 namespace ballsight {
 namespace {
@@ -21,13 +22,6 @@ using testing::iris_px2cm_tables;
 using testing::misaligned_rig_params;
 using testing::rig_table_info;
 using testing::true_ground_cm;
-
-fs::path temp_path(const std::string& name) {
-  return fs::temp_directory_path() /
-         ("ballsight_iris_" +
-          std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-          name);
-}
 
 std::string read_error(const fs::path& path, IrisLutKind kind) {
   try {
@@ -66,15 +60,16 @@ TEST(IrisLut, ReadsRealTablesAsRawLittleEndianInt16) {
     // The robots' read: (int)angle * 3200 + (int)(dist * 10).
     EXPECT_EQ(iris_distance_cm(lut, 90.7, 150.06), lut.at(90, 1500));
     // Writing gives the same bytes back.
-    const fs::path copy = temp_path("copy.bin");
+    const testing::TempDir dir;
+    const fs::path copy = dir / "copy.bin";
     write_iris_lut(copy, lut);
     EXPECT_EQ(read_file(copy), raw);
-    fs::remove(copy);
   }
 }
 
 TEST(IrisLut, WrongSizesAreRejectedNamingTheFile) {
-  const fs::path path = temp_path("bad.bin");
+  const testing::TempDir dir;
+  const fs::path path = dir / "bad.bin";
   write_file_atomic(path, "");
   EXPECT_NE(read_error(path, IrisLutKind::px2cm).find(path.string() + ": empty file"),
             std::string::npos);
@@ -184,10 +179,10 @@ TEST(IrisLut, RoundTripThroughAGroundMap) {
     for (int bin = 320; bin < 1980; ++bin) {
       // The change to the neighbouring bins, along the ray and across directions.
       int step_cm = 0;
-      for (const auto& [dt, db] : std::initializer_list<std::pair<int, int>>{
-               {0, -1}, {0, 1}, {359, 0}, {1, 0}}) {
-        step_cm = std::max(step_cm, std::abs(lut.at((theta + dt) % 360, bin + db) -
-                                             lut.at(theta, bin)));
+      for (const auto& [dt, db] :
+           std::initializer_list<std::pair<int, int>>{{0, -1}, {0, 1}, {359, 0}, {1, 0}}) {
+        step_cm =
+            std::max(step_cm, std::abs(lut.at((theta + dt) % 360, bin + db) - lut.at(theta, bin)));
       }
       const int error_cm = std::abs(back.at(theta, bin) - lut.at(theta, bin));
       ASSERT_LE(error_cm, 1 + step_cm) << theta << " deg, bin " << bin;
