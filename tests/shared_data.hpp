@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace ballsight::testing {
+namespace ballsight::test {
 
 inline std::filesystem::path shared_data_dir() {
   return BALLSIGHT_SHARED_DATA_DIR;
@@ -28,4 +28,4 @@ inline std::vector<std::filesystem::path> iris_px2cm_tables() {
   return tables;
 }
 
-}  // namespace ballsight::testing
+}  // namespace ballsight::test

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-namespace ballsight::testing {
+namespace ballsight::test {
 
 class TempDir {
  public:
@@ -31,4 +31,4 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-}  // namespace ballsight::testing
+}  // namespace ballsight::test

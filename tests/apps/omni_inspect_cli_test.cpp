@@ -1,13 +1,13 @@
 // `ballsight omni inspect` end to end: the built binary on real, hand-made and broken tables.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <string>
 
+#include "apps/run_cli.hpp"
 #include "ballsight/core/checksum.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/little_endian.hpp"
@@ -19,42 +19,24 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A shell-quoted path (appended piecewise: GCC 12's -Wrestrict misfires on "'" + string).
-std::string quoted(const fs::path& path) {
-  std::string q = "'";
-  q += path.string();
-  q += "'";
-  return q;
-}
-
-struct CliResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
 class OmniInspectCli : public ::testing::Test {
  protected:
-  CliResult run(const std::string& args) const {
-    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    std::string command = BALLSIGHT_CLI;
-    command += " omni inspect " + args + " > " + quoted(out) + " 2> " + quoted(err);
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+  static test::CliResult inspect(std::vector<std::string> args) {
+    args.insert(args.begin(), {"omni", "inspect"});
+    return test::run_cli(args);
   }
 
   /// A bad input: non-zero exit and exactly one line on stderr naming the file and the problem.
-  void expect_rejected(const fs::path& file, const std::string& problem) const {
-    const CliResult r = run(quoted(file));
+  static void expect_rejected(const fs::path& file, const std::string& problem) {
+    const test::CliResult r = inspect({file.string()});
     EXPECT_NE(r.exit_code, 0);
-    EXPECT_EQ(r.out, "");
-    ASSERT_FALSE(r.err.empty());
-    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // one line
-    EXPECT_NE(r.err.find(file.string()), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find(problem), std::string::npos) << r.err;
+    EXPECT_EQ(r.stdout_text, "");
+    EXPECT_EQ(test::line_count(r.stderr_text), 1) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(file.string()), std::string::npos) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(problem), std::string::npos) << r.stderr_text;
   }
 
-  testing::TempDir dir;
+  test::TempDir dir;
 };
 
 // A ballsight table written field by field from docs/lut-format.md, independently of the
@@ -99,25 +81,26 @@ std::string documented_ground_map(std::uint32_t version = 1) {
 TEST_F(OmniInspectCli, ReportsAHandWrittenBallsightTable) {
   const fs::path table = dir / "hand.bsgm";
   write_file_atomic(table, documented_ground_map());
-  const CliResult r = run(quoted(table));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("format                     ballsight\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("first_written_px           min 5.0"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("non_monotonic_directions   0\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("holes                      count 0 "), std::string::npos) << r.out;
+  const test::CliResult r = inspect({table.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const std::string& out = r.stdout_text;
+  EXPECT_NE(out.find("format                     ballsight\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("first_written_px           min 5.0"), std::string::npos) << out;
+  EXPECT_NE(out.find("non_monotonic_directions   0\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("holes                      count 0 "), std::string::npos) << out;
 }
 
 TEST_F(OmniInspectCli, FindsTheRealIrisTablesNonMonotonicRegionAndPlotsIt) {
-  const auto tables = testing::iris_px2cm_tables();
-  if (tables.empty()) GTEST_SKIP() << "no iris px2cm tables in " << testing::shared_data_dir();
+  const auto tables = test::iris_px2cm_tables();
+  if (tables.empty()) GTEST_SKIP() << "no iris px2cm tables in " << test::shared_data_dir();
   const fs::path png = dir / "inspect.png";
-  const CliResult r =
-      run(quoted(tables.front()) + " --format iris-px2cm --json --plot " + quoted(png));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.err, "");
-  const std::size_t key = r.out.find("\"monotonic_until_px\": ");
-  ASSERT_NE(key, std::string::npos) << r.out;
-  const double until_px = std::stod(r.out.substr(key + 22));
+  const test::CliResult r = inspect(
+      {tables.front().string(), "--format", "iris-px2cm", "--json", "--plot", png.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(r.stderr_text, "");
+  const std::size_t key = r.stdout_text.find("\"monotonic_until_px\": ");
+  ASSERT_NE(key, std::string::npos) << r.stdout_text;
+  const double until_px = std::stod(r.stdout_text.substr(key + 22));
   EXPECT_GE(until_px, 175.0);
   EXPECT_LE(until_px, 210.0);
   ASSERT_TRUE(fs::exists(png));
@@ -143,13 +126,20 @@ TEST_F(OmniInspectCli, BadFilesExitNonZeroWithOneLine) {
   expect_rejected(dir / "missing.bsgm", "cannot open");
 }
 
+TEST_F(OmniInspectCli, BadOptionsExitNonZeroWithOneLine) {
+  const test::CliResult r = inspect({"table.bsgm", "--format", "png"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(test::line_count(r.stderr_text), 1) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("--format"), std::string::npos) << r.stderr_text;
+}
+
 TEST_F(OmniInspectCli, WrongFormatForTheFileIsRejected) {
   const fs::path table = dir / "table.bsgm";
   write_file_atomic(table, documented_ground_map());
-  const CliResult r = run(quoted(table) + " --format iris-px2cm");
+  const test::CliResult r = inspect({table.string(), "--format", "iris-px2cm"});
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("expected 2304000 bytes"), std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_NE(r.stderr_text.find("expected 2304000 bytes"), std::string::npos) << r.stderr_text;
+  EXPECT_EQ(test::line_count(r.stderr_text), 1) << r.stderr_text;
 }
 
 }  // namespace

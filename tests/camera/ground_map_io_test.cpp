@@ -54,7 +54,7 @@ class GroundMapFile : public ::testing::Test {
   std::string bytes() const { return read_file(path); }
   void set_bytes(const std::string& b) const { write_file_atomic(path, b); }
 
-  testing::TempDir dir;
+  test::TempDir dir;
   fs::path path = dir / "table.bsgm";
 };
 

@@ -13,9 +13,9 @@
 namespace ballsight {
 namespace {
 
-using testing::misaligned_rig_params;
-using testing::rig_table_info;
-using testing::true_ground_cm;
+using test::misaligned_rig_params;
+using test::rig_table_info;
+using test::true_ground_cm;
 
 class GroundMapFromTrueRig : public ::testing::Test {
  protected:

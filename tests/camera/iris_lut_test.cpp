@@ -18,10 +18,10 @@ namespace ballsight {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::iris_px2cm_tables;
-using testing::misaligned_rig_params;
-using testing::rig_table_info;
-using testing::true_ground_cm;
+using test::iris_px2cm_tables;
+using test::misaligned_rig_params;
+using test::rig_table_info;
+using test::true_ground_cm;
 
 std::string read_error(const fs::path& path, IrisLutKind kind) {
   try {
@@ -44,7 +44,7 @@ RadialDistanceCm true_radial_cm(const OmniRig& rig, const Vec2& center) {
 
 TEST(IrisLut, ReadsRealTablesAsRawLittleEndianInt16) {
   const auto tables = iris_px2cm_tables();
-  if (tables.empty()) GTEST_SKIP() << "no iris px2cm tables in " << testing::shared_data_dir();
+  if (tables.empty()) GTEST_SKIP() << "no iris px2cm tables in " << test::shared_data_dir();
   for (const fs::path& path : tables) {
     SCOPED_TRACE(path.string());
     const IrisLut lut = read_iris_lut(path, IrisLutKind::px2cm);
@@ -60,7 +60,7 @@ TEST(IrisLut, ReadsRealTablesAsRawLittleEndianInt16) {
     // The robots' read: (int)angle * 3200 + (int)(dist * 10).
     EXPECT_EQ(iris_distance_cm(lut, 90.7, 150.06), lut.at(90, 1500));
     // Writing gives the same bytes back.
-    const testing::TempDir dir;
+    const test::TempDir dir;
     const fs::path copy = dir / "copy.bin";
     write_iris_lut(copy, lut);
     EXPECT_EQ(read_file(copy), raw);
@@ -68,7 +68,7 @@ TEST(IrisLut, ReadsRealTablesAsRawLittleEndianInt16) {
 }
 
 TEST(IrisLut, WrongSizesAreRejectedNamingTheFile) {
-  const testing::TempDir dir;
+  const test::TempDir dir;
   const fs::path path = dir / "bad.bin";
   write_file_atomic(path, "");
   EXPECT_NE(read_error(path, IrisLutKind::px2cm).find(path.string() + ": empty file"),

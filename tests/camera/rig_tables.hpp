@@ -6,7 +6,7 @@
 #include "ballsight/camera/ground_map.hpp"
 #include "ballsight/camera/omni_rig.hpp"
 
-namespace ballsight::testing {
+namespace ballsight::test {
 
 /// 2 deg tilt and a 5 px principal point offset: the misalignments the paper calibrates away.
 inline OmniRigParams misaligned_rig_params() {
@@ -38,4 +38,4 @@ inline GroundMapInfo rig_table_info() {
   return info;
 }
 
-}  // namespace ballsight::testing
+}  // namespace ballsight::test

@@ -16,9 +16,9 @@
 namespace ballsight {
 namespace {
 
-using testing::misaligned_rig_params;
-using testing::rig_table_info;
-using testing::true_ground_cm;
+using test::misaligned_rig_params;
+using test::rig_table_info;
+using test::true_ground_cm;
 
 // A px2cm table whose rays rise smoothly, d = 0.02 r^2 + r cm (r in px), from `first_bin`.
 IrisLut ramp_table(int first_bin) {
@@ -33,8 +33,8 @@ IrisLut ramp_table(int first_bin) {
 }
 
 TEST(LutInspect, FindsTheNonMonotonicRegionOfTheRealIrisTables) {
-  const auto tables = testing::iris_px2cm_tables();
-  if (tables.empty()) GTEST_SKIP() << "no iris px2cm tables in " << testing::shared_data_dir();
+  const auto tables = test::iris_px2cm_tables();
+  if (tables.empty()) GTEST_SKIP() << "no iris px2cm tables in " << test::shared_data_dir();
   for (const auto& path : tables) {
     SCOPED_TRACE(path.string());
     const LutInspection in = inspect_lut(read_lut_for_inspection(path, LutFormat::automatic));
