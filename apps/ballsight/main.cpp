@@ -21,6 +21,11 @@ int main(int argc, char** argv) {
   sim->require_subcommand(1);
   ballsight::app::add_sim_omni_command(*sim);
 
+  CLI::App* omni = app.add_subcommand(
+      "omni", "Omnidirectional camera: calibration, lookup tables, ball localisation");
+  omni->require_subcommand(1);
+  ballsight::app::add_omni_inspect_command(*omni);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
