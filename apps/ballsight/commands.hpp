@@ -12,5 +12,7 @@ namespace ballsight::app {
 void add_sim_omni_command(CLI::App& sim);
 /// `omni inspect` (omni_inspect_command.cpp), registered on the `omni` group.
 void add_omni_inspect_command(CLI::App& omni);
+/// `sim court` on the `sim` subcommand (sim_court_command.cpp).
+void add_sim_court_command(CLI::App& sim);
 
 }  // namespace ballsight::app
