@@ -100,8 +100,8 @@ std::vector<Vec3> reference_ball_positions(const TennisCourtSpec& court) {
   const double doubles = court.doubles_width_m / 2.0 - w / 2.0;
   return {{baseline, singles, r},  {baseline, -singles, r}, {-baseline, -singles, r},
           {-baseline, singles, r}, {service, singles, r},   {service, -singles, r},
-          {-service, -singles, r}, {-service, singles, r},  {0.0, doubles, r},
-          {0.0, -doubles, r}};
+          {-service, -singles, r}, {-service, singles, r},  {service, 0.0, r},
+          {-service, 0.0, r},      {0.0, doubles, r},       {0.0, -doubles, r}};
 }
 
 CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOptions& options,

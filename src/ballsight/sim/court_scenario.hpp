@@ -24,9 +24,11 @@ struct CourtScenarioOptions {
   void validate() const;
 };
 
-/// Ten reference-ball centres (z = radius) at line intersections, known to the user: the four
-/// corners of the singles court, the four ends of the service lines and the two points where the
-/// net line crosses the doubles sidelines. Each corner camera has about five of them within 20 m.
+/// Twelve reference-ball centres (z = radius) at line intersections, known to the user: the four
+/// corners of the singles court, the four ends of the service lines, the two service-line T's and
+/// the two points where the net line crosses the doubles sidelines. Each corner camera has six of
+/// them within about 19 m, spread over its half of the court (a 2 cm ball is ~1 px in radius
+/// there at 1280x720), and sees the other six further away.
 std::vector<Vec3> reference_ball_positions(const TennisCourtSpec& court);
 
 /// A scene on `court`; deterministic for a seed.
