@@ -94,9 +94,8 @@ json court_scene_json(const CourtRig& rig, const CourtScene& scene,
   json cameras = json::array();
   for (size_t i = 0; i < rig.cameras.size(); ++i) {
     const CourtCamera& c = rig.cameras[i];
-    json camera = intrinsics_json(c.camera);
-    camera["index"] = i;
-    camera["image"] = image_files.at(i);
+    json camera = {{"index", i}, {"image", image_files.at(i)}};
+    camera.update(intrinsics_json(c.camera));
     camera["camera_from_field"] = rigid3_json(c.camera_from_field);
     camera["field_from_camera"] = rigid3_json(c.camera_from_field.inverse());
     camera["center_in_field_m"] = vec_json(c.center_in_field());
@@ -117,8 +116,8 @@ json court_scene_json(const CourtRig& rig, const CourtScene& scene,
 
 json chessboard_camera_json(const PinholeCamera& camera, int camera_index,
                             const std::vector<ChessboardViewTruth>& views) {
-  json out = intrinsics_json(camera);
-  out["index"] = camera_index;
+  json out = {{"index", camera_index}};
+  out.update(intrinsics_json(camera));
   json list = json::array();
   for (const ChessboardViewTruth& v : views) {
     json corners = json::array();
