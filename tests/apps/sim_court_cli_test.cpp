@@ -4,20 +4,16 @@
 #include <fstream>
 
 #include "apps/run_cli.hpp"
+#include "temp_dir.hpp"
 
 namespace ballsight::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
 TEST(SimCourtCli, WritesImagesAndTruth) {
-  const fs::path dir = fresh_dir("ballsight_cli_court");
+  const TempDir temp;
+  const fs::path dir = temp / "out";
   const CliResult r = run_cli({"sim", "court", "--out", dir.string(), "--seed", "3", "--balls",
                                "25", "--width", "320", "--height", "180", "--chessboards", "1",
                                "--noise", "1", "--brightness", "1.1", "--no-shadow"});
@@ -27,7 +23,6 @@ TEST(SimCourtCli, WritesImagesAndTruth) {
                         "cam2_board_00.png", "chessboards.json"}) {
     EXPECT_TRUE(fs::is_regular_file(dir / f)) << f;
   }
-  fs::remove_all(dir);
 }
 
 TEST(SimCourtCli, HelpNamesEveryOption) {
@@ -40,7 +35,8 @@ TEST(SimCourtCli, HelpNamesEveryOption) {
 }
 
 TEST(SimCourtCli, BadOptionsFailWithOneLine) {
-  const fs::path dir = fresh_dir("ballsight_cli_court_bad");
+  const TempDir temp;
+  const fs::path dir = temp / "out";
   const std::vector<std::vector<std::string>> bad = {
       {"--out", dir.string(), "--balls", "-3"},     {"--out", dir.string(), "--balls", "201"},
       {"--out", dir.string(), "--width", "0"},      {"--out", dir.string(), "--height", "-720"},
@@ -63,12 +59,12 @@ TEST(SimCourtCli, BadOptionsFailWithOneLine) {
 }
 
 TEST(SimCourtCli, UnwritableOutputFailsWithOneLine) {
-  const fs::path file = fresh_dir("ballsight_cli_court_file");
+  const TempDir temp;
+  const fs::path file = temp / "a_file";
   std::ofstream(file.string()) << "not a folder";
   const CliResult r = run_cli({"sim", "court", "--out", file.string(), "--scenes", "0"});
   EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
   EXPECT_EQ(line_count(r.stderr_text), 1) << r.stderr_text;
-  fs::remove(file);
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 #include "ballsight/sim/court_dataset.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -9,25 +8,13 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "temp_dir.hpp"
 
 namespace ballsight::sim {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A fresh temporary folder, removed with the object.
-class TempDir {
- public:
-  explicit TempDir(const std::string& name)
-      : path_(fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 /// Small images keep the test quick; the content is the same kind.
 CourtDatasetOptions small_dataset(std::uint64_t seed) {
@@ -40,7 +27,7 @@ CourtDatasetOptions small_dataset(std::uint64_t seed) {
 }
 
 TEST(CourtDataset, WritesImagesAndTruthNamedAsDocumented) {
-  const TempDir dir("ballsight_court_dataset");
+  const TempDir dir;
   auto options = small_dataset(4);
   options.scenes = 2;
   const auto files = write_court_dataset(options, dir.path());
@@ -54,7 +41,7 @@ TEST(CourtDataset, WritesImagesAndTruthNamedAsDocumented) {
 }
 
 TEST(CourtDataset, TruthJsonReprojectsWithOpenCV) {
-  const TempDir dir("ballsight_court_json");
+  const TempDir dir;
   write_court_dataset(small_dataset(5), dir.path());
   const auto truth = nlohmann::json::parse(read_file(dir.path() / "court_0000.json"));
   EXPECT_EQ(truth["format"], "ballsight.sim.court");
@@ -97,28 +84,29 @@ TEST(CourtDataset, TruthJsonReprojectsWithOpenCV) {
 }
 
 TEST(CourtDataset, SameSeedSameBytesDifferentSeedDifferentScene) {
-  const TempDir a("ballsight_court_a"), b("ballsight_court_b"), c("ballsight_court_c");
-  const auto files = write_court_dataset(small_dataset(21), a.path());
-  write_court_dataset(small_dataset(21), b.path());
-  write_court_dataset(small_dataset(22), c.path());
+  const TempDir dir;
+  const auto files = write_court_dataset(small_dataset(21), dir / "a");
+  write_court_dataset(small_dataset(21), dir / "b");
+  write_court_dataset(small_dataset(22), dir / "c");
   for (const auto& f : files) {
-    EXPECT_EQ(read_file(a.path() / f), read_file(b.path() / f)) << f;
-    EXPECT_NE(read_file(a.path() / f), read_file(c.path() / f)) << f;
+    EXPECT_EQ(read_file(dir / "a" / f), read_file(dir / "b" / f)) << f;
+    EXPECT_NE(read_file(dir / "a" / f), read_file(dir / "c" / f)) << f;
   }
 }
 
 TEST(CourtDataset, InvalidOptionsAreNamed) {
-  const TempDir dir("ballsight_court_bad");
+  const TempDir temp;
+  const fs::path dir = temp / "out";
   auto options = small_dataset(1);
   options.scenes = -1;
-  EXPECT_THROW(write_court_dataset(options, dir.path()), InputError);
+  EXPECT_THROW(write_court_dataset(options, dir), InputError);
   options = small_dataset(1);
   options.chessboard_views = 100;
-  EXPECT_THROW(write_court_dataset(options, dir.path()), InputError);
+  EXPECT_THROW(write_court_dataset(options, dir), InputError);
   options = small_dataset(1);
   options.rig.height = 0;
-  EXPECT_THROW(write_court_dataset(options, dir.path()), InputError);
-  EXPECT_FALSE(fs::exists(dir.path())) << "nothing written on bad options";
+  EXPECT_THROW(write_court_dataset(options, dir), InputError);
+  EXPECT_FALSE(fs::exists(dir)) << "nothing written on bad options";
 }
 
 }  // namespace

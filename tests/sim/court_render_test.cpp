@@ -5,7 +5,7 @@
 
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_scenario.hpp"
-#include "ballsight/sim/sphere_silhouette.hpp"
+#include "ballsight/sim/silhouette.hpp"
 #include "sim/court_test_support.hpp"
 
 namespace ballsight::sim {
@@ -118,8 +118,9 @@ CentroidStats check_blob_centroids(bool flat) {
         const SphereTruth& t = rendered.truth[i];
         const SphereViewTruth& view = t.views[c];
         if (!view.visible || view.visible_fraction < 1.0) continue;
-        const auto outline = sphere_silhouette(
-            camera.camera, camera.camera_from_field * t.sphere.center_in_field, t.sphere.radius_m);
+        const auto outline = sphere_outline_pixels(
+            camera.camera, camera.camera_from_field * t.sphere.center_in_field, t.sphere.radius_m,
+            96);
         EXPECT_TRUE(outline && view.silhouette_centroid_px);
         if (!outline || polygon_area(*outline) < kMinBlobAreaPx) continue;
         // The markers sit on the robot box: grey, in no colour class.

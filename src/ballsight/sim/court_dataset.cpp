@@ -38,8 +38,8 @@ class DatasetWriter {
     written_.push_back(name);
   }
 
-  void json(const std::string& name, const nlohmann::ordered_json& document) {
-    write_file_atomic(dir_ / name, document.dump(1) + "\n");
+  void json(const std::string& name, const Json& document) {
+    write_file_atomic(dir_ / name, json_text(document));
     written_.push_back(name);
   }
 
@@ -55,7 +55,7 @@ void write_chessboards(const CourtDatasetOptions& options, const CourtRig& rig,
   const std::uint64_t board_seed = derive_seed(options.seed, kBoardStream);
   ChessboardRenderOptions render_options;
   render_options.effects.noise_sigma = options.scenario.noise_sigma;
-  std::vector<nlohmann::ordered_json> cameras;
+  std::vector<Json> cameras;
   for (size_t c = 0; c < rig.cameras.size(); ++c) {
     const PinholeCamera& camera = rig.cameras[c].camera;
     const std::uint64_t camera_seed = derive_seed(board_seed, c);

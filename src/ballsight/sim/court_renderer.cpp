@@ -6,7 +6,7 @@
 
 #include "ballsight/sim/raycast.hpp"
 #include "ballsight/sim/raycast_box.hpp"
-#include "ballsight/sim/sphere_silhouette.hpp"
+#include "ballsight/sim/silhouette.hpp"
 
 namespace ballsight::sim {
 namespace {
@@ -47,7 +47,7 @@ PixelBox box_around(const std::vector<std::optional<Vec2>>& pixels, const cv::Si
 PixelBox sphere_box(const CourtCamera& camera, const SceneSphere& sphere, const cv::Size& size) {
   const Vec3 c = camera.camera_from_field * sphere.center_in_field;
   if (c.z() < -sphere.radius_m) return {};  // wholly behind the camera
-  const auto rim = sphere_silhouette(camera.camera, c, sphere.radius_m, 32);
+  const auto rim = sphere_outline_pixels(camera.camera, c, sphere.radius_m, 32);
   if (!rim) return {0, 0, size.width, size.height};
   std::vector<std::optional<Vec2>> pixels(rim->begin(), rim->end());
   return box_around(pixels, size);

@@ -2,17 +2,18 @@
 
 #include <cassert>
 
-#include "ballsight/sim/sphere_silhouette.hpp"
+#include "ballsight/sim/silhouette.hpp"
 
 namespace ballsight::sim {
 
 SphereViewTruth sphere_view_truth(const CourtCamera& camera, const SceneSphere& sphere,
                                   const ObjectCoverage& coverage) {
   constexpr double kVisibleFraction = 0.5;
+  constexpr int kOutlineSamples = 96;
   SphereViewTruth view;
   const Vec3 c = camera.camera_from_field * sphere.center_in_field;
   view.center_px = camera.camera.project(c);
-  if (const auto rim = sphere_silhouette(camera.camera, c, sphere.radius_m)) {
+  if (const auto rim = sphere_outline_pixels(camera.camera, c, sphere.radius_m, kOutlineSamples)) {
     view.silhouette_centroid_px = polygon_centroid(*rim);
   }
   view.in_image = view.center_px && camera.camera.in_image(*view.center_px);
