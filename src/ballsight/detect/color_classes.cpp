@@ -23,22 +23,33 @@ bool YuvRange::contains(const cv::Vec3b& yuv) const {
   return true;
 }
 
-ColorClassTable::ColorClassTable(const std::vector<ColorClassRule>& rules)
-    : table_(std::size_t{1} << (3 * kBits), 0) {
-  for (const ColorClassRule& rule : rules) rule.range.validate("colour class");
-  // Classify the centre of every quantisation cell with OpenCV's own YUV conversion, so the
-  // table agrees with segment_yuv_inrange except within half a cell of a range boundary.
-  constexpr int kCells = 1 << kBits;
-  constexpr int kHalf = 1 << (kShift - 1);
+namespace {
+
+constexpr int kCells = 1 << ColorClassTable::kBits;
+
+// The centre colour of every quantisation cell, one image row per (b, g) and one column per r,
+// so that row * kCells + column is the cell's table index.
+cv::Mat cell_centres_bgr() {
+  constexpr int kHalf = 1 << (ColorClassTable::kShift - 1);
   cv::Mat bgr(kCells * kCells, kCells, CV_8UC3);
   for (int b = 0; b < kCells; ++b)
     for (int g = 0; g < kCells; ++g)
       for (int r = 0; r < kCells; ++r)
-        bgr.at<cv::Vec3b>(b * kCells + g, r) = cv::Vec3b(static_cast<uchar>((b << kShift) + kHalf),
-                                                         static_cast<uchar>((g << kShift) + kHalf),
-                                                         static_cast<uchar>((r << kShift) + kHalf));
+        bgr.at<cv::Vec3b>(b * kCells + g, r) =
+            cv::Vec3b(static_cast<uchar>((b << ColorClassTable::kShift) + kHalf),
+                      static_cast<uchar>((g << ColorClassTable::kShift) + kHalf),
+                      static_cast<uchar>((r << ColorClassTable::kShift) + kHalf));
+  return bgr;
+}
+
+}  // namespace
+
+ColorClassTable::ColorClassTable(const std::vector<ColorClassRule>& rules) : ColorClassTable() {
+  for (const ColorClassRule& rule : rules) rule.range.validate("colour class");
+  // Classify the centre of every quantisation cell with OpenCV's own YUV conversion, so the
+  // table agrees with segment_yuv_inrange except within half a cell of a range boundary.
   cv::Mat yuv;
-  cv::cvtColor(bgr, yuv, cv::COLOR_BGR2YUV);
+  cv::cvtColor(cell_centres_bgr(), yuv, cv::COLOR_BGR2YUV);
   for (int row = 0; row < yuv.rows; ++row) {
     for (int r = 0; r < kCells; ++r) {
       const cv::Vec3b& c = yuv.at<cv::Vec3b>(row, r);
@@ -48,6 +59,17 @@ ColorClassTable::ColorClassTable(const std::vector<ColorClassRule>& rules)
       table_[(static_cast<std::size_t>(row) << kBits) | static_cast<std::size_t>(r)] = m;
     }
   }
+}
+
+ColorClassTable ColorClassTable::from_classifier(
+    const std::function<ColorClassMask(const cv::Vec3b& bgr)>& classify) {
+  ColorClassTable table;
+  const cv::Mat bgr = cell_centres_bgr();
+  for (int row = 0; row < bgr.rows; ++row)
+    for (int r = 0; r < kCells; ++r)
+      table.table_[(static_cast<std::size_t>(row) << kBits) | static_cast<std::size_t>(r)] =
+          classify(bgr.at<cv::Vec3b>(row, r));
+  return table;
 }
 
 cv::Mat1b segment(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask) {

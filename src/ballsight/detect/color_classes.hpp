@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -34,6 +35,9 @@ class ColorClassTable {
   static constexpr int kShift = 8 - kBits;
 
   explicit ColorClassTable(const std::vector<ColorClassRule>& rules);
+  /// Any rule on BGR colours (hue bands, chroma, ...), evaluated at the centre of every cell.
+  static ColorClassTable from_classifier(
+      const std::function<ColorClassMask(const cv::Vec3b& bgr)>& classify);
 
   ColorClassMask classify(const cv::Vec3b& bgr) const {
     return table_[index(bgr[0], bgr[1], bgr[2])];
@@ -44,6 +48,8 @@ class ColorClassTable {
   }
 
  private:
+  ColorClassTable() : table_(std::size_t{1} << (3 * kBits), 0) {}
+
   std::vector<ColorClassMask> table_;
 };
 

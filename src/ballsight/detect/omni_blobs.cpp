@@ -6,6 +6,7 @@
 
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/detect/blob_growth.hpp"
 
 namespace ballsight {
 
@@ -59,43 +60,25 @@ std::vector<OmniBlob> OmniBlobFinder::find(const cv::Mat& bgr, const ColorClassT
           "expected a " + std::to_string(size_.width) + "x" + std::to_string(size_.height) +
               " BGR image, got " + std::to_string(bgr.cols) + "x" + std::to_string(bgr.rows));
   require(bgr.isContinuous(), "blob finder", "expected a continuous image");
-  const auto* pixels = bgr.ptr<cv::Vec3b>(0);
   const int width = size_.width;
-  std::vector<std::uint8_t> visited(static_cast<size_t>(size_.area()), 0);
+  BlobGrowthBuffers buffers;
+  buffers.reset(size_.area());
   std::vector<OmniBlob> blobs;
-  std::vector<int> stack, members;
+  GrownBlob grown;
   for (int seed : seeds_) {
-    if (visited[static_cast<size_t>(seed)] || !(table.classify(pixels[seed]) & mask)) continue;
-    // Grow the blob (4-connected) from the seed.
-    members.clear();
-    stack.assign(1, seed);
-    visited[static_cast<size_t>(seed)] = 1;
+    if (!grow_blob(bgr, table, mask, seed, buffers, grown)) continue;
+    const std::vector<int>& members = grown.pixels;
     double sum_x = 0.0, sum_y = 0.0;
-    int min_x = width, min_y = size_.height, max_x = -1, max_y = -1;
-    while (!stack.empty()) {
-      const int index = stack.back();
-      stack.pop_back();
-      members.push_back(index);
-      const int x = index % width, y = index / width;
-      sum_x += x;
-      sum_y += y;
-      min_x = std::min(min_x, x), max_x = std::max(max_x, x);
-      min_y = std::min(min_y, y), max_y = std::max(max_y, y);
-      const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-      for (const auto& [nx, ny] : neighbours) {
-        if (nx < 0 || ny < 0 || nx >= width || ny >= size_.height) continue;
-        const int n = ny * width + nx;
-        if (visited[static_cast<size_t>(n)] || !(table.classify(pixels[n]) & mask)) continue;
-        visited[static_cast<size_t>(n)] = 1;
-        stack.push_back(n);
-      }
+    for (int index : members) {
+      sum_x += index % width;
+      sum_y += index / width;
     }
     const int area = static_cast<int>(members.size());
     if (area < options_.min_area_px || area > options_.max_area_px) continue;
     OmniBlob blob;
     blob.area_px = area;
     blob.centroid_px = Vec2(sum_x / area, sum_y / area);
-    blob.bbox = cv::Rect(min_x, min_y, max_x - min_x + 1, max_y - min_y + 1);
+    blob.bbox = grown.bbox;
     blob.centroid_polar = image_polar_from_pixel(blob.centroid_px, options_.image_center);
     measure_radial_extent(members, width, options_.image_center, blob);
     blobs.push_back(blob);

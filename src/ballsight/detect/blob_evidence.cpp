@@ -1,0 +1,101 @@
+#include "ballsight/detect/blob_evidence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace ballsight {
+
+void weighted_moments(const std::vector<EvidencePixel>& pixels, double& mass, Vec2& centroid,
+                      Eigen::Matrix2d& covariance) {
+  double m = 0.0, sx = 0.0, sy = 0.0;
+  for (const EvidencePixel& p : pixels) {
+    m += p.weight;
+    sx += p.weight * p.x;
+    sy += p.weight * p.y;
+  }
+  mass = m;
+  centroid = Vec2::Zero();
+  covariance = Eigen::Matrix2d::Zero();
+  if (m <= 0.0) return;
+  centroid = Vec2(sx / m, sy / m);
+  double sxx = 0.0, sxy = 0.0, syy = 0.0;
+  for (const EvidencePixel& p : pixels) {
+    const double dx = p.x - centroid.x(), dy = p.y - centroid.y();
+    sxx += p.weight * dx * dx;
+    sxy += p.weight * dx * dy;
+    syy += p.weight * dy * dy;
+  }
+  covariance << sxx / m, sxy / m, sxy / m, syy / m;
+}
+
+namespace {
+
+double median_of(std::vector<float>& values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+}  // namespace
+
+BlobEvidence measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
+                                   const cv::Vec3f& evidence_bgr, int margin_px) {
+  BlobEvidence out;
+  out.blob_area_px = static_cast<int>(blob.pixels.size());
+  const cv::Rect image(0, 0, bgr.cols, bgr.rows);
+  out.touches_border = blob.bbox.x == 0 || blob.bbox.y == 0 || blob.bbox.br().x == bgr.cols ||
+                       blob.bbox.br().y == bgr.rows;
+  const cv::Rect window =
+      cv::Rect(blob.bbox.x - margin_px, blob.bbox.y - margin_px, blob.bbox.width + 2 * margin_px,
+               blob.bbox.height + 2 * margin_px) &
+      image;
+  const auto evidence = [&](int x, int y) {
+    const cv::Vec3b& p = bgr.at<cv::Vec3b>(y, x);
+    return evidence_bgr[0] * p[0] + evidence_bgr[1] * p[1] + evidence_bgr[2] * p[2];
+  };
+
+  // Background: the median evidence on the window's outer ring, walked in order; never below grey
+  // (0), so that grey things beside the object (the robot's box, a line) count as background
+  // even on a background of negative evidence. Noise: from differences of ring neighbours, which
+  // an edge crossing the ring hardly changes.
+  std::vector<float> ring;
+  const int x0 = window.x, y0 = window.y, x1 = window.br().x - 1, y1 = window.br().y - 1;
+  for (int x = x0; x < x1; ++x) ring.push_back(evidence(x, y0));
+  for (int y = y0; y < y1; ++y) ring.push_back(evidence(x1, y));
+  for (int x = x1; x > x0; --x) ring.push_back(evidence(x, y1));
+  for (int y = y1; y > y0; --y) ring.push_back(evidence(x0, y));
+  std::vector<float> steps(ring.size());
+  for (size_t i = 0; i < ring.size(); ++i)
+    steps[i] = std::abs(ring[i] - ring[(i + 1) % ring.size()]);
+  out.noise_sigma = std::max(1.0, 1.4826 / std::numbers::sqrt2 * median_of(steps));
+  out.background = std::max(0.0, median_of(ring));
+
+  // Support: the blob grown by one pixel, so that the faint rim of the object counts.
+  cv::Mat1b support(window.size(), uchar{0});
+  for (int index : blob.pixels) {
+    const int x = index % bgr.cols - window.x, y = index / bgr.cols - window.y;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int sx = x + dx, sy = y + dy;
+        if (sx >= 0 && sy >= 0 && sx < support.cols && sy < support.rows) support(sy, sx) = 1;
+      }
+  }
+  for (int y = 0; y < support.rows; ++y) {
+    for (int x = 0; x < support.cols; ++x) {
+      if (!support(y, x)) continue;
+      const double w = evidence(window.x + x, window.y + y) - out.background;
+      if (w <= 0.0) continue;
+      out.pixels.push_back({static_cast<float>(window.x + x), static_cast<float>(window.y + y),
+                            static_cast<float>(w)});
+      if (w > out.peak) {
+        out.peak = w;
+        out.peak_bgr = bgr.at<cv::Vec3b>(window.y + y, window.x + x);
+      }
+    }
+  }
+  weighted_moments(out.pixels, out.mass, out.centroid, out.covariance);
+  return out;
+}
+
+}  // namespace ballsight

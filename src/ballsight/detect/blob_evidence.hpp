@@ -1,0 +1,44 @@
+#pragma once
+// Sub-pixel measurement of a grown colour blob: how much more of the object's colour each pixel
+// around it holds than the local background. The evidence is linear in the colour (a weighted sum
+// of B, G, R whose weights add up to zero, so grey lines and ground give none), so a pixel half
+// covered by the object holds half the evidence of a covered one and the weighted centroid is the
+// centroid of the coverage, to a fraction of a pixel, without a colour conversion.
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+#include "ballsight/detect/blob_growth.hpp"
+
+namespace ballsight {
+
+/// One pixel near a blob and its evidence above the background (> 0).
+struct EvidencePixel {
+  float x = 0.0f, y = 0.0f;
+  float weight = 0.0f;
+};
+
+struct BlobEvidence {
+  std::vector<EvidencePixel> pixels;  // the blob and its 1-pixel border, positive evidence only
+  double mass = 0.0;                  // sum of the weights
+  double peak = 0.0;                  // largest weight
+  Vec2 centroid = Vec2::Zero();       // weighted centroid
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  // weighted second central moments
+  cv::Vec3b peak_bgr;           // colour of the pixel of largest evidence (the most covered one)
+  double background = 0.0;      // background evidence (median on a ring around the blob, >= 0)
+  double noise_sigma = 0.0;     // pixel noise of the evidence (from ring neighbours), >= 1
+  int blob_area_px = 0;         // pixels of the grown blob itself
+  bool touches_border = false;  // the blob reaches the image border
+};
+
+/// Measures `blob` in the 8-bit BGR image with evidence weights `evidence_bgr` (B, G, R); the
+/// background ring lies `margin_px` outside the blob's bounding box.
+BlobEvidence measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
+                                   const cv::Vec3f& evidence_bgr, int margin_px);
+
+/// Weighted centroid and second central moments of `pixels` (mass 0: centroid and moments 0).
+void weighted_moments(const std::vector<EvidencePixel>& pixels, double& mass, Vec2& centroid,
+                      Eigen::Matrix2d& covariance);
+
+}  // namespace ballsight

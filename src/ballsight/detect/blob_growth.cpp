@@ -1,0 +1,40 @@
+#include "ballsight/detect/blob_growth.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+namespace ballsight {
+
+bool grow_blob(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask, int seed,
+               BlobGrowthBuffers& buffers, GrownBlob& blob) {
+  assert(bgr.type() == CV_8UC3 && bgr.isContinuous());
+  assert(buffers.visited.size() == bgr.total());
+  const auto* pixels = bgr.ptr<cv::Vec3b>(0);
+  auto& visited = buffers.visited;
+  if (visited[static_cast<size_t>(seed)] || !(table.classify(pixels[seed]) & mask)) return false;
+  const int width = bgr.cols, height = bgr.rows;
+  blob.pixels.clear();
+  buffers.stack.assign(1, seed);
+  visited[static_cast<size_t>(seed)] = 1;
+  int min_x = width, min_y = height, max_x = -1, max_y = -1;
+  while (!buffers.stack.empty()) {
+    const int index = buffers.stack.back();
+    buffers.stack.pop_back();
+    blob.pixels.push_back(index);
+    const int x = index % width, y = index / width;
+    min_x = std::min(min_x, x), max_x = std::max(max_x, x);
+    min_y = std::min(min_y, y), max_y = std::max(max_y, y);
+    const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+    for (const auto& [nx, ny] : neighbours) {
+      if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+      const int n = ny * width + nx;
+      if (visited[static_cast<size_t>(n)] || !(table.classify(pixels[n]) & mask)) continue;
+      visited[static_cast<size_t>(n)] = 1;
+      buffers.stack.push_back(n);
+    }
+  }
+  blob.bbox = cv::Rect(min_x, min_y, max_x - min_x + 1, max_y - min_y + 1);
+  return true;
+}
+
+}  // namespace ballsight

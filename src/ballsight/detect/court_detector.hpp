@@ -1,0 +1,89 @@
+#pragma once
+// ballsight's detector for a fixed court camera: tennis balls and the robot's two colour markers.
+//
+// - Colour classes from a table (one read per pixel, hue bands: sun, shade and exposure changes
+//   keep the hue), seeded on a sparse grid whose step follows the smallest object's apparent size
+//   at each place of the image, and only where the camera sees the field area: the sky, the
+//   distant ground and places where a ball would be too small to see are never read.
+// - Each seed is grown through a looser class (mixed rim pixels), then measured by its colour
+//   evidence above the local background: a sub-pixel centre (centroid of the coverage).
+// - Size and shape are checked against the size the object must have at that place
+//   (ApparentSizeMap): blobs much larger than a few objects or thinner than one are rejected;
+//   blobs of touching balls are counted by their evidence and elongation and split (k-means).
+// - Every detection carries the expected error of its centre: noise, shading, splitting and
+//   partial occlusion, from which world gates and weights observations.
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "ballsight/camera/field_camera.hpp"
+#include "ballsight/core/field_rect.hpp"
+#include "ballsight/core/pixel_detection.hpp"
+#include "ballsight/detect/apparent_size.hpp"
+#include "ballsight/detect/blob_growth.hpp"
+#include "ballsight/detect/hue_classes.hpp"
+
+namespace ballsight {
+
+/// An object the detector looks for: a sphere of known size at a known centre height, of one
+/// colour.
+struct CourtObjectSpec {
+  ObjectClass object = ObjectClass::ball;
+  double radius_m = 0.0335;
+  double center_height_m = 0.0335;
+  HueBand seed_colour;  // a seed pixel must be in it
+  HueBand grow_colour;  // the blob grows through it (wider: the mixed pixels of the rim)
+  cv::Vec3f evidence_bgr{-2.0f, 1.0f, 1.0f};  // weights of B, G, R; they sum to 0
+  int max_split = 6;                          // touching objects one blob may hold (1: never split)
+
+  /// Throws InputError naming `name` and the first invalid field.
+  void validate(const char* name) const;
+};
+
+/// Tennis ball (fluorescent yellow, radius 3.35 cm, on the floor), the robot's pink front marker
+/// and blue back marker (radius 4.5 cm, centres 34.5 cm high).
+std::vector<CourtObjectSpec> default_court_objects();
+
+struct CourtDetectorOptions {
+  std::vector<CourtObjectSpec> objects = default_court_objects();
+  FieldRect area{{-19.5, -10.5}, {19.5, 10.5}};  // where objects may be (field frame)
+  double min_radius_px = 0.7;         // where the smallest object looks smaller: not searched
+  double seed_step_per_radius = 1.0;  // seed grid step: this times the smallest apparent radius
+  int max_seed_step_px = 8;
+  int size_cell_px = 16;             // resolution of the apparent-size maps
+  double max_objects_in_blob = 8.0;  // blobs holding more (by evidence) are not objects
+  double min_thickness = 0.35;       // minor axis / expected, below: a line, not an object
+  double saturation = 0.5;           // centre weights saturate at this share of the blob peak
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+class CourtDetector {
+ public:
+  CourtDetector(const FieldCamera& camera, const CourtDetectorOptions& options = {});
+
+  /// Every object found in an 8-bit BGR image of the camera's size (InputError otherwise).
+  /// Reuses internal buffers: one detector per thread.
+  std::vector<PixelDetection> detect(const cv::Mat& bgr);
+
+  const CourtDetectorOptions& options() const { return options_; }
+  cv::Size image_size() const { return size_; }
+  /// Pixels the detector classifies on its seed grid (the work it does on an empty court).
+  std::size_t seed_count() const { return seeds_.size(); }
+
+ private:
+  void measure(const cv::Mat& bgr, const GrownBlob& blob, size_t spec_index,
+               std::vector<PixelDetection>& out) const;
+
+  CourtDetectorOptions options_;
+  cv::Size size_;
+  ColorClassTable table_;
+  std::vector<ApparentSizeMap> sizes_;  // one per object spec
+  std::vector<int> seeds_;              // pixel indices of the seed grid
+  BlobGrowthBuffers buffers_;
+  GrownBlob blob_;
+  std::vector<int> touched_;  // pixels marked visited in the current image
+};
+
+}  // namespace ballsight

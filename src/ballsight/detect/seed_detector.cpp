@@ -1,0 +1,70 @@
+#include "ballsight/detect/seed_detector.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <opencv2/imgproc.hpp>
+#include <string>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+void HsvRange::validate(const char* name) const {
+  static constexpr const char* kChannel[] = {"H", "S", "V"};
+  static constexpr int kMax[] = {179, 255, 255};
+  for (size_t c = 0; c < 3; ++c) {
+    require(
+        min[c] >= 0 && max[c] <= kMax[c], name,
+        std::string(kChannel[c]) + " bounds must be within [0, " + std::to_string(kMax[c]) + "]");
+    require(min[c] <= max[c], name, std::string(kChannel[c]) + " minimum exceeds maximum");
+  }
+}
+
+void SeedDetectorOptions::validate() const {
+  ball.validate("seed detector ball");
+  front_marker.validate("seed detector front_marker");
+  back_marker.validate("seed detector back_marker");
+  require(median_kernel_px >= 1 && median_kernel_px % 2 == 1, "seed detector",
+          "median_kernel_px must be an odd positive number");
+}
+
+namespace {
+
+// Threshold, median filter, contours, centre of mass (section 7.1).
+void detect_class(const cv::Mat& hsv, const HsvRange& range, int median_kernel_px,
+                  ObjectClass object, std::vector<PixelDetection>& out) {
+  cv::Mat1b mask;
+  cv::inRange(hsv, cv::Scalar(range.min[0], range.min[1], range.min[2]),
+              cv::Scalar(range.max[0], range.max[1], range.max[2]), mask);
+  cv::medianBlur(mask, mask, median_kernel_px);
+  std::vector<std::vector<cv::Point>> contours;
+  cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+  for (const std::vector<cv::Point>& contour : contours) {
+    const cv::Moments m = cv::moments(contour);
+    if (m.m00 <= 0.0) continue;
+    PixelDetection d;
+    d.object = object;
+    d.center_px = Vec2(m.m10 / m.m00, m.m01 / m.m00);
+    d.area_px = m.m00;
+    d.radius_px = std::sqrt(m.m00 / std::numbers::pi);
+    out.push_back(d);
+  }
+}
+
+}  // namespace
+
+std::vector<PixelDetection> detect_seed(const cv::Mat& bgr, const SeedDetectorOptions& options) {
+  options.validate();
+  require(bgr.type() == CV_8UC3, "seed detector", "expected an 8-bit BGR image");
+  cv::Mat hsv;
+  cv::cvtColor(bgr, hsv, cv::COLOR_BGR2HSV);
+  std::vector<PixelDetection> out;
+  detect_class(hsv, options.ball, options.median_kernel_px, ObjectClass::ball, out);
+  detect_class(hsv, options.front_marker, options.median_kernel_px, ObjectClass::robot_front_marker,
+               out);
+  detect_class(hsv, options.back_marker, options.median_kernel_px, ObjectClass::robot_back_marker,
+               out);
+  return out;
+}
+
+}  // namespace ballsight

@@ -1,0 +1,42 @@
+#pragma once
+// The tennis-ball-collecting-robot report's detector, kept as the baseline (sections 2.2, 2.3,
+// 7.1, 7.6): convert to HSV, threshold, 5x5 median filter, contours, centre of mass of each
+// contour. The robot's pink front and blue back markers go through the same steps with their own
+// thresholds. Every pixel of the image is converted, thresholded and filtered.
+
+#include <array>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "ballsight/core/pixel_detection.hpp"
+
+namespace ballsight {
+
+/// A box in OpenCV's 8-bit HSV (cv::COLOR_BGR2HSV: H 0-179, S and V 0-255), bounds inclusive.
+struct HsvRange {
+  std::array<int, 3> min{0, 0, 0};
+  std::array<int, 3> max{179, 255, 255};
+
+  /// Throws InputError naming `name` when a bound is out of range or min > max.
+  void validate(const char* name) const;
+};
+
+struct SeedDetectorOptions {
+  // Section 2.3: H 19-39, S 119-255, V 4-206, found by trial; the values are already in OpenCV's
+  // 8-bit HSV scale. V max raised from 206 to 255: the simulator's sunlit balls are brighter
+  // than the report's (see docs/court-eval.md).
+  HsvRange ball{{19, 119, 4}, {39, 255, 255}};
+  // The report gives no values for the markers; chosen as its user would, around their hues.
+  HsvRange front_marker{{150, 100, 40}, {175, 255, 255}};  // pink, hue 163
+  HsvRange back_marker{{100, 120, 30}, {125, 255, 255}};   // blue, hue 112
+  int median_kernel_px = 5;                                // section 7.1: 5x5
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+/// Every contour's centre of mass, for the balls and both markers (cv::moments of the contour;
+/// contours of zero area are skipped). The image is 8-bit BGR.
+std::vector<PixelDetection> detect_seed(const cv::Mat& bgr, const SeedDetectorOptions& options);
+
+}  // namespace ballsight
