@@ -1,0 +1,66 @@
+#pragma once
+// A court method end to end on one frame set: one image per camera -> detections per camera (in
+// parallel, one task per camera, as the tennis-ball-collecting-robot report's section 7.7 does
+// with std::async) -> world model. Two methods behind one interface: the report's pipeline (the
+// baseline) and ballsight's.
+
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ballsight/camera/field_camera.hpp"
+#include "ballsight/core/pixel_detection.hpp"
+#include "ballsight/detect/court_detector.hpp"
+#include "ballsight/detect/seed_detector.hpp"
+#include "ballsight/world/court_world.hpp"
+#include "ballsight/world/seed_world.hpp"
+#include "ballsight/world/world_model.hpp"
+
+namespace ballsight {
+
+enum class CourtMethod { seed, ballsight };
+
+/// "seed", "ballsight".
+std::string court_method_name(CourtMethod method);
+
+struct FrameSetResult {
+  /// Per camera: its detections, or nullopt when its frame was missing or unusable.
+  std::vector<std::optional<std::vector<PixelDetection>>> detections;
+  /// Per camera: why its frame was not used (empty when it was).
+  std::vector<std::string> camera_errors;
+  WorldModel world;
+};
+
+class CourtPipeline {
+ public:
+  virtual ~CourtPipeline() = default;
+
+  /// One frame per camera in camera order; an empty Mat is a missing frame. A frame that is not
+  /// 8-bit BGR of its camera's calibrated size is not used, and camera_errors says why.
+  virtual FrameSetResult process(const std::vector<cv::Mat>& frames) = 0;
+  virtual CourtMethod method() const = 0;
+  virtual const std::vector<FieldCamera>& cameras() const = 0;
+};
+
+struct SeedPipelineOptions {
+  SeedDetectorOptions detector;
+  SeedWorldOptions world;
+};
+
+struct BallsightPipelineOptions {
+  CourtDetectorOptions detector;
+  CourtWorldOptions world;
+};
+
+std::unique_ptr<CourtPipeline> make_seed_pipeline(std::vector<FieldCamera> cameras,
+                                                  const SeedPipelineOptions& options = {});
+std::unique_ptr<CourtPipeline> make_ballsight_pipeline(
+    std::vector<FieldCamera> cameras, const BallsightPipelineOptions& options = {});
+
+/// Why `frame` cannot be used with `camera` ("" when it can): empty, not 8-bit BGR, or another
+/// size than the camera's calibration.
+std::string frame_problem(const cv::Mat& frame, const FieldCamera& camera);
+
+}  // namespace ballsight

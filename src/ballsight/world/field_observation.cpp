@@ -1,0 +1,48 @@
+#include "ballsight/world/field_observation.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+void ObservationNoise::validate() const {
+  require(std::isfinite(calibration_sigma_px) && calibration_sigma_px >= 0.0,
+          "observation noise calibration_sigma_px", "must be non-negative");
+}
+
+std::optional<FieldObservation> observe_on_plane(const FieldCamera& camera,
+                                                 const PixelDetection& detection,
+                                                 double center_height_m,
+                                                 const ObservationNoise& noise) {
+  const Vec2& pixel = detection.center_px;
+  const std::optional<Vec3> center = camera.point_at_height(pixel, center_height_m);
+  if (!center) return std::nullopt;
+  // Jacobian of the plane point by the pixel, by central differences of half a pixel.
+  constexpr double kStep = 0.5;
+  Eigen::Matrix2d jacobian;
+  for (int axis = 0; axis < 2; ++axis) {
+    const Vec2 step = kStep * Vec2::Unit(axis);
+    const std::optional<Vec3> plus = camera.point_at_height(pixel + step, center_height_m);
+    const std::optional<Vec3> minus = camera.point_at_height(pixel - step, center_height_m);
+    if (!plus || !minus) return std::nullopt;
+    jacobian.col(axis) = (plus->head<2>() - minus->head<2>()) / (2.0 * kStep);
+  }
+  const double sigma2 = detection.center_sigma_px * detection.center_sigma_px +
+                        noise.calibration_sigma_px * noise.calibration_sigma_px;
+  FieldObservation out;
+  out.object = detection.object;
+  out.position_m = center->head<2>();
+  out.covariance_m2 = sigma2 * jacobian * jacobian.transpose();
+  out.range_m = (*center - camera.center_in_field()).norm();
+  return out;
+}
+
+double mahalanobis_squared(const Vec2& a, const Eigen::Matrix2d& covariance_a, const Vec2& b,
+                           const Eigen::Matrix2d& covariance_b) {
+  const Vec2 d = a - b;
+  return d.dot((covariance_a + covariance_b).inverse() * d);
+}
+
+}  // namespace ballsight

@@ -1,0 +1,29 @@
+#pragma once
+// What the court cameras see at one moment, in the field frame: the balls (each fused over the
+// cameras that saw it), the collection sites they form, the robot's pose and which cameras
+// contributed. The value `court run` prints and the navigation service will publish.
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+#include "ballsight/world/collection_sites.hpp"
+#include "ballsight/world/robot_pose.hpp"
+
+namespace ballsight {
+
+struct FusedBall {
+  Vec2 position_m = Vec2::Zero();                           // centre, field frame
+  Eigen::Matrix2d covariance_m2 = Eigen::Matrix2d::Zero();  // expected error (0: not estimated)
+  std::vector<int> cameras;                                 // cameras that saw it, ascending
+};
+
+struct WorldModel {
+  std::vector<FusedBall> balls;
+  std::vector<CollectionSite> sites;  // indices into balls
+  std::optional<RobotPoseEstimate> robot;
+  std::vector<int> cameras;  // cameras whose frames went into this model, ascending
+};
+
+}  // namespace ballsight
