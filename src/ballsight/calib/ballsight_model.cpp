@@ -105,17 +105,21 @@ struct DistanceResidual {
   }
 };
 
-// Weak priors: the principal point near the image centre, the mount near the ideal. They decide
-// what the samples cannot (the yaw without bearings) and barely move what they can.
+// Weak priors: the principal point near the image centre, the mount near the ideal, no
+// distortion. They decide what the samples cannot (the yaw without bearings) and barely move
+// what they can.
 struct PriorResidual {
+  static constexpr int kCount = 8;
   Vec2 center_px;
   double inv_center_px;
   double inv_rotation_rad;
+  double inv_distortion;
   template <typename T>
   bool operator()(const T* p, T* residual) const {
     residual[0] = (p[2] - T(center_px.x())) * inv_center_px;
     residual[1] = (p[3] - T(center_px.y())) * inv_center_px;
     for (int i = 0; i < 3; ++i) residual[2 + i] = p[5 + i] * inv_rotation_rad;
+    for (int i = 0; i < 3; ++i) residual[5 + i] = p[8 + i] * inv_distortion;
     return true;
   }
 };
@@ -168,7 +172,7 @@ double robust_sigma(std::vector<double> components) {
 }
 
 void solve(const std::vector<SampleTerm>& terms, const PriorResidual& prior, const OmniImage& image,
-           ceres::LossFunction* loss, int max_iterations, ParamArray& params) {
+           ceres::LossFunction* loss, const BallsightFitOptions& options, ParamArray& params) {
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
@@ -187,30 +191,35 @@ void solve(const std::vector<SampleTerm>& terms, const PriorResidual& prior, con
     }
   }
   problem.AddResidualBlock(
-      new ceres::AutoDiffCostFunction<PriorResidual, 5, CatadioptricFloorParams::kSize>(
-          new PriorResidual(prior)),
+      new ceres::AutoDiffCostFunction<PriorResidual, PriorResidual::kCount,
+                                      CatadioptricFloorParams::kSize>(new PriorResidual(prior)),
       nullptr, p);
-  const std::pair<double, double> bounds[] = {{0.0, 4.0},  // xi
-                                              {1.0, 1e5},  // focal_px
-                                              {0.0, image.width - 1.0},
-                                              {0.0, image.height - 1.0},  // principal point
-                                              {1.0, 1e5},                 // height_cm
-                                              {-0.35, 0.35},
-                                              {-0.35, 0.35},
-                                              {-0.35, 0.35}};  // rotation, 20 deg
+  // Bounds in to_array() order: xi, focal, principal point, height, rotation (20 deg),
+  // distortion.
+  const double lower[] = {0.0, 1.0, 0.0, 0.0, 1.0, -0.35, -0.35, -0.35, -1.0, -1.0, -1.0};
+  const double upper[] = {
+      4.0, 1e5, image.width - 1.0, image.height - 1.0, 1e5, 0.35, 0.35, 0.35, 1.0, 1.0, 1.0};
   for (int i = 0; i < CatadioptricFloorParams::kSize; ++i) {
-    problem.SetParameterLowerBound(p, i, bounds[i].first);
-    problem.SetParameterUpperBound(p, i, bounds[i].second);
+    problem.SetParameterLowerBound(p, i, lower[i]);
+    problem.SetParameterUpperBound(p, i, upper[i]);
   }
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = max_iterations;
-  options.function_tolerance = 1e-12;
-  options.parameter_tolerance = 1e-12;
-  options.logging_type = ceres::SILENT;
-  options.num_threads = 1;
+  std::vector<int> fixed;  // the distortion terms not fitted stay zero
+  for (int i = CatadioptricFloorParams::kDistortionIndex + options.distortion_terms;
+       i < CatadioptricFloorParams::kSize; ++i) {
+    fixed.push_back(i);
+  }
+  if (!fixed.empty()) {
+    problem.SetManifold(p, new ceres::SubsetManifold(CatadioptricFloorParams::kSize, fixed));
+  }
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::DENSE_QR;
+  solver.max_num_iterations = options.max_iterations;
+  solver.function_tolerance = 1e-12;
+  solver.parameter_tolerance = 1e-12;
+  solver.logging_type = ceres::SILENT;
+  solver.num_threads = 1;
   ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
+  ceres::Solve(solver, &problem, &summary);
 }
 
 // Mean of (bearing - image angle): where the mount's yaw starts.
@@ -234,7 +243,10 @@ void BallsightFitOptions::validate() const {
   require(positive(prior_center_px), "ballsight prior_center_px", "expected a positive number");
   require(positive(prior_rotation_deg), "ballsight prior_rotation_deg",
           "expected a positive number");
+  require(positive(prior_distortion), "ballsight prior_distortion", "expected a positive number");
   require(max_iterations >= 1, "ballsight max_iterations", "expected a positive integer");
+  require(distortion_terms >= 0 && distortion_terms <= 3, "ballsight distortion_terms",
+          "expected an integer in [0, 3]");
   require(std::isfinite(range_margin_fraction) && range_margin_fraction >= 0.0 &&
               range_margin_fraction <= 0.5,
           "ballsight range_margin_fraction", "expected a number in [0, 0.5]");
@@ -263,7 +275,8 @@ nlohmann::json BallsightGroundModel::parameters_json() const {
           {"principal_px", {params_.principal_px.x(), params_.principal_px.y()}},
           {"height_cm", params_.height_cm},
           {"rotation_rad",
-           {params_.rotation_rad.x(), params_.rotation_rad.y(), params_.rotation_rad.z()}}};
+           {params_.rotation_rad.x(), params_.rotation_rad.y(), params_.rotation_rad.z()}},
+          {"distortion", {params_.distortion.x(), params_.distortion.y(), params_.distortion.z()}}};
 }
 
 BallsightGroundModel BallsightGroundModel::from_parameters_json(const nlohmann::json& parameters,
@@ -282,6 +295,8 @@ BallsightGroundModel BallsightGroundModel::from_parameters_json(const nlohmann::
   params.principal_px = {principal[0], principal[1]};
   const std::vector<double> rotation = json_numbers(parameters, "rotation_rad", where, 3);
   params.rotation_rad = {rotation[0], rotation[1], rotation[2]};
+  const std::vector<double> distortion = json_numbers(parameters, "distortion", where, 3);
+  params.distortion = {distortion[0], distortion[1], distortion[2]};
   return {params, domain};
 }
 
@@ -338,12 +353,13 @@ BallsightGroundModel fit_ballsight_model(std::span<const PolarSample> samples,
   ParamArray params = start.to_array();
 
   const PriorResidual prior{image.center_px, 1.0 / options.prior_center_px,
-                            1.0 / rad_from_deg(options.prior_rotation_deg)};
+                            1.0 / rad_from_deg(options.prior_rotation_deg),
+                            1.0 / options.prior_distortion};
   ceres::HuberLoss huber(options.huber_px);
-  solve(terms, prior, image, &huber, options.max_iterations, params);
+  solve(terms, prior, image, &huber, options, params);
   const double sigma = robust_sigma(residual_components(terms, params.data()));
   ceres::CauchyLoss cauchy(std::max(options.min_cauchy_px, 2.5 * sigma));
-  solve(terms, prior, image, &cauchy, options.max_iterations, params);
+  solve(terms, prior, image, &cauchy, options, params);
 
   const CatadioptricFloorParams fitted = CatadioptricFloorParams::from_array(params);
   const RadiusRange sampled = valid_radius_from_samples(samples, options.range_margin_fraction);

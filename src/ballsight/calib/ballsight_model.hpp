@@ -16,8 +16,10 @@ struct BallsightFitOptions {
   double min_cauchy_px = 0.5;       // second pass: Cauchy scale, 2.5 robust sigma, at least this
   double prior_center_px = 20.0;    // weak prior: principal point near the image centre
   double prior_rotation_deg = 5.0;  // weak prior: mount rotation near the ideal
+  double prior_distortion = 0.1;    // weak prior: distortion terms near zero
   int max_iterations = 200;         // per pass
   double range_margin_fraction = 0.03;  // valid range beyond the sample radii, of their span
+  int distortion_terms = 0;  // radial distortion terms fitted (0 to 3; catadioptric_floor.hpp)
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -2,7 +2,8 @@
 // The floor as a central catadioptric camera sees it: the unified model (Mei & Rives 2007, as
 // camera/unified.hpp without lens distortion) at a height above the floor, its axis turned from
 // the ideal mount by a small rotation (tilt and yaw). The physics of camera/omni_rig.hpp, with
-// the parameters ballsight's omni model fits. Templated on the scalar for Ceres' autodiff.
+// the parameters ballsight's omni model fits, plus an optional radial distortion for mirrors
+// that are not exactly central. Templated on the scalar for Ceres' autodiff.
 
 #include <ceres/rotation.h>
 
@@ -19,13 +20,27 @@ struct CatadioptricFloorParams {
   double height_cm = 60.0;           // effective viewpoint above the floor
   Vec3 rotation_rad = Vec3::Zero();  // angle-axis, robot frame: mount error from the ideal
 
-  static constexpr int kSize = 8;
+  /// Radial distortion in the pixel -> ray direction: the normalised image point m_d becomes
+  /// m_d (1 + q1 |m_d|^2 + q2 |m_d|^4 + q3 |m_d|^6).
+  Vec3 distortion = Vec3::Zero();
+
+  static constexpr int kSize = 11;
+  static constexpr int kDistortionIndex = 8;
   std::array<double, kSize> to_array() const {
-    return {xi,        focal_px,         principal_px.x(), principal_px.y(),
-            height_cm, rotation_rad.x(), rotation_rad.y(), rotation_rad.z()};
+    return {xi,
+            focal_px,
+            principal_px.x(),
+            principal_px.y(),
+            height_cm,
+            rotation_rad.x(),
+            rotation_rad.y(),
+            rotation_rad.z(),
+            distortion.x(),
+            distortion.y(),
+            distortion.z()};
   }
   static CatadioptricFloorParams from_array(const std::array<double, kSize>& a) {
-    return {a[0], a[1], {a[2], a[3]}, a[4], {a[5], a[6], a[7]}};
+    return {a[0], a[1], {a[2], a[3]}, a[4], {a[5], a[6], a[7]}, {a[8], a[9], a[10]}};
   }
 };
 
@@ -37,8 +52,12 @@ template <typename T>
 bool floor_point_from_pixel(const T* p, const T& u, const T& v, T* floor_cm,
                             bool clamp_horizon = false) {
   const T& xi = p[0];
-  const T mx = (u - p[2]) / p[1];
-  const T my = (v - p[3]) / p[1];
+  const T dx = (u - p[2]) / p[1];
+  const T dy = (v - p[3]) / p[1];
+  const T d2 = dx * dx + dy * dy;
+  const T radial = T(1.0) + d2 * (p[8] + d2 * (p[9] + d2 * p[10]));
+  const T mx = dx * radial;
+  const T my = dy * radial;
   const T r2 = mx * mx + my * my;
   const T discriminant = T(1.0) + (T(1.0) - xi * xi) * r2;
   if (!(discriminant > T(0.0))) return false;
