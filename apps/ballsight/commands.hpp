@@ -8,4 +8,9 @@ namespace ballsight::app {
 
 // Registrations, one per command file (apps/ballsight/<name>_command.cpp).
 
+/// `sim omni`: omnidirectional-camera scenes with their truth (on the `sim` subcommand).
+void add_sim_omni_command(CLI::App& sim);
+/// `omni inspect` (omni_inspect_command.cpp), registered on the `omni` group.
+void add_omni_inspect_command(CLI::App& omni);
+
 }  // namespace ballsight::app

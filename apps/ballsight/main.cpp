@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "ballsight/core/error.hpp"
 #include "commands.hpp"
@@ -11,14 +12,31 @@ int main(int argc, char** argv) {
   CLI::App app{"ballsight: vision for ball-collecting and ball-playing robots"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "ballsight 0.1.0");
+  // One line on bad options, like every other input error.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("ballsight: error: ") + e.what() + " (see --help)\n";
+  });
 
   CLI::App* sim = app.add_subcommand("sim", "Render simulated scenes with their ground truth");
   sim->require_subcommand(1);
+  ballsight::app::add_sim_omni_command(*sim);
+
+  CLI::App* omni = app.add_subcommand(
+      "omni", "Omnidirectional camera: calibration, lookup tables, ball localisation");
+  omni->require_subcommand(1);
+  ballsight::app::add_omni_inspect_command(*omni);
 
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
   } catch (const ballsight::InputError& e) {
     std::cerr << "ballsight: error: " << e.what() << "\n";
     return 2;

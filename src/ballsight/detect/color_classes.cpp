@@ -1,0 +1,74 @@
+#include "ballsight/detect/color_classes.hpp"
+
+#include <opencv2/imgproc.hpp>
+#include <string>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+void YuvRange::validate(const char* name) const {
+  static constexpr const char* kChannel[] = {"Y", "U", "V"};
+  for (size_t c = 0; c < 3; ++c) {
+    require(min[c] >= 0 && max[c] <= 255, name,
+            std::string(kChannel[c]) + " bounds must be within [0, 255]");
+    require(min[c] <= max[c], name, std::string(kChannel[c]) + " minimum exceeds maximum");
+  }
+}
+
+bool YuvRange::contains(const cv::Vec3b& yuv) const {
+  for (int c = 0; c < 3; ++c) {
+    if (yuv[c] < min[static_cast<size_t>(c)] || yuv[c] > max[static_cast<size_t>(c)]) return false;
+  }
+  return true;
+}
+
+ColorClassTable::ColorClassTable(const std::vector<ColorClassRule>& rules)
+    : table_(std::size_t{1} << (3 * kBits), 0) {
+  for (const ColorClassRule& rule : rules) rule.range.validate("colour class");
+  // Classify the centre of every quantisation cell with OpenCV's own YUV conversion, so the
+  // table agrees with segment_yuv_inrange except within half a cell of a range boundary.
+  constexpr int kCells = 1 << kBits;
+  constexpr int kHalf = 1 << (kShift - 1);
+  cv::Mat bgr(kCells * kCells, kCells, CV_8UC3);
+  for (int b = 0; b < kCells; ++b)
+    for (int g = 0; g < kCells; ++g)
+      for (int r = 0; r < kCells; ++r)
+        bgr.at<cv::Vec3b>(b * kCells + g, r) = cv::Vec3b(static_cast<uchar>((b << kShift) + kHalf),
+                                                         static_cast<uchar>((g << kShift) + kHalf),
+                                                         static_cast<uchar>((r << kShift) + kHalf));
+  cv::Mat yuv;
+  cv::cvtColor(bgr, yuv, cv::COLOR_BGR2YUV);
+  for (int row = 0; row < yuv.rows; ++row) {
+    for (int r = 0; r < kCells; ++r) {
+      const cv::Vec3b& c = yuv.at<cv::Vec3b>(row, r);
+      ColorClassMask m = 0;
+      for (const ColorClassRule& rule : rules)
+        if (rule.range.contains(c)) m |= rule.mask;
+      table_[(static_cast<std::size_t>(row) << kBits) | static_cast<std::size_t>(r)] = m;
+    }
+  }
+}
+
+cv::Mat1b segment(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask) {
+  require(bgr.type() == CV_8UC3, "segment", "expected an 8-bit BGR image");
+  cv::Mat1b out(bgr.size());
+  for (int y = 0; y < bgr.rows; ++y) {
+    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y);
+    uchar* o = out.ptr<uchar>(y);
+    for (int x = 0; x < bgr.cols; ++x) o[x] = (table.classify(in[x]) & mask) ? 255 : 0;
+  }
+  return out;
+}
+
+cv::Mat1b segment_yuv_inrange(const cv::Mat& bgr, const YuvRange& range) {
+  require(bgr.type() == CV_8UC3, "segment", "expected an 8-bit BGR image");
+  cv::Mat yuv;
+  cv::cvtColor(bgr, yuv, cv::COLOR_BGR2YUV);
+  cv::Mat1b out;
+  cv::inRange(yuv, cv::Scalar(range.min[0], range.min[1], range.min[2]),
+              cv::Scalar(range.max[0], range.max[1], range.max[2]), out);
+  return out;
+}
+
+}  // namespace ballsight

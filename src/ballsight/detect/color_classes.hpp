@@ -1,0 +1,56 @@
+#pragma once
+// Colour segmentation in YUV as the omnivision paper (Section IV), through a colour-class table:
+// every BGR colour, quantised to 6 bits per channel, maps to a bit set of colour classes, so
+// classifying a pixel is one table read instead of a colour conversion and six comparisons.
+
+#include <array>
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace ballsight {
+
+/// An axis-aligned box in OpenCV's 8-bit YUV (cv::COLOR_BGR2YUV), bounds inclusive.
+struct YuvRange {
+  std::array<int, 3> min{0, 0, 0};
+  std::array<int, 3> max{255, 255, 255};
+
+  /// Throws InputError naming `name` when a bound is outside [0, 255] or min > max.
+  void validate(const char* name = "yuv range") const;
+  bool contains(const cv::Vec3b& yuv) const;
+};
+
+/// Colour classes are bits so that one table entry can belong to several classes.
+using ColorClassMask = std::uint8_t;
+
+struct ColorClassRule {
+  ColorClassMask mask = 0;
+  YuvRange range;
+};
+
+class ColorClassTable {
+ public:
+  static constexpr int kBits = 6;  // 64^3 entries = 256 KiB: stays in L2
+  static constexpr int kShift = 8 - kBits;
+
+  explicit ColorClassTable(const std::vector<ColorClassRule>& rules);
+
+  ColorClassMask classify(const cv::Vec3b& bgr) const {
+    return table_[index(bgr[0], bgr[1], bgr[2])];
+  }
+  static std::size_t index(std::uint8_t b, std::uint8_t g, std::uint8_t r) {
+    return (static_cast<std::size_t>(b >> kShift) << (2 * kBits)) |
+           (static_cast<std::size_t>(g >> kShift) << kBits) | static_cast<std::size_t>(r >> kShift);
+  }
+
+ private:
+  std::vector<ColorClassMask> table_;
+};
+
+/// 255 where a BGR pixel belongs to any class in `mask`, 0 elsewhere (whole image).
+cv::Mat1b segment(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask);
+
+/// The paper's way, kept as the baseline: cvtColor to YUV, then inRange.
+cv::Mat1b segment_yuv_inrange(const cv::Mat& bgr, const YuvRange& range);
+
+}  // namespace ballsight

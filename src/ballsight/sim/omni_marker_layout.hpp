@@ -1,0 +1,37 @@
+#pragma once
+// The calibration marker layout of the omnivision paper (Fig. 6, Table I): floor markers on rays
+// around the robot every 10 deg, from 60 cm to 460 cm in 50 cm steps.
+
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+#include "ballsight/sim/omni_scene.hpp"
+
+namespace ballsight::sim {
+
+struct MarkerLayout {
+  double bearing_step_deg = 10.0;  // rays at robot bearings 0, step, 2 step, ...
+  double min_distance_m = 0.6;
+  double max_distance_m = 4.6;
+  double distance_step_m = 0.5;
+  /// Marker diameter as a fraction of the distance to its nearest neighbour. With the default
+  /// rig the rings beyond 4 m are ~5 px apart in the image, so this is a narrow window: 0.7 makes
+  /// the far markers ~3.4 px thick with a ~1.6 px gap (0.72 can merge neighbours at half
+  /// coverage, 0.67 leaves some 2 px thick; docs/sim-omni.md).
+  double fill = 0.7;
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+/// Radius of a marker `distance_m` from the robot: grows with distance (neighbours on adjacent
+/// rays spread apart) up to the spacing along a ray.
+double calibration_marker_radius_m(double distance_m, const MarkerLayout& layout);
+
+/// The markers around a robot at `robot_pose`, placed in the robot frame and turned to the field.
+/// Ids are ray-major: id = ray_index * rings + ring_index, ray 0 straight ahead, counting
+/// counter-clockwise, ring 0 nearest.
+std::vector<FloorMarker> calibration_markers(const Pose2D& robot_pose,
+                                             const MarkerLayout& layout = {});
+
+}  // namespace ballsight::sim
