@@ -13,4 +13,7 @@ void add_sim_omni_command(CLI::App& sim);
 /// `omni inspect` (omni_inspect_command.cpp), registered on the `omni` group.
 void add_omni_inspect_command(CLI::App& omni);
 
+/// `omni fit` and `omni predict` (omni_fit_command.cpp), registered on the `omni` group.
+void add_omni_fit_commands(CLI::App& omni);
+
 }  // namespace ballsight::app

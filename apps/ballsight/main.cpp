@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   CLI::App* omni = app.add_subcommand(
       "omni", "Omnidirectional camera: calibration, lookup tables, ball localisation");
   omni->require_subcommand(1);
+  ballsight::app::add_omni_fit_commands(*omni);
   ballsight::app::add_omni_inspect_command(*omni);
 
   try {

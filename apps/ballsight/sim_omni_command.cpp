@@ -7,7 +7,6 @@
 #include <iostream>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,6 +16,7 @@
 #include "ballsight/sim/omni_scenario.hpp"
 #include "ballsight/sim/omni_truth_json.hpp"
 #include "commands.hpp"
+#include "option_parsing.hpp"
 
 namespace ballsight::app {
 
@@ -29,16 +29,6 @@ struct SimOmniArgs {
   std::optional<std::string> center_offset_px;  // "X,Y"
   bool no_markers = false;
 };
-
-Vec2 parse_pixel_pair(const std::string& text, const std::string& option) {
-  std::istringstream in(text);
-  double x = 0.0, y = 0.0;
-  char comma = 0;
-  in >> x >> comma >> y;
-  require(in && comma == ',' && (in >> std::ws).eof(), option,
-          "expected two numbers X,Y in pixels, got '" + text + "'");
-  return {x, y};
-}
 
 std::uint64_t parse_seed(const std::string& text) {
   std::uint64_t seed = 0;

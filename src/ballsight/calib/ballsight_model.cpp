@@ -198,7 +198,7 @@ void solve(const std::vector<SampleTerm>& terms, const PriorResidual& prior, con
   // distortion.
   const double lower[] = {0.0, 1.0, 0.0, 0.0, 1.0, -0.35, -0.35, -0.35, -1.0, -1.0, -1.0};
   const double upper[] = {
-      4.0, 1e5, image.width - 1.0, image.height - 1.0, 1e5, 0.35, 0.35, 0.35, 1.0, 1.0, 1.0};
+      50.0, 1e5, image.width - 1.0, image.height - 1.0, 1e5, 0.35, 0.35, 0.35, 1.0, 1.0, 1.0};
   for (int i = 0; i < CatadioptricFloorParams::kSize; ++i) {
     problem.SetParameterLowerBound(p, i, lower[i]);
     problem.SetParameterUpperBound(p, i, upper[i]);

@@ -72,7 +72,7 @@ void PaperMlpFitOptions::validate() const {
   require(hidden_neurons >= 2 && hidden_neurons <= 256, "paper-mlp hidden_neurons",
           "expected an integer in [2, 256]");
   require(max_epochs >= 1, "paper-mlp max_epochs", "expected a positive integer");
-  require(epochs_per_block >= 1, "paper-mlp epochs_per_block", "expected a positive integer");
+  require(updates_per_block >= 1, "paper-mlp updates_per_block", "expected a positive integer");
   require(patience_blocks >= 1, "paper-mlp patience_blocks", "expected a positive integer");
   require(std::isfinite(min_improvement) && min_improvement >= 0.0 && min_improvement < 1.0,
           "paper-mlp min_improvement", "expected a number in [0, 1)");
@@ -191,10 +191,11 @@ PaperMlpGroundModel fit_paper_mlp_model(std::span<const PolarSample> samples,
   PaperMlpNetwork best;
   PaperMlpTraining training;
   training.training_mse = INFINITY;
+  const int epochs_per_block = std::max(1, options.updates_per_block / count);
   int epochs = 0;
   int stale_blocks = 0;
   while (epochs < options.max_epochs && stale_blocks < options.patience_blocks) {
-    const int block = std::min(options.epochs_per_block, options.max_epochs - epochs);
+    const int block = std::min(epochs_per_block, options.max_epochs - epochs);
     // Exactly `block` epochs: OpenCV always adds an epsilon test on the change of the training
     // error, at least DBL_EPSILON, which this makes unreachable in practice.
     mlp->setTermCriteria(

@@ -15,10 +15,11 @@ struct PaperMlpFitOptions {
   int hidden_layers = 2;
   int hidden_neurons = 36;
   int max_epochs = 300000;  // the paper trains 300000 epochs; here an upper bound
-  /// Training runs in blocks of epochs; after each the training MSE is checked and training
-  /// stops once `patience_blocks` blocks in a row improved the best MSE by less than
-  /// `min_improvement` (relative). The best weights seen are kept.
-  int epochs_per_block = 2000;
+  /// Training runs in blocks of about `updates_per_block` sample presentations (2000 epochs of
+  /// the paper's ~320 markers; more epochs for fewer samples); after each block the training
+  /// MSE is checked, and training stops once `patience_blocks` blocks in a row improved the
+  /// best MSE by less than `min_improvement` (relative). The best weights seen are kept.
+  int updates_per_block = 640000;
   int patience_blocks = 5;
   double min_improvement = 0.005;
   /// OpenCV's BACKPROP (online gradient descent with momentum) by default. RPROP converges
