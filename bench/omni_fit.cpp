@@ -143,6 +143,16 @@ void BM_FitPaperMlpRprop(benchmark::State& state) {
 }
 BENCHMARK(BM_FitPaperMlpRprop)->Unit(benchmark::kSecond)->Iterations(1);
 
+void BM_FitPaperMlpPaperLayout(benchmark::State& state) {
+  fit_and_report(state, kPaperLayout, OmniMethod::kPaperMlp, {});
+}
+BENCHMARK(BM_FitPaperMlpPaperLayout)->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_FitPaperMlpRpropPaperLayout(benchmark::State& state) {
+  fit_and_report(state, kPaperLayout, OmniMethod::kPaperMlp, paper_mlp_rprop());
+}
+BENCHMARK(BM_FitPaperMlpRpropPaperLayout)->Unit(benchmark::kSecond)->Iterations(1);
+
 }  // namespace
 }  // namespace ballsight
 

@@ -77,12 +77,18 @@ struct SampleTerm {
   double inv_tangential_cm = 1.0;  // pixels per cm, across
 };
 
+// The model's floor point at a sample's pixel, a grazing one above the horizon.
+template <typename T>
+void floor_at(const SampleTerm& term, const T* p, T* floor) {
+  floor_point_from_pixel(p, T(term.pixel.x()), T(term.pixel.y()), floor, true);
+}
+
 struct PointResidual {
   const SampleTerm* term;
   template <typename T>
   bool operator()(const T* p, T* residual) const {
     T floor[2];
-    floor_point_from_pixel(p, T(term->pixel.x()), T(term->pixel.y()), floor, true);
+    floor_at(*term, p, floor);
     const Vec2 radial = term->target_cm.normalized();
     const T ex = floor[0] - T(term->target_cm.x());
     const T ey = floor[1] - T(term->target_cm.y());
@@ -97,7 +103,7 @@ struct DistanceResidual {
   template <typename T>
   bool operator()(const T* p, T* residual) const {
     T floor[2];
-    floor_point_from_pixel(p, T(term->pixel.x()), T(term->pixel.y()), floor, true);
+    floor_at(*term, p, floor);
     using std::sqrt;
     residual[0] = (sqrt(floor[0] * floor[0] + floor[1] * floor[1]) - T(term->distance_cm)) *
                   term->inv_radial_cm;
@@ -282,8 +288,7 @@ nlohmann::json BallsightGroundModel::parameters_json() const {
 BallsightGroundModel BallsightGroundModel::from_parameters_json(const nlohmann::json& parameters,
                                                                 const OmniModelDomain& domain) {
   const std::string where = "parameters";
-  require(json_string(parameters, "model", where) == "unified-catadioptric-floor", where + ".model",
-          "expected \"unified-catadioptric-floor\"");
+  json_require_string(parameters, "model", where, "unified-catadioptric-floor");
   CatadioptricFloorParams params;
   params.xi = json_number(parameters, "xi", where);
   params.focal_px = json_number(parameters, "focal_px", where);

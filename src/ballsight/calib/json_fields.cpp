@@ -38,6 +38,12 @@ std::string json_string(const nlohmann::json& object, const std::string& key,
   return value.get<std::string>();
 }
 
+void json_require_string(const nlohmann::json& object, const std::string& key,
+                         const std::string& where, const std::string& expected) {
+  require(json_string(object, key, where) == expected, where + "." + key,
+          "expected \"" + expected + "\"");
+}
+
 std::vector<double> json_number_array(const nlohmann::json& value, const std::string& where,
                                       std::size_t size) {
   const std::string expected =

@@ -19,6 +19,9 @@ int json_int(const nlohmann::json& object, const std::string& key, const std::st
 /// A string.
 std::string json_string(const nlohmann::json& object, const std::string& key,
                         const std::string& where);
+/// Throws unless the member `key` is the string `expected`.
+void json_require_string(const nlohmann::json& object, const std::string& key,
+                         const std::string& where, const std::string& expected);
 /// `value` as an array of finite numbers, of `size` elements unless size is 0.
 std::vector<double> json_number_array(const nlohmann::json& value, const std::string& where,
                                       std::size_t size = 0);

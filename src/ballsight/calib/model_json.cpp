@@ -47,8 +47,7 @@ nlohmann::json omni_model_to_json(const OmniGroundModel& model) {
 std::unique_ptr<OmniGroundModel> omni_model_from_json(const nlohmann::json& document,
                                                       const std::string& source) {
   try {
-    require(json_string(document, "format", "model") == kFormat, "model.format",
-            "expected \"" + std::string(kFormat) + "\"");
+    json_require_string(document, "format", "model", std::string(kFormat));
     require(json_int(document, "version", "model", 0, 1 << 20) == kVersion, "model.version",
             "expected " + std::to_string(kVersion));
     const OmniMethod method =

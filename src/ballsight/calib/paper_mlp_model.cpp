@@ -121,8 +121,7 @@ nlohmann::json PaperMlpGroundModel::parameters_json() const {
 PaperMlpGroundModel PaperMlpGroundModel::from_parameters_json(const nlohmann::json& parameters,
                                                               const OmniModelDomain& domain) {
   const std::string where = "parameters";
-  require(json_string(parameters, "activation", where) == "sigmoid_sym", where + ".activation",
-          "expected \"sigmoid_sym\"");
+  json_require_string(parameters, "activation", where, "sigmoid_sym");
   PaperMlpNetwork network;
   network.alpha = json_number(parameters, "alpha", where);
   network.beta = json_number(parameters, "beta", where);
