@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
   omni->require_subcommand(1);
   ballsight::app::add_omni_inspect_command(*omni);
 
+  ballsight::app::add_demo_command(app);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
