@@ -20,12 +20,15 @@ int main(int argc, char** argv) {
   CLI::App* sim = app.add_subcommand("sim", "Render simulated scenes with their ground truth");
   sim->require_subcommand(1);
   ballsight::app::add_sim_omni_command(*sim);
+  ballsight::app::add_sim_court_command(*sim);
 
   CLI::App* omni = app.add_subcommand(
       "omni", "Omnidirectional camera: calibration, lookup tables, ball localisation");
   omni->require_subcommand(1);
   ballsight::app::add_omni_fit_commands(*omni);
   ballsight::app::add_omni_inspect_command(*omni);
+
+  ballsight::app::add_demo_command(app);
 
   try {
     app.parse(argc, argv);

@@ -2,19 +2,14 @@
 
 #include <charconv>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/core/file_io.hpp"
-#include "ballsight/sim/omni_renderer.hpp"
-#include "ballsight/sim/omni_scenario.hpp"
-#include "ballsight/sim/omni_truth_json.hpp"
+#include "ballsight/sim/omni_dataset.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -39,30 +34,14 @@ std::uint64_t parse_seed(const std::string& text) {
   return seed;
 }
 
-std::string frame_name(int index, const char* extension) {
-  char name[32];
-  std::snprintf(name, sizeof(name), "omni_%04d.%s", index, extension);
-  return name;
-}
-
 void run(SimOmniArgs args) {
   args.scenario.seed = parse_seed(args.seed);
   if (args.center_offset_px) {
     args.scenario.center_offset_px = parse_pixel_pair(*args.center_offset_px, "--center-offset-px");
   }
   args.scenario.calibration_frame = !args.no_markers;
-  const sim::OmniScenario scenario = sim::make_omni_scenario(args.scenario);
-  ensure_directory(args.out);
-  const sim::OmniRenderer renderer(scenario.rig);
-  for (std::size_t i = 0; i < scenario.scenes.size(); ++i) {
-    const sim::OmniFrame frame = renderer.render(scenario.scenes[i]);
-    std::vector<uchar> png;
-    if (!cv::imencode(".png", frame.bgr, png)) throw std::runtime_error("PNG encoding failed");
-    const auto image_path = args.out / frame_name(static_cast<int>(i), "png");
-    const auto truth_path = args.out / frame_name(static_cast<int>(i), "json");
-    write_file_atomic(image_path, {reinterpret_cast<const char*>(png.data()), png.size()});
-    write_file_atomic(truth_path, sim::omni_truth_json_text(frame.truth));
-    std::cout << image_path.string() << " " << truth_path.string() << "\n";
+  for (const std::string& name : sim::write_omni_dataset(args.scenario, args.out)) {
+    std::cout << (args.out / name).string() << "\n";
   }
 }
 

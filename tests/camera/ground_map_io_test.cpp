@@ -58,6 +58,14 @@ class GroundMapFile : public ::testing::Test {
   fs::path path = dir / "table.bsgm";
 };
 
+TEST_F(GroundMapFile, KeepsTheViewpointHeightToTheMillimetre) {
+  GroundMap map = pattern_map(9, 7);
+  GroundMapInfo info = map.info();
+  info.viewpoint_height_cm = 61.37;
+  save_ground_map(path, GroundMap(info, {map.cells().begin(), map.cells().end()}));
+  EXPECT_DOUBLE_EQ(load_ground_map(path).info().viewpoint_height_cm, 61.4);
+}
+
 TEST_F(GroundMapFile, RoundTripsBitForBit) {
   const GroundMap map = pattern_map(23, 17);
   save_ground_map(path, map);
@@ -69,6 +77,7 @@ TEST_F(GroundMapFile, RoundTripsBitForBit) {
   EXPECT_EQ(loaded.info().min_radius_px, map.info().min_radius_px);
   EXPECT_EQ(loaded.info().max_radius_px, map.info().max_radius_px);
   EXPECT_EQ(loaded.info().method, "pattern");
+  EXPECT_EQ(loaded.info().viewpoint_height_cm, 0.0);
   ASSERT_EQ(loaded.cells().size(), map.cells().size());
   EXPECT_EQ(std::memcmp(loaded.cells().data(), map.cells().data(), map.cells().size_bytes()), 0);
   // Saving the loaded table gives the same file.
@@ -94,7 +103,7 @@ TEST_F(GroundMapFile, HeaderFieldsSitAtTheirDocumentedOffsets) {
   EXPECT_EQ(in.u32(), 1u);              // 60: cell format = float32 pair
   EXPECT_EQ(in.u64(), 23u * 17u * 8u);  // 64: payload bytes
   EXPECT_EQ(in.padded(64), "pattern");  // 72: method
-  EXPECT_EQ(in.u32(), 0u);              // 136: reserved
+  EXPECT_EQ(in.u32(), 0u);              // 136: viewpoint height (unknown)
   in.u32();                             // 140: checksum
   EXPECT_EQ(in.f32(), -17.25f);         // 144: cell (0, 0).x_cm
   EXPECT_EQ(in.f32(), -0.0f);           // 148: cell (0, 0).y_cm

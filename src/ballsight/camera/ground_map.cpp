@@ -17,6 +17,9 @@ void GroundMapInfo::validate() const {
           "min_radius_px must be >= 0");
   require(std::isfinite(max_radius_px) && max_radius_px > min_radius_px, where,
           "max_radius_px must be > min_radius_px");
+  require(std::isfinite(viewpoint_height_cm) && viewpoint_height_cm >= 0.0 &&
+              viewpoint_height_cm < 4.0e7,
+          where, "viewpoint_height_cm must be >= 0 (0 = unknown)");
   require(method.size() <= kMaxMethodLength, where,
           "method must be at most " + std::to_string(kMaxMethodLength) + " characters");
 }

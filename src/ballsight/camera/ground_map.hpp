@@ -35,6 +35,9 @@ struct GroundMapInfo {
   double min_radius_px = 0.0;
   double max_radius_px = 240.0;
   std::string method = "unknown";  // which mapping built the table, e.g. "poly", "iris-px2cm"
+  /// Height of the camera's effective viewpoint above the floor, when the method knows it (a
+  /// fitted catadioptric model does); 0 = unknown. Run time needs it to place a ball's centre.
+  double viewpoint_height_cm = 0.0;
 
   static constexpr std::size_t kMaxMethodLength = 63;
 

@@ -62,7 +62,7 @@ void save_ground_map(const std::filesystem::path& path, const GroundMap& map) {
   out.u32(kCellFloat32Pair);
   out.u64(payload_bytes(info));
   out.padded(info.method, kMethodBytes);
-  out.u32(0);  // reserved
+  out.u32(static_cast<std::uint32_t>(std::lround(info.viewpoint_height_cm * 10.0)));  // mm
   out.u32(0);  // checksum, filled in below
   for (const GroundCell& cell : map.cells()) {
     out.f32(cell.x_cm);
@@ -104,7 +104,7 @@ GroundMap load_ground_map(const std::filesystem::path& path,
   const std::uint32_t cell_format = in.u32();
   const std::uint64_t payload = in.u64();
   info.method = in.padded(kMethodBytes);
-  in.u32();  // reserved
+  info.viewpoint_height_cm = in.u32() / 10.0;  // stored in mm
   const std::uint32_t stored_checksum = in.u32();
 
   // The payload size is stored twice (image size and byte count): a damaged size field shows

@@ -11,6 +11,10 @@ Json json_vec2(const Vec2& v) {
   return Json::array({v.x(), v.y()});
 }
 
+Json json_vec3(const Vec3& v) {
+  return Json::array({v.x(), v.y(), v.z()});
+}
+
 Json json_optional_vec2(const std::optional<Vec2>& v) {
   return v ? json_vec2(*v) : Json(nullptr);
 }

@@ -16,6 +16,7 @@ namespace ballsight::sim {
 using Json = nlohmann::ordered_json;
 
 Json json_vec2(const Vec2& v);                          // [x, y]
+Json json_vec3(const Vec3& v);                          // [x, y, z]
 Json json_optional_vec2(const std::optional<Vec2>& v);  // [x, y] or null
 Json json_bgr(const cv::Vec3b& c);                      // [b, g, r]
 

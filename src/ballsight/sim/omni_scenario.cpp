@@ -9,26 +9,11 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/sim/msl_field.hpp"
 #include "ballsight/sim/omni_marker_layout.hpp"
+#include "ballsight/sim/seeding.hpp"
 
 namespace ballsight::sim {
 
 namespace {
-
-// Uniform in [lo, hi) from the top 53 bits of one draw: the same numbers on every platform,
-// unlike std::uniform_real_distribution.
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  const double unit = static_cast<double>(rng() >> 11) * 0x1.0p-53;
-  return lo + (hi - lo) * unit;
-}
-
-// An independent stream per frame (splitmix64 of seed and frame), so that a frame does not
-// depend on what the frames before it drew.
-std::mt19937_64 frame_rng(std::uint64_t seed, int frame) {
-  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (static_cast<std::uint64_t>(frame) + 1);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return std::mt19937_64(z ^ (z >> 31));
-}
 
 OmniRigParams rig_params(const OmniScenarioOptions& options, std::mt19937_64& rng) {
   // Always draw all three so that overriding one does not change the rest of the scenario.
@@ -89,7 +74,8 @@ OmniScenario make_omni_scenario(const OmniScenarioOptions& options) {
   scenario.rig = rig_params(options, rig_rng);
   const MslField field;
   for (int frame = 0; frame < options.frames; ++frame) {
-    std::mt19937_64 rng = frame_rng(options.seed, frame);
+    // An independent stream per frame, so that a frame does not depend on the frames before it.
+    std::mt19937_64 rng(derive_seed(options.seed, static_cast<std::uint64_t>(frame)));
     OmniScene scene;
     scene.rig = scenario.rig;
     scene.field = field.spec();

@@ -53,6 +53,21 @@ std::optional<std::vector<Vec2>> project_outline(const OmniRig& rig,
   return pixels;
 }
 
+std::optional<std::vector<Vec2>> sphere_outline_pixels(const PinholeCamera& camera,
+                                                       const Vec3& center_in_camera, double radius,
+                                                       int samples) {
+  const std::vector<Vec3> rim = sphere_silhouette(Vec3::Zero(), center_in_camera, radius, samples);
+  if (rim.empty()) return std::nullopt;
+  std::vector<Vec2> pixels;
+  pixels.reserve(rim.size());
+  for (const Vec3& p : rim) {
+    const std::optional<Vec2> pixel = camera.project(p);
+    if (!pixel) return std::nullopt;
+    pixels.push_back(*pixel);
+  }
+  return pixels;
+}
+
 bool inside_mirror(const OmniRig& rig, const std::vector<Vec2>& pixels) {
   for (const Vec2& p : pixels) {
     if ((p - rig.principal_point()).norm() > rig.params().mirror_radius_px) return false;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ballsight/camera/omni_rig.hpp"
+#include "ballsight/camera/pinhole.hpp"
 #include "ballsight/core/geometry.hpp"
 
 namespace ballsight::sim {
@@ -24,6 +25,13 @@ std::vector<Vec3> floor_disc_rim(const Vec2& center, double radius, int samples)
 /// projection.
 std::optional<std::vector<Vec2>> project_outline(const OmniRig& rig,
                                                  const std::vector<Vec3>& points_in_robot);
+
+/// Pixels of a sphere's outline in a pinhole camera (centre in the camera frame): the rim seen
+/// from the optical centre, projected through the lens; nullopt when the camera is inside the
+/// sphere or a rim point has no projection.
+std::optional<std::vector<Vec2>> sphere_outline_pixels(const PinholeCamera& camera,
+                                                       const Vec3& center_in_camera, double radius,
+                                                       int samples);
 
 /// True when every pixel lies inside the rig's mirror circle.
 bool inside_mirror(const OmniRig& rig, const std::vector<Vec2>& pixels);

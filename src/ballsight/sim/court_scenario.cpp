@@ -1,0 +1,188 @@
+#include "ballsight/sim/court_scenario.hpp"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "ballsight/core/angle.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/sim/seeding.hpp"
+
+namespace ballsight::sim {
+namespace {
+
+constexpr double kBallGapM = 0.002;  // between touching balls: no interpenetration
+
+/// Free space on the ground: balls already placed and the robot's footprint.
+class Placement {
+ public:
+  explicit Placement(const RobotBox& robot) : robot_(robot) {}
+
+  void add(const SceneSphere& s) { taken_.push_back(s); }
+
+  bool is_free(const Vec2& xy, double radius) const {
+    for (const SceneSphere& s : taken_) {
+      if ((s.center_in_field.head<2>() - xy).norm() < s.radius_m + radius + kBallGapM) {
+        return false;
+      }
+    }
+    return distance_to_robot(xy) >= radius + kBallGapM;
+  }
+
+  double distance_to_robot(const Vec2& xy) const {
+    const Vec2 p = robot_.pose.field_from_robot().inverse() * xy;
+    const Vec2 outside(std::max(std::abs(p.x()) - robot_.length_m / 2.0, 0.0),
+                       std::max(std::abs(p.y()) - robot_.width_m / 2.0, 0.0));
+    return outside.norm();
+  }
+
+ private:
+  const RobotBox& robot_;
+  std::vector<SceneSphere> taken_;
+};
+
+Vec2 uniform_in(std::mt19937_64& rng, const GroundRect& r, double margin) {
+  return {uniform(rng, r.x_min + margin, r.x_max - margin),
+          uniform(rng, r.y_min + margin, r.y_max - margin)};
+}
+
+/// Draws candidates until one is free; scenes are sparse, so failure is a bug.
+template <typename Draw>
+Vec2 place(std::mt19937_64& rng, const Placement& placement, double radius, Draw draw) {
+  for (int attempt = 0; attempt < 10000; ++attempt) {
+    const Vec2 xy = draw(rng);
+    if (placement.is_free(xy, radius)) return xy;
+  }
+  throw std::logic_error("court scenario: no free place for a ball");
+}
+
+SceneSphere tennis_ball(int id, const Vec2& xy) {
+  return {ObjectKind::tennis_ball, id, Vec3(xy.x(), xy.y(), kTennisBallRadiusM), kTennisBallRadiusM,
+          kTennisBallBgr};
+}
+
+Lighting random_lighting(std::mt19937_64& rng, const TennisCourtSpec& court, bool shadow) {
+  Lighting lighting;
+  const double elevation = rad_from_deg(uniform(rng, 35.0, 70.0));
+  const double azimuth = uniform(rng, -kPi, kPi);
+  lighting.to_sun = Vec3(std::cos(elevation) * std::cos(azimuth),
+                         std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+  lighting.ambient = uniform(rng, 0.40, 0.50);
+  if (shadow) {
+    const Vec2 point = uniform_in(rng, court.court_rect(), 1.0);
+    const double direction = uniform(rng, 0.0, kPi);
+    lighting.shadow = ShadowBand{point, Vec2(std::cos(direction), std::sin(direction)),
+                                 uniform(rng, 2.0, 5.0), uniform(rng, 0.2, 0.6)};
+  }
+  return lighting;
+}
+
+}  // namespace
+
+void CourtScenarioOptions::validate() const {
+  if (ball_count) {
+    require(
+        *ball_count >= 0 && *ball_count <= kMaxBalls, "balls",
+        "must be in [0, " + std::to_string(kMaxBalls) + "], got " + std::to_string(*ball_count));
+  }
+  ImageEffects effects;
+  effects.noise_sigma = noise_sigma;
+  if (brightness_gain) effects.brightness_gain = *brightness_gain;
+  effects.validate();
+}
+
+std::vector<Vec3> reference_ball_positions(const TennisCourtSpec& court) {
+  const double w = court.line_width_m, r = kReferenceBallRadiusM;
+  const double baseline = court.length_m / 2.0 - w / 2.0;
+  const double service = court.service_line_from_net_m - w / 2.0;
+  const double singles = court.singles_width_m / 2.0 - w / 2.0;
+  const double doubles = court.doubles_width_m / 2.0 - w / 2.0;
+  return {{baseline, singles, r},  {baseline, -singles, r}, {-baseline, -singles, r},
+          {-baseline, singles, r}, {service, singles, r},   {service, -singles, r},
+          {-service, -singles, r}, {-service, singles, r},  {service, 0.0, r},
+          {-service, 0.0, r},      {0.0, doubles, r},       {0.0, -doubles, r}};
+}
+
+CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOptions& options,
+                            std::uint64_t seed) {
+  court.validate();
+  options.validate();
+  std::mt19937_64 rng(seed);
+  CourtScene scene;
+  const std::vector<Vec3> references = reference_ball_positions(court);
+
+  // The robot somewhere on the court, clear of the reference balls.
+  const GroundRect on_court = court.court_rect();
+  const auto clear_of_references = [&](const RobotBox& robot) {
+    const Placement probe(robot);
+    for (const Vec3& p : references) {
+      if (probe.distance_to_robot(p.head<2>()) < 0.4) return false;
+    }
+    return true;
+  };
+  do {
+    scene.robot.pose = {uniform_in(rng, on_court, 1.0), uniform(rng, -kPi, kPi)};
+  } while (!clear_of_references(scene.robot));  // a few draws: the references are sparse
+
+  Placement placement(scene.robot);
+  for (size_t i = 0; i < references.size(); ++i) {
+    scene.balls.push_back({ObjectKind::reference_ball, static_cast<int>(i), references[i],
+                           kReferenceBallRadiusM, kReferenceBallBgr});
+    placement.add(scene.balls.back());
+  }
+
+  const int count = options.ball_count ? *options.ball_count : uniform_int(rng, 20, 60);
+  const double r = kTennisBallRadiusM;
+  int id = 0;
+  const auto add_ball = [&](const Vec2& xy) {
+    scene.balls.push_back(tennis_ball(id++, xy));
+    placement.add(scene.balls.back());
+  };
+
+  // Clusters of 2-4 touching balls, about a quarter of all balls.
+  const int clustered = count / 4;
+  while (id < clustered) {
+    const int size = std::min(uniform_int(rng, 2, 4), clustered - id);
+    const int first = static_cast<int>(scene.balls.size());
+    add_ball(place(rng, placement, r, [&](auto& g) { return uniform_in(g, on_court, 0.5); }));
+    for (int k = 1; k < size; ++k) {
+      add_ball(place(rng, placement, r, [&](auto& g) {
+        const int member = uniform_int(g, first, static_cast<int>(scene.balls.size()) - 1);
+        const double a = uniform(g, -kPi, kPi);
+        return Vec2(scene.balls[static_cast<size_t>(member)].center_in_field.head<2>() +
+                    (2.0 * r + kBallGapM) * Vec2(std::cos(a), std::sin(a)));
+      }));
+    }
+  }
+
+  // Up to four balls right beside the robot: hidden from the cameras on the robot's far side.
+  const RobotBox& robot = scene.robot;
+  for (int k = 0; k < 4 && id < count; ++k) {
+    add_ball(place(rng, placement, r, [&](auto& g) {
+      const double along = uniform(g, -0.5, 0.5), gap = r + uniform(g, 0.005, 0.3);
+      const bool long_side = uniform_int(g, 0, 1) == 1;
+      const double side = uniform_int(g, 0, 1) == 1 ? 1.0 : -1.0;
+      const Vec2 in_robot = long_side
+                                ? Vec2(along * robot.length_m, side * (robot.width_m / 2 + gap))
+                                : Vec2(side * (robot.length_m / 2 + gap), along * robot.width_m);
+      return Vec2(robot.pose.field_from_robot() * in_robot);
+    }));
+  }
+
+  // The rest scattered: mostly on the court, some rolled into the run-off area.
+  while (id < count) {
+    const bool on_run_off = uniform(rng, 0.0, 1.0) < 0.15;
+    const GroundRect area = on_run_off ? court.surround_rect() : on_court;
+    add_ball(place(rng, placement, r, [&](auto& g) { return uniform_in(g, area, 0.3); }));
+  }
+
+  scene.lighting = random_lighting(rng, court, options.shadow);
+  scene.effects.brightness_gain =
+      options.brightness_gain ? *options.brightness_gain : uniform(rng, 0.8, 1.2);
+  scene.effects.noise_sigma = options.noise_sigma;
+  scene.validate();
+  return scene;
+}
+
+}  // namespace ballsight::sim

@@ -1,0 +1,38 @@
+#pragma once
+// Seeded generation of court scenes for testing the court pipeline: 20-60 tennis balls, some in
+// tight clusters of touching balls and some right next to the robot (so that the robot hides them
+// from some cameras), reference balls at line intersections, a random robot pose, a random sun,
+// a shadow band across the court, a brightness change and sensor noise.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "ballsight/sim/court_scene.hpp"
+#include "ballsight/sim/tennis_court.hpp"
+
+namespace ballsight::sim {
+
+struct CourtScenarioOptions {
+  std::optional<int> ball_count;          // tennis balls; nullopt: uniform in [20, 60]
+  double noise_sigma = 2.0;               // sensor noise, grey levels
+  std::optional<double> brightness_gain;  // nullopt: uniform in [0.8, 1.2]
+  bool shadow = true;                     // a shadow band across the court
+
+  static constexpr int kMaxBalls = 200;
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+/// Twelve reference-ball centres (z = radius) at line intersections, known to the user: the four
+/// corners of the singles court, the four ends of the service lines, the two service-line T's and
+/// the two points where the net line crosses the doubles sidelines. Each corner camera has six of
+/// them within about 19 m, spread over its half of the court (a 2 cm ball is ~1 px in radius
+/// there at 1280x720), and sees the other six further away.
+std::vector<Vec3> reference_ball_positions(const TennisCourtSpec& court);
+
+/// A scene on `court`; deterministic for a seed.
+CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOptions& options,
+                            std::uint64_t seed);
+
+}  // namespace ballsight::sim

@@ -1,0 +1,89 @@
+#pragma once
+// What stands on the simulated tennis court: tennis balls, reference balls (table-tennis balls at
+// known positions, for the cameras' extrinsics), the robot (a box marked by a pink ball at the
+// front and a blue ball at the back, as in the tennis-ball-collecting-robot report, section 7.6)
+// and the lighting. The court and the cameras are the installation (court_rig.hpp).
+
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+#include "ballsight/sim/image_effects.hpp"
+
+namespace ballsight::sim {
+
+enum class ObjectKind { tennis_ball, reference_ball, robot_front_marker, robot_back_marker };
+
+/// "tennis_ball", "reference_ball", "robot_front_marker", "robot_back_marker".
+std::string_view object_kind_name(ObjectKind kind);
+
+inline constexpr double kTennisBallRadiusM = 0.0335;
+inline constexpr double kReferenceBallRadiusM = 0.02;
+inline const cv::Vec3b kTennisBallBgr{45, 250, 225};     // fluorescent yellow
+inline const cv::Vec3b kReferenceBallBgr{20, 100, 255};  // orange table-tennis ball
+
+/// A sphere in the scene; `id` numbers the objects of one kind from 0.
+struct SceneSphere {
+  ObjectKind kind = ObjectKind::tennis_ball;
+  int id = 0;
+  Vec3 center_in_field = Vec3::Zero();
+  double radius_m = kTennisBallRadiusM;
+  cv::Vec3b bgr = kTennisBallBgr;
+};
+
+/// The robot as a box standing on the floor, centred on its pose, with two marker balls on top
+/// on its centre line: the pink one at the front (+x of the robot), the blue one at the back.
+struct RobotBox {
+  Pose2D pose;  // field_from_robot: position of the box centre and heading of its front
+  double length_m = 0.60;
+  double width_m = 0.45;
+  double height_m = 0.30;
+  double marker_radius_m = 0.045;
+  double marker_inset_m = 0.10;  // marker centre from the front/back face
+  cv::Vec3b bgr{128, 128, 128};
+  cv::Vec3b front_marker_bgr{180, 80, 255};  // pink
+  cv::Vec3b back_marker_bgr{220, 80, 30};    // blue
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+  SceneSphere front_marker() const;
+  SceneSphere back_marker() const;
+};
+
+/// A band of shadow across the ground (the shade of a building or a row of trees): inside it the
+/// sun is blocked and only the ambient light remains, for the floor and objects alike.
+struct ShadowBand {
+  Vec2 point_in_field = Vec2::Zero();  // a point on the band's centre line
+  Vec2 direction = Vec2::UnitX();      // unit vector along the centre line
+  double width_m = 3.0;
+  double soft_edge_m = 0.3;  // width of the penumbra on each side
+};
+
+struct Lighting {
+  Vec3 to_sun = Vec3(0.3, 0.2, 0.93).normalized();  // unit vector towards the sun, z > 0
+  double ambient = 0.45;                            // share of light that is not direct sun
+  std::optional<ShadowBand> shadow;
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+  /// How much of the sun reaches ground position `p_in_field`: 1 in the open, 0 in the shadow.
+  double sun_visibility(const Vec2& p_in_field) const;
+  /// Light factor for a surface with unit `normal` at `p_in_field` (1 = full sun, head on).
+  double irradiance(const Vec3& normal, const Vec3& p_in_field) const;
+};
+
+struct CourtScene {
+  std::vector<SceneSphere> balls;  // tennis balls and reference balls
+  RobotBox robot;
+  Lighting lighting;
+  ImageEffects effects;  // brightness gain (exposure), blur and sensor noise
+
+  /// Throws InputError naming the first invalid field (e.g. "balls[3].radius_m: ...").
+  void validate() const;
+  /// Every sphere: the balls, then the robot's front and back markers.
+  std::vector<SceneSphere> spheres() const;
+};
+
+}  // namespace ballsight::sim

@@ -1,0 +1,97 @@
+#include "ballsight/sim/tennis_court.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight::sim {
+namespace {
+
+bool positive(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
+
+/// Fraction of the interval [c - h, c + h] inside [lo, hi]; a point test when h is 0.
+double interval_coverage(double c, double h, double lo, double hi) {
+  if (h <= 0.0) return (c >= lo && c <= hi) ? 1.0 : 0.0;
+  const double overlap = std::min(c + h, hi) - std::max(c - h, lo);
+  return std::clamp(overlap / (2.0 * h), 0.0, 1.0);
+}
+
+double rect_coverage(const GroundRect& r, const Vec2& p, const Vec2& half) {
+  const double cx = interval_coverage(p.x(), half.x(), r.x_min, r.x_max);
+  if (cx == 0.0) return 0.0;
+  return cx * interval_coverage(p.y(), half.y(), r.y_min, r.y_max);
+}
+
+cv::Vec3f to_float(const cv::Vec3b& c) {
+  return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
+}
+
+}  // namespace
+
+void TennisCourtSpec::validate() const {
+  require(positive(length_m), "court.length_m", "must be positive");
+  require(positive(doubles_width_m), "court.doubles_width_m", "must be positive");
+  require(positive(singles_width_m) && singles_width_m < doubles_width_m, "court.singles_width_m",
+          "must be positive and less than doubles_width_m");
+  require(positive(service_line_from_net_m) && service_line_from_net_m < length_m / 2.0,
+          "court.service_line_from_net_m", "must be positive and less than half the length");
+  require(positive(line_width_m) && line_width_m < 0.5, "court.line_width_m",
+          "must be in (0, 0.5) m");
+  require(std::isfinite(centre_mark_length_m) && centre_mark_length_m >= 0.0 &&
+              centre_mark_length_m < service_line_from_net_m,
+          "court.centre_mark_length_m", "must be in [0, service_line_from_net_m)");
+  require(std::isfinite(surround_length_m) && surround_length_m >= length_m,
+          "court.surround_length_m", "must be at least the court length");
+  require(std::isfinite(surround_width_m) && surround_width_m >= doubles_width_m,
+          "court.surround_width_m", "must be at least the doubles width");
+}
+
+GroundRect TennisCourtSpec::court_rect() const {
+  return {-length_m / 2.0, length_m / 2.0, -doubles_width_m / 2.0, doubles_width_m / 2.0};
+}
+
+GroundRect TennisCourtSpec::surround_rect() const {
+  return {-surround_length_m / 2.0, surround_length_m / 2.0, -surround_width_m / 2.0,
+          surround_width_m / 2.0};
+}
+
+std::vector<GroundRect> TennisCourtSpec::line_rects() const {
+  const double hx = length_m / 2.0, hd = doubles_width_m / 2.0, hs = singles_width_m / 2.0;
+  const double w = line_width_m, s = service_line_from_net_m;
+  std::vector<GroundRect> lines;
+  for (const double side : {-1.0, 1.0}) {
+    // Baseline, doubles sideline, singles sideline, service line, centre mark on this side.
+    lines.push_back({side > 0 ? hx - w : -hx, side > 0 ? hx : -hx + w, -hd, hd});
+    lines.push_back({-hx, hx, side > 0 ? hd - w : -hd, side > 0 ? hd : -hd + w});
+    lines.push_back({-hx, hx, side > 0 ? hs - w : -hs, side > 0 ? hs : -hs + w});
+    lines.push_back({side > 0 ? s - w : -s, side > 0 ? s : -s + w, -hs, hs});
+    const double mark_inner = hx - w - centre_mark_length_m;
+    lines.push_back(
+        {side > 0 ? mark_inner : -hx + w, side > 0 ? hx - w : -mark_inner, -w / 2.0, w / 2.0});
+  }
+  lines.push_back({-s, s, -w / 2.0, w / 2.0});  // centre service line, both halves
+  return lines;
+}
+
+cv::Vec3f floor_albedo(const TennisCourtSpec& court, const std::vector<GroundRect>& lines,
+                       const Vec2& p_in_field, const Vec2& half_footprint_m) {
+  // Nested areas: lines inside the court inside the run-off inside the ground, so each colour's
+  // share is its area's coverage minus that of the area painted over it.
+  const double surround = rect_coverage(court.surround_rect(), p_in_field, half_footprint_m);
+  const double inside =
+      surround > 0.0 ? rect_coverage(court.court_rect(), p_in_field, half_footprint_m) : 0.0;
+  double line = 0.0;
+  if (inside > 0.0) {
+    for (const GroundRect& r : lines) line += rect_coverage(r, p_in_field, half_footprint_m);
+    line = std::min(line, inside);  // crossing lines overlap
+  }
+  const auto share = [](double v) { return static_cast<float>(v); };
+  return to_float(court.ground_bgr) * share(1.0 - surround) +
+         to_float(court.surround_bgr) * share(surround - inside) +
+         to_float(court.court_bgr) * share(inside - line) + to_float(court.line_bgr) * share(line);
+}
+
+}  // namespace ballsight::sim

@@ -1,0 +1,57 @@
+#pragma once
+// A tennis court as the floor of the court simulator: the ITF line layout on a hard court, a
+// differently coloured run-off area around it and neutral ground beyond. There is no net: it would
+// hide balls, and the simulated court is a practice court during ball collection.
+//
+// Field frame: origin at the court centre (where the net line crosses the centre line), x along
+// the length, y across, z up, metres. Court dimensions are to the outer edges of the lines (ITF
+// Rules of Tennis, Appendix: "The Court").
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+
+namespace ballsight::sim {
+
+/// An axis-aligned rectangle on the ground, metres.
+struct GroundRect {
+  double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;
+
+  bool contains(const Vec2& p) const {
+    return p.x() >= x_min && p.x() <= x_max && p.y() >= y_min && p.y() <= y_max;
+  }
+};
+
+struct TennisCourtSpec {
+  double length_m = 23.77;                // baseline to baseline
+  double doubles_width_m = 10.97;         // between the doubles sidelines
+  double singles_width_m = 8.23;          // between the singles sidelines
+  double service_line_from_net_m = 6.40;  // net line to the outer edge of a service line
+  double line_width_m = 0.05;
+  double centre_mark_length_m = 0.10;
+  double surround_length_m = 36.0;  // run-off area, centred on the court
+  double surround_width_m = 18.0;
+
+  cv::Vec3b court_bgr{88, 128, 70};     // green hard court (BGR albedo)
+  cv::Vec3b surround_bgr{80, 92, 52};   // darker teal-green run-off
+  cv::Vec3b ground_bgr{128, 134, 138};  // neutral ground beyond the run-off
+  cv::Vec3b line_bgr{238, 240, 240};    // white lines
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+
+  /// The doubles court (outer edges of baselines and doubles sidelines).
+  GroundRect court_rect() const;
+  GroundRect surround_rect() const;
+  /// The painted lines: baselines, doubles and singles sidelines, service lines, centre service
+  /// line and centre marks.
+  std::vector<GroundRect> line_rects() const;
+};
+
+/// Albedo of the floor at `p_in_field`, box-filtered over a footprint of half-sizes
+/// `half_footprint_m` (x, y) so that lines and edges are anti-aliased. Zero footprint samples.
+cv::Vec3f floor_albedo(const TennisCourtSpec& court, const std::vector<GroundRect>& lines,
+                       const Vec2& p_in_field, const Vec2& half_footprint_m);
+
+}  // namespace ballsight::sim

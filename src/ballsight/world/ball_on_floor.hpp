@@ -1,0 +1,33 @@
+#pragma once
+// A ball resting on the floor seen by a camera with a single viewpoint: the ray through the
+// ball's centre meets the floor *behind* the ball, so a pixel -> floor table read at the ball's
+// centre pixel overshoots. With the viewpoint at height h above the robot origin and a ball of
+// radius R, that floor hit is F = C h / (h - R) for the ball centre C (both horizontal, robot
+// frame), so C = F (h - R) / h. The omnivision paper reads the table at the ball's nearest edge
+// instead (Algorithm 3), which undershoots by about a radius.
+
+#include <optional>
+
+#include "ballsight/camera/ground_map.hpp"
+#include "ballsight/core/geometry.hpp"
+
+namespace ballsight {
+
+struct BallOnFloor {
+  double radius_cm = 11.0;            // size-5 football
+  double viewpoint_height_cm = 60.0;  // the camera's effective viewpoint above the floor
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+/// The ball's centre (horizontal position, robot frame, cm) from the floor point seen through the
+/// ball's centre.
+Vec2 ball_center_from_floor_hit_cm(const Vec2& floor_hit_cm, const BallOnFloor& ball);
+
+/// The ball's centre from its centre pixel through a ground map (sub-pixel read); nullopt where
+/// the map has no value.
+std::optional<Vec2> ball_center_in_robot_cm(const GroundMap& map, const Vec2& ball_center_px,
+                                            const BallOnFloor& ball);
+
+}  // namespace ballsight

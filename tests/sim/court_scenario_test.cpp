@@ -1,0 +1,154 @@
+#include "ballsight/sim/court_scenario.hpp"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "ballsight/core/error.hpp"
+#include "sim/court_test_support.hpp"
+
+namespace ballsight::sim {
+namespace {
+
+using testing::render_in_all_cameras;
+
+std::vector<const SceneSphere*> of_kind(const CourtScene& scene, ObjectKind kind) {
+  std::vector<const SceneSphere*> out;
+  for (const SceneSphere& s : scene.balls) {
+    if (s.kind == kind) out.push_back(&s);
+  }
+  return out;
+}
+
+TEST(CourtScenario, SameSeedSameSceneDifferentSeedDifferentScene) {
+  const TennisCourtSpec court;
+  const CourtScene a = make_court_scene(court, {}, 7), b = make_court_scene(court, {}, 7);
+  ASSERT_EQ(a.balls.size(), b.balls.size());
+  for (size_t i = 0; i < a.balls.size(); ++i) {
+    EXPECT_EQ(a.balls[i].center_in_field, b.balls[i].center_in_field);
+  }
+  EXPECT_EQ(a.robot.pose.position, b.robot.pose.position);
+  EXPECT_EQ(a.effects.brightness_gain, b.effects.brightness_gain);
+  const CourtScene c = make_court_scene(court, {}, 8);
+  EXPECT_NE(a.robot.pose.position, c.robot.pose.position);
+  EXPECT_NE(a.balls.back().center_in_field, c.balls.back().center_in_field);
+}
+
+TEST(CourtScenario, BallsOnTheGroundWithoutOverlapSomeTouching) {
+  const TennisCourtSpec court;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const CourtScene scene = make_court_scene(court, {}, seed);
+    const auto tennis = of_kind(scene, ObjectKind::tennis_ball);
+    EXPECT_GE(tennis.size(), 20u);
+    EXPECT_LE(tennis.size(), 60u);
+    EXPECT_EQ(of_kind(scene, ObjectKind::reference_ball).size(), 12u);
+    int touching = 0;
+    for (size_t i = 0; i < scene.balls.size(); ++i) {
+      const SceneSphere& a = scene.balls[i];
+      EXPECT_DOUBLE_EQ(a.center_in_field.z(), a.radius_m);
+      EXPECT_TRUE(court.surround_rect().contains(a.center_in_field.head<2>()));
+      // Clear of the robot's footprint.
+      const Vec2 p = scene.robot.pose.field_from_robot().inverse() * a.center_in_field.head<2>();
+      EXPECT_TRUE(std::abs(p.x()) >= scene.robot.length_m / 2 + a.radius_m ||
+                  std::abs(p.y()) >= scene.robot.width_m / 2 + a.radius_m)
+          << p.transpose();
+      for (size_t j = i + 1; j < scene.balls.size(); ++j) {
+        const SceneSphere& b = scene.balls[j];
+        const double gap = (a.center_in_field - b.center_in_field).norm() - a.radius_m - b.radius_m;
+        EXPECT_GT(gap, 0.0) << i << " and " << j << " overlap";
+        if (gap < 0.005) ++touching;
+      }
+    }
+    EXPECT_GE(touching, static_cast<int>(tennis.size()) / 8) << "clusters of touching balls";
+    // Some balls lie within 35 cm of the robot.
+    int beside_robot = 0;
+    for (const SceneSphere* s : tennis) {
+      beside_robot += (s->center_in_field.head<2>() - scene.robot.pose.position).norm() < 0.75;
+    }
+    EXPECT_GE(beside_robot, 3);
+  }
+}
+
+TEST(CourtScenario, BallCountLightingAndNoiseFollowTheOptions) {
+  CourtScenarioOptions options;
+  options.ball_count = 0;
+  options.noise_sigma = 5.0;
+  options.brightness_gain = 0.7;
+  options.shadow = false;
+  CourtScene scene = make_court_scene({}, options, 3);
+  EXPECT_TRUE(of_kind(scene, ObjectKind::tennis_ball).empty());
+  EXPECT_EQ(scene.effects.noise_sigma, 5.0);
+  EXPECT_EQ(scene.effects.brightness_gain, 0.7);
+  EXPECT_FALSE(scene.lighting.shadow);
+  options.ball_count = CourtScenarioOptions::kMaxBalls;
+  options.shadow = true;
+  scene = make_court_scene({}, options, 3);
+  EXPECT_EQ(of_kind(scene, ObjectKind::tennis_ball).size(), 200u);
+  ASSERT_TRUE(scene.lighting.shadow);
+  // The band crosses the court: its centre line passes through the court.
+  EXPECT_TRUE(TennisCourtSpec{}.court_rect().contains(scene.lighting.shadow->point_in_field));
+  EXPECT_EQ(scene.lighting.sun_visibility(scene.lighting.shadow->point_in_field), 0.0);
+}
+
+TEST(CourtScenario, EveryCameraSeesSixWellSpreadReferenceBalls) {
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto rendered = render_in_all_cameras(make_court_scene({}, {}, seed));
+    const testing::CourtFixture& court = testing::shared_court();
+    for (size_t c = 0; c < court.rig.cameras.size(); ++c) {
+      const CourtCamera& camera = court.rig.cameras[c];
+      std::vector<cv::Point2f> near;  // visible and within 20 m: about 1 px in radius or more
+      for (const SphereTruth& t : rendered.truth) {
+        const SphereViewTruth& v = t.views[c];
+        if (t.sphere.kind != ObjectKind::reference_ball || !v.visible) continue;
+        if ((t.sphere.center_in_field - camera.center_in_field()).norm() > 20.0) continue;
+        near.emplace_back(static_cast<float>(v.center_px->x()),
+                          static_cast<float>(v.center_px->y()));
+      }
+      EXPECT_GE(near.size(), 5u) << "camera " << c;  // six, less one the robot may hide
+      if (near.size() < 3) continue;
+      std::vector<cv::Point2f> hull;
+      cv::convexHull(near, hull);
+      const double image_area = camera.camera.width() * camera.camera.height();
+      EXPECT_GT(cv::contourArea(hull) / image_area, 0.05) << "camera " << c;
+    }
+  }
+}
+
+TEST(CourtScenario, InvalidOptionsAndScenesAreNamed) {
+  CourtScenarioOptions options;
+  options.ball_count = -3;
+  EXPECT_THROW(make_court_scene({}, options, 1), InputError);
+  options.ball_count = 201;
+  EXPECT_THROW(make_court_scene({}, options, 1), InputError);
+  options = {};
+  options.noise_sigma = -1.0;
+  EXPECT_THROW(make_court_scene({}, options, 1), InputError);
+  options = {};
+  options.brightness_gain = 0.0;
+  EXPECT_THROW(make_court_scene({}, options, 1), InputError);
+
+  CourtScene scene;
+  scene.balls.push_back(
+      {ObjectKind::tennis_ball, 0, Vec3(1, 1, 0.01), kTennisBallRadiusM, kTennisBallBgr});
+  try {
+    scene.validate();
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("balls[0]"), std::string::npos) << e.what();
+  }
+  scene.balls.clear();
+  scene.robot.height_m = 0.0;
+  EXPECT_THROW(scene.validate(), InputError);
+  scene.robot = {};
+  scene.lighting.to_sun = Vec3(0, 0, -1);
+  EXPECT_THROW(scene.validate(), InputError);
+  scene.lighting = {};
+  scene.lighting.shadow = ShadowBand{};
+  scene.lighting.shadow->width_m = 0.0;
+  EXPECT_THROW(scene.validate(), InputError);
+}
+
+}  // namespace
+}  // namespace ballsight::sim

@@ -1,0 +1,57 @@
+#pragma once
+// Shared by the court simulator tests: one rig and its renderers, built once per test program
+// (each camera's ray table takes a fraction of a second), and helpers to render a scene in every
+// camera.
+
+#include <cstdint>
+#include <vector>
+
+#include "ballsight/sim/court_renderer.hpp"
+#include "ballsight/sim/court_rig.hpp"
+#include "ballsight/sim/court_scenario.hpp"
+#include "ballsight/sim/court_truth.hpp"
+
+namespace ballsight::sim::testing {
+
+inline constexpr std::uint64_t kRigSeed = 20240611;
+
+struct CourtFixture {
+  CourtRig rig;
+  std::vector<CourtRenderer> renderers;
+};
+
+inline const CourtFixture& shared_court() {
+  static const CourtFixture fixture = [] {
+    CourtFixture f{make_court_rig(TennisCourtSpec{}, CourtRigOptions{}, kRigSeed), {}};
+    for (const CourtCamera& camera : f.rig.cameras) f.renderers.emplace_back(camera, f.rig.court);
+    return f;
+  }();
+  return fixture;
+}
+
+struct RenderedScene {
+  CourtScene scene;
+  std::vector<CourtRender> renders;  // one per camera
+  std::vector<SphereTruth> truth;
+};
+
+inline RenderedScene render_in_all_cameras(const CourtScene& scene, std::uint64_t noise_seed = 0) {
+  const CourtFixture& court = shared_court();
+  RenderedScene out{scene, {}, {}};
+  for (const CourtRenderer& renderer : court.renderers) {
+    out.renders.push_back(renderer.render(scene, noise_seed));
+  }
+  out.truth = court_scene_truth(court.rig, scene, out.renders);
+  return out;
+}
+
+/// No noise, no shadow, no brightness change: a clean render for geometric checks.
+inline CourtScenarioOptions clean_scenario() {
+  CourtScenarioOptions options;
+  options.noise_sigma = 0.0;
+  options.brightness_gain = 1.0;
+  options.shadow = false;
+  return options;
+}
+
+}  // namespace ballsight::sim::testing
