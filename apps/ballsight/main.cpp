@@ -25,7 +25,10 @@ int main(int argc, char** argv) {
   CLI::App* omni = app.add_subcommand(
       "omni", "Omnidirectional camera: calibration, lookup tables, ball localisation");
   omni->require_subcommand(1);
+  ballsight::app::add_omni_fit_commands(*omni);
   ballsight::app::add_omni_inspect_command(*omni);
+
+  ballsight::app::add_demo_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,18 @@
+#pragma once
+// Camera image files: reading with errors that name the file, atomic PNG writes.
+
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <optional>
+
+namespace ballsight {
+
+/// Reads a colour image as 8-bit BGR; throws InputError naming the file when it cannot be read
+/// or decoded, or when its size differs from `expected_size`.
+cv::Mat read_image_bgr(const std::filesystem::path& path,
+                       std::optional<cv::Size> expected_size = std::nullopt);
+
+/// Encodes `image` as PNG and writes it atomically (temporary file, then rename).
+void write_png_atomic(const std::filesystem::path& path, const cv::Mat& image);
+
+}  // namespace ballsight
