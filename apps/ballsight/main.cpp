@@ -28,6 +28,15 @@ int main(int argc, char** argv) {
   ballsight::app::add_omni_fit_commands(*omni);
   ballsight::app::add_omni_inspect_command(*omni);
 
+  CLI::App* court = app.add_subcommand(
+      "court", "Fixed cameras around a tennis court: calibration and the world model");
+  court->require_subcommand(1);
+  ballsight::app::add_court_run_command(*court);
+
+  CLI::App* eval = app.add_subcommand("eval", "Measure methods against the simulator's truth");
+  eval->require_subcommand(1);
+  ballsight::app::add_eval_court_command(*eval);
+
   ballsight::app::add_demo_command(app);
 
   try {

@@ -21,7 +21,8 @@ struct PixelDetection {
   double radius_px = 0.0;         // apparent radius (from the area)
   double area_px = 0.0;           // apparent area, pixels (fractional where the detector is)
   double center_sigma_px = 0.5;   // the detector's expected error of center_px, one sigma
-  int split_count = 1;  // objects in the blob this one was split from (1: a blob of its own)
+  int split_count = 1;        // objects in the blob this one was split from (1: a blob of its own)
+  double blob_objects = 1.0;  // how many objects the whole blob's size amounts to
 };
 
 }  // namespace ballsight

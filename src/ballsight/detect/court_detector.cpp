@@ -19,29 +19,45 @@ void CourtObjectSpec::validate(const char* name) const {
           "must be non-negative");
   seed_colour.validate((where + ".seed_colour").c_str());
   grow_colour.validate((where + ".grow_colour").c_str());
-  require(std::abs(evidence_bgr[0] + evidence_bgr[1] + evidence_bgr[2]) < 1e-6f,
+  require(std::abs(evidence_bgr[0] + evidence_bgr[1] + evidence_bgr[2]) < 1e-4f,
           where + ".evidence_bgr", "weights must sum to 0 (grey gives no evidence)");
   require(max_split >= 1 && max_split <= 16, where + ".max_split", "must be within [1, 16]");
 }
 
-std::vector<CourtObjectSpec> default_court_objects() {
-  CourtObjectSpec ball;  // fluorescent yellow, hue about 68 deg
-  ball.seed_colour = {45.0, 85.0, 35.0};
-  ball.grow_colour = {35.0, 100.0, 15.0};
-  CourtObjectSpec front;  // pink, hue about 326 deg
-  front.object = ObjectClass::robot_front_marker;
-  front.radius_m = 0.045;
-  front.center_height_m = 0.345;
-  front.seed_colour = {300.0, 345.0, 45.0};
-  front.grow_colour = {285.0, 355.0, 15.0};
-  front.evidence_bgr = {1.0f, -2.0f, 1.0f};
-  front.max_split = 1;
-  CourtObjectSpec back = front;  // blue, hue about 224 deg
-  back.object = ObjectClass::robot_back_marker;
-  back.seed_colour = {205.0, 245.0, 40.0};
-  back.grow_colour = {195.0, 255.0, 15.0};
-  back.evidence_bgr = {2.0f, -1.0f, -1.0f};
-  return {ball, front, back};
+namespace {
+
+CourtObjectSpec object_of_colour(ObjectClass object, const cv::Vec3b& bgr, double radius_m,
+                                 double center_height_m) {
+  CourtObjectSpec spec;
+  spec.object = object;
+  spec.radius_m = radius_m;
+  spec.center_height_m = center_height_m;
+  const double hue = hue_deg(bgr);
+  const auto band = [hue](double half_width_deg, double min_chroma) {
+    return HueBand{std::fmod(hue - half_width_deg + 360.0, 360.0),
+                   std::fmod(hue + half_width_deg, 360.0), min_chroma};
+  };
+  spec.seed_colour = band(20.0, 35.0);
+  spec.grow_colour = band(32.0, 15.0);
+  const cv::Vec3f colour(bgr[0], bgr[1], bgr[2]);
+  const float mean = (colour[0] + colour[1] + colour[2]) / 3.0f;
+  const cv::Vec3f chroma = colour - cv::Vec3f::all(mean);
+  require(cv::norm(chroma) >= 10.0, std::string(object_class_name(object)) + " colour",
+          "is too grey to be told apart by its hue");
+  spec.evidence_bgr = chroma / static_cast<float>(cv::norm(chroma));
+  spec.max_split = object == ObjectClass::ball ? 6 : 1;
+  return spec;
+}
+
+}  // namespace
+
+std::vector<CourtObjectSpec> court_objects(const CourtObjectColours& colours, double ball_radius_m,
+                                           double marker_radius_m, double marker_height_m) {
+  return {object_of_colour(ObjectClass::ball, colours.ball, ball_radius_m, ball_radius_m),
+          object_of_colour(ObjectClass::robot_front_marker, colours.front_marker, marker_radius_m,
+                           marker_height_m),
+          object_of_colour(ObjectClass::robot_back_marker, colours.back_marker, marker_radius_m,
+                           marker_height_m)};
 }
 
 void CourtDetectorOptions::validate() const {
@@ -206,6 +222,7 @@ void CourtDetector::measure(const cv::Mat& bgr, const GrownBlob& blob, size_t sp
     d.area_px = part.mass / level;
     d.radius_px = std::sqrt(d.area_px / std::numbers::pi);
     d.split_count = static_cast<int>(parts.size());
+    d.blob_objects = objects_by_mass;
     // Expected error of the centre: pixel noise through the weighted centroid, shading of the
     // sphere, the cut between split parts, and what is missing when the object is partly hidden.
     double spread = 0.0;

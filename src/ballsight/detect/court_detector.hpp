@@ -40,12 +40,23 @@ struct CourtObjectSpec {
   void validate(const char* name) const;
 };
 
-/// Tennis ball (fluorescent yellow, radius 3.35 cm, on the floor), the robot's pink front marker
-/// and blue back marker (radius 4.5 cm, centres 34.5 cm high).
-std::vector<CourtObjectSpec> default_court_objects();
+/// The colours of what the detector looks for, 8-bit BGR as the cameras see them in daylight.
+struct CourtObjectColours {
+  cv::Vec3b ball{45, 250, 225};          // fluorescent yellow tennis ball, hue about 68 deg
+  cv::Vec3b front_marker{180, 80, 255};  // pink, hue about 326 deg
+  cv::Vec3b back_marker{220, 80, 30};    // blue, hue about 224 deg
+};
+
+/// The court's objects: tennis balls (split when touching) and the robot's front and back marker
+/// balls. Each colour gives its hue bands (seeds within 20 deg of its hue, growth within 32 deg)
+/// and its evidence weights (the colour's own chroma direction: its B, G, R minus their mean).
+std::vector<CourtObjectSpec> court_objects(const CourtObjectColours& colours = {},
+                                           double ball_radius_m = 0.0335,
+                                           double marker_radius_m = 0.045,
+                                           double marker_height_m = 0.345);
 
 struct CourtDetectorOptions {
-  std::vector<CourtObjectSpec> objects = default_court_objects();
+  std::vector<CourtObjectSpec> objects = court_objects();
   FieldRect area{{-19.5, -10.5}, {19.5, 10.5}};  // where objects may be (field frame)
   double min_radius_px = 0.7;         // where the smallest object looks smaller: not searched
   double seed_step_per_radius = 1.0;  // seed grid step: this times the smallest apparent radius

@@ -1,5 +1,6 @@
 #include "ballsight/detect/seed_detector.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
@@ -36,7 +37,7 @@ void detect_class(const cv::Mat& hsv, const HsvRange& range, int median_kernel_p
   cv::Mat1b mask;
   cv::inRange(hsv, cv::Scalar(range.min[0], range.min[1], range.min[2]),
               cv::Scalar(range.max[0], range.max[1], range.max[2]), mask);
-  cv::medianBlur(mask, mask, median_kernel_px);
+  if (median_kernel_px > 1) cv::medianBlur(mask, mask, median_kernel_px);
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
   for (const std::vector<cv::Point>& contour : contours) {
@@ -52,6 +53,22 @@ void detect_class(const cv::Mat& hsv, const HsvRange& range, int median_kernel_p
 }
 
 }  // namespace
+
+std::vector<PixelDetection> detect_seed_colour(const cv::Mat& bgr, const HsvRange& range,
+                                               int median_kernel_px, ObjectClass object) {
+  range.validate("seed colour");
+  require(median_kernel_px >= 1 && median_kernel_px % 2 == 1, "seed colour",
+          "median_kernel_px must be an odd positive number");
+  require(bgr.type() == CV_8UC3, "seed detector", "expected an 8-bit BGR image");
+  cv::Mat hsv;
+  cv::cvtColor(bgr, hsv, cv::COLOR_BGR2HSV);
+  std::vector<PixelDetection> out;
+  detect_class(hsv, range, median_kernel_px, object, out);
+  std::stable_sort(out.begin(), out.end(), [](const PixelDetection& a, const PixelDetection& b) {
+    return a.area_px > b.area_px;
+  });
+  return out;
+}
 
 std::vector<PixelDetection> detect_seed(const cv::Mat& bgr, const SeedDetectorOptions& options) {
   options.validate();

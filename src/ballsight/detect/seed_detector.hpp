@@ -35,6 +35,11 @@ struct SeedDetectorOptions {
   void validate() const;
 };
 
+/// Centres of mass of the contours of one colour range: threshold, median filter (skipped when
+/// `median_kernel_px` is 1), contours, moments. Largest contour first.
+std::vector<PixelDetection> detect_seed_colour(const cv::Mat& bgr, const HsvRange& range,
+                                               int median_kernel_px, ObjectClass object);
+
 /// Every contour's centre of mass, for the balls and both markers (cv::moments of the contour;
 /// contours of zero area are skipped). The image is 8-bit BGR.
 std::vector<PixelDetection> detect_seed(const cv::Mat& bgr, const SeedDetectorOptions& options);

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ballsight/core/raycast_box.hpp"
 #include "ballsight/sim/raycast.hpp"
-#include "ballsight/sim/raycast_box.hpp"
 #include "ballsight/sim/silhouette.hpp"
 
 namespace ballsight::sim {

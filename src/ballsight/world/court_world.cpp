@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/world/cluster_refinement.hpp"
 
 namespace ballsight {
 
@@ -15,6 +16,8 @@ void CourtWorldOptions::validate() const {
   robot.validate();
   noise.validate();
   fusion.validate();
+  clusters.validate();
+  support.validate();
   require(std::isfinite(collector_width_m) && collector_width_m > 0.0, "world collector_width_m",
           "must be positive");
   require(area.valid(), "world area", "must have a positive size");
@@ -103,8 +106,16 @@ WorldModel build_world_model(
       place(c, static_cast<int>(i), detection, balls);
     }
   }
-  for (const FusedObject& object : fuse_observations(balls, options.fusion))
-    model.balls.push_back({object.position_m, object.covariance_m2, object.cameras});
+  std::vector<FusedBall> fused;
+  for (const FusedObject& object : refine_clusters(balls, fuse_observations(balls, options.fusion),
+                                                   options.ball_radius_m, options.clusters))
+    fused.push_back({object.position_m, object.covariance_m2, object.cameras});
+  const std::vector<bool> kept =
+      supported_balls(fused, cameras, detections, options.ball_radius_m,
+                      model.robot ? std::optional<Pose2D>(model.robot->pose) : std::nullopt,
+                      options.robot, options.support);
+  for (size_t i = 0; i < fused.size(); ++i)
+    if (kept[i]) model.balls.push_back(fused[i]);
   std::sort(model.balls.begin(), model.balls.end(), [](const FusedBall& a, const FusedBall& b) {
     return a.position_m.x() < b.position_m.x() ||
            (a.position_m.x() == b.position_m.x() && a.position_m.y() < b.position_m.y());

@@ -2,7 +2,8 @@
 // ballsight's world model from the court cameras' detections: every detection placed on the plane
 // of its object's centre with its expected error, the robot's pose from its markers, ball
 // detections the robot's body may cut into made less certain, then the balls fused across cameras
-// by their expected errors and grouped into collection sites.
+// by their expected errors, checked against the cameras that missed them (ball_support.hpp) and
+// grouped into collection sites.
 
 #include <optional>
 #include <vector>
@@ -10,6 +11,8 @@
 #include "ballsight/camera/field_camera.hpp"
 #include "ballsight/core/field_rect.hpp"
 #include "ballsight/core/pixel_detection.hpp"
+#include "ballsight/world/ball_support.hpp"
+#include "ballsight/world/cluster_refinement.hpp"
 #include "ballsight/world/field_observation.hpp"
 #include "ballsight/world/observation_fusion.hpp"
 #include "ballsight/world/robot_pose.hpp"
@@ -22,6 +25,8 @@ struct CourtWorldOptions {
   RobotModel robot;
   ObservationNoise noise;
   FusionOptions fusion;
+  ClusterOptions clusters;
+  BallSupportOptions support;
   double collector_width_m = 0.70;               // the report's collector (section 7.8)
   FieldRect area{{-19.5, -10.5}, {19.5, 10.5}};  // observations elsewhere are dropped
 

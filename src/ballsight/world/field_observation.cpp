@@ -36,6 +36,8 @@ std::optional<FieldObservation> observe_on_plane(const FieldCamera& camera,
   out.position_m = center->head<2>();
   out.covariance_m2 = sigma2 * jacobian * jacobian.transpose();
   out.range_m = (*center - camera.center_in_field()).norm();
+  out.objects = detection.blob_objects / detection.split_count;
+  out.plane_per_pixel = jacobian;
   return out;
 }
 

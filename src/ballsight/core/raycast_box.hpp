@@ -1,6 +1,7 @@
 #pragma once
 // Ray casting against a box standing on the floor with a heading (an oriented box whose faces are
-// vertical or horizontal), by the slab method (Kay & Kajiya 1986). Complements raycast.hpp.
+// vertical or horizontal), by the slab method (Kay & Kajiya 1986): the simulator renders the
+// robot with it, the world model asks whether the robot hides a ball from a camera.
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@
 
 #include "ballsight/core/geometry.hpp"
 
-namespace ballsight::sim {
+namespace ballsight {
 
 /// A box on the floor: footprint centred on `pose` with `half_size` (x along the heading, y), z in
 /// [0, height].
@@ -66,4 +67,4 @@ inline std::optional<BoxHit> intersect_floor_box(const Vec3& origin, const Vec3&
   return BoxHit{t_near, normal};
 }
 
-}  // namespace ballsight::sim
+}  // namespace ballsight

@@ -1,0 +1,55 @@
+// `ballsight eval court`: the report's court pipeline and ballsight's on simulated scenes, each
+// calibrated from rendered chessboards and reference balls, scored against the truth
+// (docs/court-eval.md).
+
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "ballsight/eval/court_eval.hpp"
+#include "commands.hpp"
+
+namespace ballsight::app {
+namespace {
+
+struct EvalCourtArgs {
+  CourtEvalOptions options;
+  bool json = false;
+  std::string plot_dir;
+};
+
+void run_eval_court(const EvalCourtArgs& args) {
+  CourtEvalOptions options = args.options;
+  if (!args.plot_dir.empty()) options.plot_dir = args.plot_dir;
+  const CourtEvalReport report = run_court_eval(options);
+  if (args.json) {
+    std::cout << court_eval_json(report).dump(2) << "\n";
+  } else {
+    std::cout << court_eval_text(report);
+  }
+}
+
+}  // namespace
+
+void add_eval_court_command(CLI::App& eval) {
+  auto args = std::make_shared<EvalCourtArgs>();
+  CLI::App* cmd = eval.add_subcommand(
+      "court",
+      "Both court methods (seed: the report's pipeline; ballsight) on simulated scenes with 20-60 "
+      "balls, clusters, balls hidden by the robot and lighting changes, each calibrated from "
+      "rendered chessboards and reference balls: recall, precision, duplicates, ball and robot "
+      "errors");
+  cmd->add_option("--seed", args->options.seed, "Random seed: same seed, same figures")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--scenes", args->options.scenes, "Number of scenes [1, 1000]")
+      ->capture_default_str();
+  cmd->add_flag("--json", args->json,
+                "JSON: {\"methods\": {\"seed\": {...}, \"ballsight\": {...}}, ...}");
+  cmd->add_option("--plot-dir", args->plot_dir,
+                  "Write each camera's view with detections and a field map of truth vs "
+                  "estimates for the first scenes");
+  cmd->callback([args] { run_eval_court(*args); });
+}
+
+}  // namespace ballsight::app

@@ -1,0 +1,237 @@
+#include "ballsight/eval/court_eval.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <sstream>
+
+#include "ballsight/camera/image_file.hpp"
+#include "ballsight/core/angle.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/core/file_io.hpp"
+#include "ballsight/eval/court_plots.hpp"
+#include "ballsight/pipeline/site_setup.hpp"
+#include "ballsight/sim/court_renderer.hpp"
+#include "ballsight/sim/court_truth.hpp"
+#include "ballsight/sim/seeding.hpp"
+
+namespace ballsight {
+
+void CourtEvalOptions::validate() const {
+  require(scenes >= 1 && scenes <= kMaxScenes, "scenes",
+          "must be in [1, " + std::to_string(kMaxScenes) + "], got " + std::to_string(scenes));
+  rig.validate();
+  scenario.validate();
+  require(chessboard_views >= 4 && chessboard_views <= 99, "chessboard_views",
+          "must be in [4, 99], got " + std::to_string(chessboard_views));
+  require(match_radius_m > 0.0, "match_radius_m", "must be positive");
+  require(plot_scenes >= 0, "plot_scenes", "must be non-negative");
+}
+
+namespace {
+
+// Independent random streams of one evaluation seed.
+enum Stream : std::uint64_t { kRigStream, kCalibrationStream, kSceneStream = 1000 };
+
+std::vector<TruthBall> truth_balls(const std::vector<sim::SphereTruth>& truth) {
+  std::vector<TruthBall> balls;
+  for (const sim::SphereTruth& t : truth) {
+    if (t.sphere.kind != sim::ObjectKind::tennis_ball) continue;
+    bool seen = false;
+    for (const sim::SphereViewTruth& v : t.views) seen |= v.visible;
+    balls.push_back({t.sphere.center_in_field.head<2>(), seen});
+  }
+  return balls;
+}
+
+std::vector<Vec2> truth_pixels(const std::vector<sim::SphereTruth>& truth, size_t camera) {
+  std::vector<Vec2> pixels;
+  for (const sim::SphereTruth& t : truth) {
+    const sim::SphereViewTruth& v = t.views[camera];
+    if (t.sphere.kind == sim::ObjectKind::tennis_ball && v.visible && v.silhouette_centroid_px)
+      pixels.push_back(*v.silhouette_centroid_px);
+  }
+  return pixels;
+}
+
+const cv::Scalar kSeedColour(40, 40, 230);       // red
+const cv::Scalar kBallsightColour(40, 200, 40);  // green
+
+std::string scene_name(int scene) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "scene_%04d", scene);
+  return buffer;
+}
+
+void write_pictures(const CourtEvalOptions& options, const sim::CourtRig& rig, int scene,
+                    const std::vector<cv::Mat>& frames, const std::vector<sim::SphereTruth>& truth,
+                    const Pose2D& robot_truth, const std::vector<FrameSetResult>& results,
+                    std::vector<std::string>& written) {
+  const std::filesystem::path& dir = *options.plot_dir;
+  ensure_directory(dir);
+  for (size_t c = 0; c < frames.size(); ++c) {
+    std::vector<DetectionLayer> layers;
+    for (size_t m = 0; m < results.size(); ++m) {
+      const auto& detections = results[m].detections[c];
+      layers.push_back({m == 0 ? "seed pipeline" : "ballsight",
+                        m == 0 ? kSeedColour : kBallsightColour,
+                        detections ? *detections : std::vector<PixelDetection>{}});
+    }
+    const std::string name = scene_name(scene) + "_cam" + std::to_string(c) + ".png";
+    write_png_atomic(dir / name,
+                     draw_detection_overlay(frames[c], truth_pixels(truth, c), layers,
+                                            scene_name(scene) + ", camera " + std::to_string(c)));
+    written.push_back(name);
+  }
+  std::vector<Vec3> centers;
+  for (const sim::CourtCamera& camera : rig.cameras) centers.push_back(camera.center_in_field());
+  std::vector<WorldLayer> layers;
+  for (size_t m = 0; m < results.size(); ++m)
+    layers.push_back({m == 0 ? "seed pipeline" : "ballsight (circles: collection sites)",
+                      m == 0 ? kSeedColour : kBallsightColour, results[m].world});
+  const std::string name = scene_name(scene) + "_field.png";
+  write_png_atomic(dir / name, draw_field_map(rig.court, centers, truth_balls(truth), robot_truth,
+                                              layers, scene_name(scene) + ": truth vs estimates"));
+  written.push_back(name);
+}
+
+}  // namespace
+
+CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
+  options.validate();
+  CourtEvalReport report;
+  report.options = options;
+  const sim::CourtRig rig =
+      sim::make_court_rig({}, options.rig, sim::derive_seed(options.seed, kRigStream));
+
+  // Each method calibrates its cameras from the same rendered images.
+  const CalibrationImages calibration_images =
+      render_calibration_images(rig, options.chessboard_views, options.scenario.noise_sigma,
+                                sim::derive_seed(options.seed, kCalibrationStream));
+  const Site site = simulated_site(rig);
+  report.methods.push_back(
+      {CourtMethod::seed, {}, calibrate_seed_cameras(calibration_images, site), {}});
+  report.methods.push_back(
+      {CourtMethod::ballsight, {}, calibrate_ballsight_cameras(calibration_images, site), {}});
+  std::vector<std::unique_ptr<CourtPipeline>> pipelines;
+  pipelines.push_back(
+      make_seed_pipeline(report.methods[0].calibration.cameras, seed_options_for_site(site)));
+  pipelines.push_back(make_ballsight_pipeline(report.methods[1].calibration.cameras,
+                                              ballsight_options_for_site(site)));
+
+  std::vector<sim::CourtRenderer> renderers;
+  for (const sim::CourtCamera& camera : rig.cameras) renderers.emplace_back(camera, rig.court);
+  for (int k = 0; k < options.scenes; ++k) {
+    const std::uint64_t scene_seed = sim::derive_seed(options.seed, kSceneStream + k);
+    const sim::CourtScene scene = sim::make_court_scene(rig.court, options.scenario, scene_seed);
+    std::vector<sim::CourtRender> renders;
+    std::vector<cv::Mat> frames;
+    for (size_t c = 0; c < renderers.size(); ++c) {
+      renders.push_back(renderers[c].render(scene, sim::derive_seed(scene_seed, c)));
+      frames.push_back(renders.back().bgr);
+    }
+    const std::vector<sim::SphereTruth> truth = sim::court_scene_truth(rig, scene, renders);
+    const std::vector<TruthBall> balls = truth_balls(truth);
+    std::vector<FrameSetResult> results;
+    for (size_t m = 0; m < pipelines.size(); ++m) {
+      const auto start = std::chrono::steady_clock::now();
+      results.push_back(pipelines[m]->process(frames));
+      const std::chrono::duration<double, std::milli> elapsed =
+          std::chrono::steady_clock::now() - start;
+      MethodReport& method = report.methods[m];
+      method.frame_set_ms.push_back(elapsed.count());
+      std::vector<Vec2> estimates;
+      for (const FusedBall& ball : results.back().world.balls) estimates.push_back(ball.position_m);
+      const WorldModel& world = results.back().world;
+      method.scores.add(
+          score_scene(balls, estimates, scene.robot.pose,
+                      world.robot ? std::optional<Pose2D>(world.robot->pose) : std::nullopt,
+                      options.match_radius_m));
+    }
+    if (options.plot_dir && k < options.plot_scenes)
+      write_pictures(options, rig, k, frames, truth, scene.robot.pose, results, report.pictures);
+  }
+  return report;
+}
+
+namespace {
+
+nlohmann::json finite_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::json court_eval_json(const CourtEvalReport& report) {
+  nlohmann::json methods = nlohmann::json::object();
+  for (const MethodReport& m : report.methods) {
+    const CourtScores& s = m.scores;
+    nlohmann::json j;
+    j["recall"] = finite_or_null(s.recall());
+    j["precision"] = finite_or_null(s.precision());
+    j["duplicates"] = s.duplicates;
+    j["false_positives"] = s.false_positives;
+    j["ball_error_mean_cm"] = finite_or_null(100.0 * s.ball_error_mean_m());
+    j["ball_error_p95_cm"] = finite_or_null(100.0 * s.ball_error_p95_m());
+    j["robot_position_error_cm"] = finite_or_null(100.0 * s.robot_position_error_mean_m());
+    j["robot_position_error_max_cm"] = finite_or_null(100.0 * s.robot_position_error_max_m());
+    j["robot_heading_error_deg"] = finite_or_null(deg_from_rad(s.robot_heading_error_mean_rad()));
+    j["robot_heading_error_max_deg"] =
+        finite_or_null(deg_from_rad(s.robot_heading_error_max_rad()));
+    j["robot_found_scenes"] = s.robot_found;
+    j["balls_counted"] = s.counted;
+    j["balls_unseen"] = s.unseen;
+    j["estimates"] = s.estimates;
+    j["true_positives"] = s.true_positives;
+    j["correct_extras"] = s.correct_extras;
+    j["frame_set_ms_mean"] =
+        finite_or_null(m.frame_set_ms.empty()
+                           ? NAN
+                           : std::accumulate(m.frame_set_ms.begin(), m.frame_set_ms.end(), 0.0) /
+                                 static_cast<double>(m.frame_set_ms.size()));
+    j["calibration"] = {{"intrinsics_rms_px", m.calibration.intrinsics_rms_px},
+                        {"pose_rms_px", m.calibration.pose_rms_px}};
+    methods[court_method_name(m.method)] = j;
+  }
+  nlohmann::json out;
+  out["methods"] = methods;
+  out["seed"] = report.options.seed;
+  out["scenes"] = report.options.scenes;
+  out["match_radius_m"] = report.options.match_radius_m;
+  out["pictures"] = report.pictures;
+  return out;
+}
+
+std::string court_eval_text(const CourtEvalReport& report) {
+  std::ostringstream out;
+  char line[256];
+  std::snprintf(line, sizeof line, "court evaluation: seed %llu, %d scenes, match radius %.0f cm\n",
+                static_cast<unsigned long long>(report.options.seed), report.options.scenes,
+                100.0 * report.options.match_radius_m);
+  out << line;
+  out << "method      recall  precision  dup  FP  err mean  err p95  robot pos  robot hdg   "
+         "ms/set\n";
+  for (const MethodReport& m : report.methods) {
+    const CourtScores& s = m.scores;
+    double ms = 0.0;
+    for (double v : m.frame_set_ms) ms += v / static_cast<double>(m.frame_set_ms.size());
+    std::snprintf(
+        line, sizeof line,
+        "%-10s %6.2f%%  %8.2f%%  %3d %3d  %5.2f cm  %5.2f cm  %6.2f cm  %6.3f deg  %6.1f\n",
+        court_method_name(m.method).c_str(), 100.0 * s.recall(), 100.0 * s.precision(),
+        s.duplicates, s.false_positives, 100.0 * s.ball_error_mean_m(),
+        100.0 * s.ball_error_p95_m(), 100.0 * s.robot_position_error_mean_m(),
+        deg_from_rad(s.robot_heading_error_mean_rad()), ms);
+    out << line;
+  }
+  const CourtScores& any = report.methods.front().scores;
+  std::snprintf(line, sizeof line,
+                "balls: %d seen by at least one camera (counted for recall), %d seen by none\n",
+                any.counted, any.unseen);
+  out << line;
+  for (const std::string& picture : report.pictures) out << "wrote " << picture << "\n";
+  return out.str();
+}
+
+}  // namespace ballsight

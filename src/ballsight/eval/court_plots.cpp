@@ -1,0 +1,104 @@
+#include "ballsight/eval/court_plots.hpp"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "ballsight/eval/chart.hpp"
+
+namespace ballsight {
+
+namespace {
+
+cv::Point to_point(const Vec2& p) {
+  return {static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
+}
+
+}  // namespace
+
+cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& truth_px,
+                               const std::vector<DetectionLayer>& layers,
+                               const std::string& title) {
+  cv::Mat image = frame.clone();
+  for (const Vec2& p : truth_px)
+    cv::circle(image, to_point(p), 9, cv::Scalar::all(255), 1, cv::LINE_AA);
+  std::vector<LegendEntry> legend{{"true ball (seen)", cv::Scalar::all(255)}};
+  for (size_t i = 0; i < layers.size(); ++i) {
+    const DetectionLayer& layer = layers[i];
+    const int size = 5 + 2 * static_cast<int>(i);
+    for (const PixelDetection& d : layer.detections) {
+      const cv::Point c = to_point(d.center_px);
+      const int r = std::max(size, static_cast<int>(std::lround(d.radius_px)) + size - 3);
+      if (d.object == ObjectClass::ball) {
+        cv::circle(image, c, r, layer.colour, 1, cv::LINE_AA);
+      } else {
+        cv::rectangle(image, c - cv::Point(r, r), c + cv::Point(r, r), layer.colour, 1,
+                      cv::LINE_AA);
+      }
+    }
+    legend.push_back({layer.label, layer.colour});
+  }
+  cv::rectangle(image, {0, 0, image.cols, 28}, cv::Scalar::all(255), cv::FILLED);
+  draw_text(image, title, {10, 20}, 0.55);
+  draw_legend(image, {10, 40}, legend);
+  return image;
+}
+
+cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3>& cameras,
+                       const std::vector<TruthBall>& truth, const Pose2D& robot_truth,
+                       const std::vector<WorldLayer>& layers, const std::string& title,
+                       double pixels_per_m) {
+  const double margin_m = 1.5;
+  const double half_length = 0.5 * court.surround_length_m + margin_m;
+  const double half_width = 0.5 * court.surround_width_m + margin_m;
+  const int top = 36;
+  const int width = static_cast<int>(std::lround(2 * half_length * pixels_per_m));
+  const int height = static_cast<int>(std::lround(2 * half_width * pixels_per_m)) + top;
+  cv::Mat image(height, width, CV_8UC3, cv::Scalar(235, 235, 235));
+  // Field x to the right, y up.
+  const auto px = [&](const Vec2& p) {
+    return cv::Point2d((p.x() + half_length) * pixels_per_m,
+                       top + (half_width - p.y()) * pixels_per_m);
+  };
+  const auto fill_rect = [&](const sim::GroundRect& r, const cv::Vec3b& bgr) {
+    cv::rectangle(image, px({r.x_min, r.y_max}), px({r.x_max, r.y_min}),
+                  cv::Scalar(bgr[0], bgr[1], bgr[2]), cv::FILLED);
+  };
+  fill_rect(court.surround_rect(), court.surround_bgr);
+  fill_rect(court.court_rect(), court.court_bgr);
+  for (const sim::GroundRect& line : court.line_rects()) fill_rect(line, court.line_bgr);
+  for (const Vec3& c : cameras) {
+    cv::drawMarker(image, px(c.head<2>()), cv::Scalar(40, 40, 40), cv::MARKER_TRIANGLE_UP, 14, 2);
+  }
+
+  const auto draw_robot = [&](const Pose2D& pose, const cv::Scalar& colour, int thickness) {
+    const Vec2 forward(std::cos(pose.heading_rad), std::sin(pose.heading_rad));
+    cv::arrowedLine(image, px(pose.position), px(pose.position + 0.8 * forward), colour, thickness,
+                    cv::LINE_AA, 0, 0.25);
+  };
+  for (const TruthBall& t : truth) {
+    cv::circle(image, px(t.position_m), 4,
+               t.seen ? cv::Scalar(20, 20, 20) : cv::Scalar(150, 150, 150), 1, cv::LINE_AA);
+  }
+  draw_robot(robot_truth, cv::Scalar(20, 20, 20), 3);
+  std::vector<LegendEntry> legend{
+      {"true balls and robot (grey: seen by no camera)", cv::Scalar(20, 20, 20)}};
+  for (size_t i = 0; i < layers.size(); ++i) {
+    const WorldLayer& layer = layers[i];
+    for (const CollectionSite& site : layer.world.sites) {
+      if (site.balls.size() < 2) continue;
+      const double r = std::max(0.5 * site.diameter_m + 0.12, 0.15) * pixels_per_m;
+      cv::circle(image, px(site.center_m), static_cast<int>(r), layer.colour, 1, cv::LINE_AA);
+    }
+    const int marker = i == 0 ? cv::MARKER_TILTED_CROSS : cv::MARKER_CROSS;
+    for (const FusedBall& ball : layer.world.balls)
+      cv::drawMarker(image, px(ball.position_m), layer.colour, marker, 7, 1, cv::LINE_AA);
+    if (layer.world.robot) draw_robot(layer.world.robot->pose, layer.colour, 1);
+    legend.push_back({layer.label, layer.colour});
+  }
+  cv::rectangle(image, {0, 0, image.cols, top}, cv::Scalar::all(255), cv::FILLED);
+  draw_text(image, title, {10, 24}, 0.6);
+  draw_legend(image, {10, top + 8}, legend);
+  return image;
+}
+
+}  // namespace ballsight

@@ -1,0 +1,64 @@
+#include "ballsight/pipeline/site_setup.hpp"
+
+#include "ballsight/camera/camera_file.hpp"
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+std::vector<FieldCamera> site_field_cameras(const Site& site) {
+  std::vector<FieldCamera> cameras;
+  for (const SiteCamera& camera : site.cameras) {
+    const CameraCalibration calibration = read_camera_file(camera.calibration_file);
+    require(calibration.extrinsics.has_value(),
+            "camera '" + camera.name + "' (" + camera.calibration_file.string() + ")",
+            "has no pose yet: run `ballsight court calibrate --site " + site.file.string() + "`");
+    cameras.push_back(
+        {PinholeCamera(calibration.intrinsics), calibration.extrinsics->camera_from_field});
+  }
+  return cameras;
+}
+
+FieldRect site_area(const Site& site) {
+  const Vec2 half(0.5 * site.court.area_length_m + 0.5, 0.5 * site.court.area_width_m + 0.5);
+  return {-half, half};
+}
+
+BallsightPipelineOptions ballsight_options_for_site(const Site& site) {
+  BallsightPipelineOptions options;
+  CourtObjectColours colours;
+  colours.ball = site.colours.ball.bgr();
+  colours.front_marker = site.colours.robot_front.bgr();
+  colours.back_marker = site.colours.robot_back.bgr();
+  options.detector.objects = court_objects(colours, site.ball_radius_m, site.robot.marker_radius_m,
+                                           site.robot.marker_height_m);
+  options.detector.area = site_area(site);
+  options.world.ball_radius_m = site.ball_radius_m;
+  options.world.robot.marker_height_m = site.robot.marker_height_m;
+  options.world.collector_width_m = site.robot.collector_width_m;
+  options.world.area = site_area(site);
+  return options;
+}
+
+SeedPipelineOptions seed_options_for_site(const Site& site) {
+  SeedPipelineOptions options;
+  options.world.merge_distance_m = site.robot.collector_width_m;
+  options.world.robot.marker_height_m = site.robot.marker_height_m;
+  return options;
+}
+
+std::unique_ptr<FrameSource> site_frame_source(const SiteCamera& camera) {
+  const CameraSource& source = camera.source;
+  switch (source.kind) {
+    case CameraSource::Kind::file:
+      return make_image_files_source({source.path}, "file " + source.path.string());
+    case CameraSource::Kind::folder:
+      return make_image_folder_source(source.path);
+    case CameraSource::Kind::device:
+      return make_device_source(source.device);
+    case CameraSource::Kind::url:
+      return make_url_source(source.url);
+  }
+  throw InputError("camera '" + camera.name + "': unknown source kind");
+}
+
+}  // namespace ballsight

@@ -1,0 +1,29 @@
+#pragma once
+// From a site file to a running court method: the calibrated cameras, the detector's and world
+// model's options from the site's colours and sizes, and each camera's frame source.
+
+#include <memory>
+#include <vector>
+
+#include "ballsight/camera/field_camera.hpp"
+#include "ballsight/pipeline/court_pipeline.hpp"
+#include "ballsight/pipeline/frame_source.hpp"
+#include "ballsight/world/site.hpp"
+
+namespace ballsight {
+
+/// Every camera of the site with its intrinsics and pose from its calibration file. Throws
+/// InputError naming the camera and file when the file has no pose yet (`court calibrate`).
+std::vector<FieldCamera> site_field_cameras(const Site& site);
+
+/// The area balls may lie in (the site's, with half a metre around it), field frame.
+FieldRect site_area(const Site& site);
+
+BallsightPipelineOptions ballsight_options_for_site(const Site& site);
+SeedPipelineOptions seed_options_for_site(const Site& site);
+
+/// The camera's source: a file (one frame), a folder (its images in name order), a video device
+/// or a URL.
+std::unique_ptr<FrameSource> site_frame_source(const SiteCamera& camera);
+
+}  // namespace ballsight

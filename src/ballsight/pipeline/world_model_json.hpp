@@ -1,0 +1,20 @@
+#pragma once
+// The world model as JSON, for `court run --json` (one object per frame set) and other tools.
+// Units: metres and degrees, as the key names say.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ballsight/world/world_model.hpp"
+
+namespace ballsight {
+
+/// {"cameras": [...], "balls": [{"x_m", "y_m", "sigma_m", "cameras"}], "sites": [{"x_m", "y_m",
+/// "diameter_m", "balls"}], "robot": {"x_m", "y_m", "heading_deg", "position_sigma_m",
+/// "heading_sigma_deg", "front_cameras", "back_cameras"} or null}. `camera_names` names the
+/// camera indices.
+nlohmann::json world_model_json(const WorldModel& world,
+                                const std::vector<std::string>& camera_names);
+
+}  // namespace ballsight

@@ -1,0 +1,302 @@
+#include "ballsight/world/cluster_refinement.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+void ClusterOptions::validate() const {
+  require(link_distance_radii > 0.0, "cluster link_distance_radii", "must be positive");
+  require(merged_sigma_radii >= 0.0, "cluster merged_sigma_radii", "must be non-negative");
+  require(min_chi2_gain > 0.0 && min_chi2_keep > 0.0, "cluster",
+          "min_chi2_gain and min_chi2_keep must be positive");
+  require(min_separation_radii >= 0.0, "cluster min_separation_radii", "must be non-negative");
+  require(max_added >= 0 && max_added <= 8, "cluster max_added", "must be within [0, 8]");
+  require(iterations >= 1, "cluster iterations", "must be at least 1");
+  require(assign_gate_chi2 > 0.0, "cluster assign_gate_chi2", "must be positive");
+}
+
+namespace {
+
+// One hypothesis: ball positions and, per observation, the balls it covers.
+struct Fit {
+  std::vector<Vec2> balls;
+  std::vector<std::vector<int>> covered;  // per observation of the group
+  Eigen::MatrixXd covariance;             // 2N x 2N
+  double chi2 = std::numeric_limits<double>::max();
+};
+
+class GroupFitter {
+ public:
+  GroupFitter(const std::vector<FieldObservation>& all, std::vector<int> members,
+              double ball_radius_m, const ClusterOptions& options)
+      : all_(all), members_(std::move(members)), radius_(ball_radius_m), options_(options) {
+    for (int o : members_) {
+      information_.push_back(all_[static_cast<size_t>(o)].covariance_m2.inverse());
+      if (std::find(cameras_.begin(), cameras_.end(), all_[static_cast<size_t>(o)].camera) ==
+          cameras_.end())
+        cameras_.push_back(all_[static_cast<size_t>(o)].camera);
+    }
+  }
+
+  Fit fit(const std::vector<Vec2>& start) const {
+    Fit f;
+    f.balls = start;
+    for (int it = 0; it < options_.iterations; ++it) {
+      f.covered = assign(f.balls);
+      solve(start, f);
+    }
+    f.covered = assign(f.balls);
+    f.chi2 = chi2(f);
+    return f;
+  }
+
+  const std::vector<int>& members() const { return members_; }
+
+  // Cameras whose observations cover ball i.
+  int camera_count(const Fit& f, int ball) const {
+    std::vector<int> seen;
+    for (size_t o = 0; o < members_.size(); ++o) {
+      const auto& cov = f.covered[o];
+      if (std::find(cov.begin(), cov.end(), ball) == cov.end()) continue;
+      const int camera = observation(o).camera;
+      if (std::find(seen.begin(), seen.end(), camera) == seen.end()) seen.push_back(camera);
+    }
+    return static_cast<int>(seen.size());
+  }
+
+ private:
+  const FieldObservation& observation(size_t o) const {
+    return all_[static_cast<size_t>(members_[o])];
+  }
+
+  double d2(size_t o, const Vec2& x) const {
+    const Vec2 r = observation(o).position_m - x;
+    return r.dot(information_[o] * r);
+  }
+
+  // Apart in the image of observation o's camera by more than two ball images and a pixel: two
+  // such balls cannot make one blob.
+  bool apart_in_image(size_t o, const Vec2& a, const Vec2& b) const {
+    const Eigen::Matrix2d& j = observation(o).plane_per_pixel;
+    const double radius_px = radius_ / std::sqrt(std::abs(j.determinant()));
+    return (j.inverse() * (a - b)).norm() > 2.0 * radius_px + 1.0;
+  }
+
+  // In every camera each ball goes to its nearest observation within the gate (none: that camera
+  // did not see it); an observation covers several balls only if they could make one blob there,
+  // else it keeps the nearest of them.
+  std::vector<std::vector<int>> assign(const std::vector<Vec2>& balls) const {
+    std::vector<std::vector<int>> covered(members_.size());
+    for (size_t i = 0; i < balls.size(); ++i) {
+      for (int camera : cameras_) {
+        size_t best = members_.size();
+        for (size_t o = 0; o < members_.size(); ++o)
+          if (observation(o).camera == camera && d2(o, balls[i]) <= options_.assign_gate_chi2 &&
+              (best == members_.size() || d2(o, balls[i]) < d2(best, balls[i])))
+            best = o;
+        if (best < members_.size()) covered[best].push_back(static_cast<int>(i));
+      }
+    }
+    for (size_t o = 0; o < members_.size(); ++o) {
+      auto& cov = covered[o];
+      if (cov.size() < 2) continue;
+      std::sort(cov.begin(), cov.end(), [&](int a, int b) {
+        return d2(o, balls[static_cast<size_t>(a)]) < d2(o, balls[static_cast<size_t>(b)]);
+      });
+      const Vec2 nearest = balls[static_cast<size_t>(cov.front())];
+      std::erase_if(cov, [&](int i) {
+        return i != cov.front() && apart_in_image(o, nearest, balls[static_cast<size_t>(i)]);
+      });
+    }
+    return covered;
+  }
+
+  Eigen::Matrix2d weight(size_t o, size_t covering) const {
+    const double extra = options_.merged_sigma_radii * radius_;
+    const Eigen::Matrix2d cov = observation(o).covariance_m2 + static_cast<double>(covering - 1) *
+                                                                   extra * extra *
+                                                                   Eigen::Matrix2d::Identity();
+    return cov.inverse();
+  }
+
+  // Weighted least squares: observation o measures the mean of the balls it covers. A weak prior
+  // (10 cm) on the starting positions keeps balls that are never seen apart where they started.
+  void solve(const std::vector<Vec2>& start, Fit& f) const {
+    const auto n = static_cast<Eigen::Index>(f.balls.size());
+    Eigen::MatrixXd h = Eigen::MatrixXd::Identity(2 * n, 2 * n) / (0.1 * 0.1);
+    Eigen::VectorXd b(2 * n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      b.segment<2>(2 * i) = start[static_cast<size_t>(i)] / (0.1 * 0.1);
+    for (size_t o = 0; o < members_.size(); ++o) {
+      const auto& cov = f.covered[o];
+      if (cov.empty()) continue;
+      const double k = static_cast<double>(cov.size());
+      const Eigen::Matrix2d w = weight(o, cov.size());
+      for (int i : cov) {
+        b.segment<2>(2 * i) += w * observation(o).position_m / k;
+        for (int j : cov) h.block<2, 2>(2 * i, 2 * j) += w / (k * k);
+      }
+    }
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(h);
+    const Eigen::VectorXd x = ldlt.solve(b);
+    for (Eigen::Index i = 0; i < n; ++i) f.balls[static_cast<size_t>(i)] = x.segment<2>(2 * i);
+    f.covariance = ldlt.solve(Eigen::MatrixXd::Identity(2 * n, 2 * n));
+  }
+
+  double chi2(const Fit& f) const {
+    double sum = 0.0;
+    for (size_t o = 0; o < members_.size(); ++o) {
+      const auto& cov = f.covered[o];
+      if (cov.empty()) {  // unexplained: as far as its nearest ball, at most the gate
+        double best = options_.assign_gate_chi2;
+        for (const Vec2& x : f.balls) best = std::min(best, d2(o, x));
+        sum += best;
+        continue;
+      }
+      Vec2 mean = Vec2::Zero();
+      for (int i : cov) mean += f.balls[static_cast<size_t>(i)];
+      const Vec2 r = observation(o).position_m - mean / static_cast<double>(cov.size());
+      sum += r.dot(weight(o, cov.size()) * r);
+    }
+    return sum;
+  }
+
+  const std::vector<FieldObservation>& all_;
+  std::vector<int> members_;
+  std::vector<Eigen::Matrix2d> information_;
+  std::vector<int> cameras_;
+  double radius_;
+  const ClusterOptions& options_;
+};
+
+double min_separation(const std::vector<Vec2>& balls) {
+  double best = std::numeric_limits<double>::max();
+  for (size_t i = 0; i < balls.size(); ++i)
+    for (size_t j = i + 1; j < balls.size(); ++j)
+      best = std::min(best, (balls[i] - balls[j]).norm());
+  return best;
+}
+
+// The best fit with one more ball: each ball in turn split in two, touching, in four directions.
+Fit fit_with_one_more(const GroupFitter& fitter, const Fit& current, double radius_m) {
+  Fit best;
+  for (size_t i = 0; i < current.balls.size(); ++i) {
+    for (int k = 0; k < 4; ++k) {
+      const double angle = k * std::numbers::pi / 4.0;
+      const Vec2 offset = radius_m * Vec2(std::cos(angle), std::sin(angle));
+      std::vector<Vec2> start = current.balls;
+      start[i] -= offset;
+      start.push_back(current.balls[i] + offset);
+      Fit f = fitter.fit(start);
+      if (f.chi2 < best.chi2) best = std::move(f);
+    }
+  }
+  return best;
+}
+
+// The best fit with one ball less.
+Fit fit_with_one_less(const GroupFitter& fitter, const Fit& current) {
+  Fit best;
+  for (size_t i = 0; i < current.balls.size(); ++i) {
+    std::vector<Vec2> start = current.balls;
+    start.erase(start.begin() + static_cast<std::ptrdiff_t>(i));
+    Fit f = fitter.fit(start);
+    if (f.chi2 < best.chi2) best = std::move(f);
+  }
+  return best;
+}
+
+std::vector<std::vector<int>> groups_of(const std::vector<FusedObject>& fused, double link_m) {
+  std::vector<int> parent(fused.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int i) {
+    while (parent[static_cast<size_t>(i)] != i) i = parent[static_cast<size_t>(i)];
+    return i;
+  };
+  for (size_t i = 0; i < fused.size(); ++i)
+    for (size_t j = i + 1; j < fused.size(); ++j)
+      if ((fused[i].position_m - fused[j].position_m).norm() < link_m)
+        parent[static_cast<size_t>(root(static_cast<int>(j)))] = root(static_cast<int>(i));
+  std::vector<std::vector<int>> groups(fused.size());
+  for (size_t i = 0; i < fused.size(); ++i)
+    groups[static_cast<size_t>(root(static_cast<int>(i)))].push_back(static_cast<int>(i));
+  std::erase_if(groups, [](const std::vector<int>& g) { return g.empty(); });
+  return groups;
+}
+
+}  // namespace
+
+std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& observations,
+                                         const std::vector<FusedObject>& fused,
+                                         double ball_radius_m, const ClusterOptions& options) {
+  options.validate();
+  std::vector<FusedObject> out;
+  for (const std::vector<int>& group :
+       groups_of(fused, options.link_distance_radii * ball_radius_m)) {
+    std::vector<int> members;
+    std::vector<Vec2> start;
+    for (int g : group) {
+      const FusedObject& object = fused[static_cast<size_t>(g)];
+      members.insert(members.end(), object.observations.begin(), object.observations.end());
+      start.push_back(object.position_m);
+    }
+    if (group.size() == 1 && members.size() < 3) {
+      out.push_back(fused[static_cast<size_t>(group.front())]);
+      continue;
+    }
+    const GroupFitter fitter(observations, members, ball_radius_m, options);
+    // How many balls the group's blobs amount to in the camera that sees most of it (the least
+    // hidden view); each observation carries its share of its blob.
+    std::map<int, double> objects_by_camera;
+    for (int o : members)
+      objects_by_camera[observations[static_cast<size_t>(o)].camera] +=
+          observations[static_cast<size_t>(o)].objects;
+    double objects = 0.0;
+    for (const auto& [camera, sum] : objects_by_camera) objects = std::max(objects, sum);
+    const int by_size =
+        1 + static_cast<int>(
+                std::floor(std::max(0.0, objects - options.count_offset) / options.count_step));
+    Fit best = fitter.fit(start);
+    // Fewer balls where the observations do not need them (a ball's observations fused apart).
+    while (best.balls.size() > 1) {
+      Fit fewer = fit_with_one_less(fitter, best);
+      if (fewer.chi2 - best.chi2 >= options.min_chi2_keep) break;
+      best = std::move(fewer);
+    }
+    const int wanted = std::min<int>(by_size, static_cast<int>(start.size()) + options.max_added);
+    while (static_cast<int>(best.balls.size()) < wanted) {
+      Fit more = fit_with_one_more(fitter, best, ball_radius_m);
+      if (best.chi2 - more.chi2 < options.min_chi2_gain) break;
+      if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
+      if (fitter.camera_count(more, static_cast<int>(more.balls.size()) - 1) < 2) break;
+      best = std::move(more);
+    }
+    for (size_t i = 0; i < best.balls.size(); ++i) {
+      FusedObject object;
+      object.position_m = best.balls[i];
+      object.covariance_m2 = best.covariance.block<2, 2>(2 * static_cast<Eigen::Index>(i),
+                                                         2 * static_cast<Eigen::Index>(i));
+      for (size_t o = 0; o < members.size(); ++o) {
+        const auto& cov = best.covered[o];
+        if (std::find(cov.begin(), cov.end(), static_cast<int>(i)) == cov.end()) continue;
+        object.observations.push_back(members[o]);
+        const int camera = observations[static_cast<size_t>(members[o])].camera;
+        if (std::find(object.cameras.begin(), object.cameras.end(), camera) == object.cameras.end())
+          object.cameras.push_back(camera);
+      }
+      std::sort(object.observations.begin(), object.observations.end());
+      std::sort(object.cameras.begin(), object.cameras.end());
+      out.push_back(std::move(object));
+    }
+  }
+  return out;
+}
+
+}  // namespace ballsight
