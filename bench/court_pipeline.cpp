@@ -1,0 +1,107 @@
+// Court vision speed: four 1280x720 frames (one per corner camera) -> world model, for the
+// report's pipeline (HSV, median filter, contours, z = 0, fixed-distance merge) and ballsight's
+// (the targets: at most 15 ms and at least 4x faster than the report's in the same run), and the
+// stages of ballsight's alone. Both run one std::async task per camera (the report's section 7.7);
+// OpenCV's own threads are off so that the cameras share the cores the same way in both.
+// Run: build/bin/bench_court_pipeline (items processed = frame sets or frames; CPU time is the
+// whole process's, wall time is real time).
+
+#include "ballsight/pipeline/court_pipeline.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <opencv2/core.hpp>
+
+#include "ballsight/detect/court_detector.hpp"
+#include "ballsight/sim/court_renderer.hpp"
+#include "ballsight/sim/court_rig.hpp"
+#include "ballsight/sim/court_scenario.hpp"
+#include "ballsight/world/court_world.hpp"
+
+namespace {
+
+using namespace ballsight;
+
+struct Setup {
+  std::vector<FieldCamera> cameras;
+  std::vector<cv::Mat> frames;
+};
+
+// 40 balls (a quarter in clusters, some by the robot), shadow band, noise: rendered once.
+const Setup& setup() {
+  static const Setup s = [] {
+    cv::setNumThreads(1);
+    const sim::CourtRig rig = sim::make_court_rig({}, {}, 1);
+    sim::CourtScenarioOptions options;
+    options.ball_count = 40;
+    const sim::CourtScene scene = sim::make_court_scene(rig.court, options, 7);
+    Setup out;
+    for (const sim::CourtCamera& camera : rig.cameras) {
+      out.cameras.push_back({camera.camera, camera.camera_from_field});
+      out.frames.push_back(sim::CourtRenderer(camera, rig.court).render(scene, 3).bgr);
+    }
+    return out;
+  }();
+  return s;
+}
+
+void run_frame_sets(benchmark::State& state, CourtPipeline& pipeline) {
+  const Setup& s = setup();
+  for (auto _ : state) benchmark::DoNotOptimize(pipeline.process(s.frames));
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_CourtFrameSetSeedPipeline(benchmark::State& state) {
+  const auto pipeline = make_seed_pipeline(setup().cameras);
+  run_frame_sets(state, *pipeline);
+  state.SetLabel("4 x 1280x720 -> world model, the report's pipeline");
+}
+BENCHMARK(BM_CourtFrameSetSeedPipeline)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+void BM_CourtFrameSetBallsight(benchmark::State& state) {
+  const auto pipeline = make_ballsight_pipeline(setup().cameras);
+  run_frame_sets(state, *pipeline);
+  state.SetLabel("4 x 1280x720 -> world model, ballsight");
+}
+BENCHMARK(BM_CourtFrameSetBallsight)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// Stages of ballsight's pipeline, single-threaded.
+void BM_CourtDetectorOneFrame(benchmark::State& state) {
+  const Setup& s = setup();
+  CourtDetector detector(s.cameras[0]);
+  for (auto _ : state) benchmark::DoNotOptimize(detector.detect(s.frames[0]));
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel("1280x720, camera 0");
+}
+BENCHMARK(BM_CourtDetectorOneFrame)->Unit(benchmark::kMillisecond);
+
+void BM_CourtWorldModel(benchmark::State& state) {
+  const Setup& s = setup();
+  std::vector<std::optional<std::vector<PixelDetection>>> detections;
+  for (size_t c = 0; c < s.cameras.size(); ++c)
+    detections.push_back(CourtDetector(s.cameras[c]).detect(s.frames[c]));
+  const CourtWorldOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(build_world_model(s.cameras, detections, options));
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel("4 cameras' detections -> world model");
+}
+BENCHMARK(BM_CourtWorldModel)->Unit(benchmark::kMillisecond);
+
+void BM_SeedDetectorOneFrame(benchmark::State& state) {
+  const Setup& s = setup();
+  const SeedDetectorOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(detect_seed(s.frames[0], options));
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel("1280x720, camera 0");
+}
+BENCHMARK(BM_SeedDetectorOneFrame)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
