@@ -15,4 +15,9 @@ void add_omni_inspect_command(CLI::App& omni);
 /// `sim court` on the `sim` subcommand (sim_court_command.cpp).
 void add_sim_court_command(CLI::App& sim);
 
+/// `calibrate camera` (calibrate_command.cpp), registered on the `calibrate` group.
+void add_calibrate_camera_command(CLI::App& calibrate);
+/// `court calibrate` (court_calibrate_command.cpp), registered on the `court` group.
+void add_court_calibrate_command(CLI::App& court);
+
 }  // namespace ballsight::app
