@@ -1,7 +1,6 @@
 #include "ballsight/calib/chessboard_images.hpp"
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {
@@ -19,8 +18,7 @@ ChessboardImages find_chessboards_in_images(const std::vector<std::filesystem::p
   pattern.validate();
   ChessboardImages session;
   for (const std::filesystem::path& file : files) {
-    const cv::Mat grey = cv::imread(file.string(), cv::IMREAD_GRAYSCALE);
-    require(!grey.empty(), file.string(), "cannot read the image");
+    const cv::Mat grey = read_image(file, cv::IMREAD_GRAYSCALE);
     if (session.image_size.empty()) session.image_size = grey.size();
     require(grey.size() == session.image_size, file.string(),
             "image is " + size_text(grey.size()) + ", the first image (" + files.front().string() +
