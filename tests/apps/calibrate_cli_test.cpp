@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -108,7 +109,23 @@ TEST(CourtCalibrateCli, SimulatedCourtEndToEnd) {
     const Vec3 true_center(center[0].get<double>(), center[1].get<double>(),
                            center[2].get<double>());
     const Vec3 found = calibration.extrinsics->camera_from_field.inverse().translation;
+    Mat3 true_rotation;
+    for (int i = 0; i < 9; ++i) {
+      true_rotation(i / 3, i % 3) =
+          truth["cameras"][c]["camera_from_field"]["rotation"][i / 3][i % 3].get<double>();
+    }
+    const double rotation_error_deg =
+        Eigen::AngleAxisd(calibration.extrinsics->camera_from_field.rotation.transpose() *
+                          true_rotation)
+            .angle() *
+        180.0 / M_PI;
+    const double fx_error = calibration.intrinsics.fx / truth["cameras"][c]["fx"].get<double>() - 1;
     EXPECT_LT((found - true_center).norm(), 0.05) << found.transpose();
+    EXPECT_LT(rotation_error_deg, 0.2);
+    EXPECT_LT(std::abs(fx_error), 0.005);
+    std::cout << "camera " << c << ": fx error " << 100 * fx_error << "%, position error "
+              << 100 * (found - true_center).norm() << " cm, rotation error " << rotation_error_deg
+              << " deg\n";
     EXPECT_GE(calibration.extrinsics->reference_count, 6);
     EXPECT_LT(calibration.extrinsics->reprojection_error_px, 0.3);
     EXPECT_TRUE(calibration.avg_reprojection_error_px.has_value()) << "intrinsics kept";
