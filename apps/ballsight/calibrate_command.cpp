@@ -88,9 +88,7 @@ void add_calibrate_camera_command(CLI::App& calibrate) {
       ->required();
   cmd->add_option("--board", args->board, "Inner corners per row x per column, e.g. 9x6")
       ->capture_default_str();
-  cmd->add_option("--square", args->square_m, "Side of a square, metres")
-      ->required()
-      ->check(CLI::PositiveNumber);
+  cmd->add_option("--square", args->square_m, "Side of a square, metres")->required();
   cmd->add_option("--out", args->out, "Calibration file to write (YAML)")->required();
   cmd->callback([args] { run_calibrate_camera(*args); });
 }

@@ -65,6 +65,9 @@ TEST(CalibrateCameraCli, BadInputsFailWithOneLine) {
   expect_one_line_error(calibrate((temp / "*.png").string(), "9-6"),
                         "--board: expected inner corners as COLSxROWS");
   expect_one_line_error(calibrate((temp / "*.png").string(), "6x6"), "must differ");
+  expect_one_line_error(run_cli({"calibrate", "camera", "--images", (temp / "*.png").string(),
+                                 "--square", "0", "--out", out}),
+                        "square: must be a positive length");
   for (int i = 0; i < 3; ++i) {
     cv::imwrite((temp / ("blank" + std::to_string(i) + ".png")).string(),
                 cv::Mat(240, 320, CV_8UC3, cv::Scalar::all(128)));
@@ -141,12 +144,14 @@ TEST(CourtCalibrateCli, BadSitesFailWithOneLine) {
   expect_one_line_error(run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
                         "site.yml:60: unknown key 'colour'");
   write_file_atomic(temp / "site.yml", site);
-  expect_one_line_error(run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
-                        "court_0000_cam0.png: does not exist");
+  expect_one_line_error(
+      run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
+      "camera 'ne': " + (temp / "court_0000_cam0.png").string() + ": does not exist");
   cv::imwrite((temp / "court_0000_cam0.png").string(),
               cv::Mat(720, 1280, CV_8UC3, cv::Scalar::all(128)));
-  expect_one_line_error(run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
-                        "cam0.yml: cannot open for reading");
+  expect_one_line_error(
+      run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
+      "camera 'ne': " + (temp / "cam0.yml").string() + ": cannot open for reading");
 }
 
 }  // namespace

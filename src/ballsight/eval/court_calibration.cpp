@@ -87,9 +87,15 @@ std::vector<CameraPoseReport> calibrate_site(const Site& site,
   std::vector<CameraPoseReport> reports;
   for (const SiteCamera& camera : site.cameras) {
     const fs::path image_file = first_source_image(camera);
-    const cv::Mat image = read_image(image_file);
-    reports.push_back(calibrate_site_camera(site, camera, image, image_file,
-                                            read_camera_file(camera.calibration_file), options));
+    cv::Mat image;
+    CameraCalibration calibration;
+    try {
+      image = read_image(image_file);
+      calibration = read_camera_file(camera.calibration_file);
+    } catch (const InputError& e) {
+      throw InputError("camera '" + camera.name + "': " + e.what());
+    }
+    reports.push_back(calibrate_site_camera(site, camera, image, image_file, calibration, options));
   }
   for (const CameraPoseReport& report : reports) {
     write_camera_file(report.calibration_file, report.calibration);
