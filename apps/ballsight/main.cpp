@@ -28,6 +28,9 @@ int main(int argc, char** argv) {
   ballsight::app::add_omni_fit_commands(*omni);
   ballsight::app::add_omni_inspect_command(*omni);
 
+  CLI::App* eval = app.add_subcommand("eval", "Experiments: ballsight against the papers' methods");
+  eval->require_subcommand(1);
+  ballsight::app::add_eval_commands(*eval);
   ballsight::app::add_demo_command(app);
 
   try {
