@@ -20,7 +20,7 @@ cv::Mat plot_omni_experiment(const OmniExperimentResult& result) {
   for (const auto& [distance, r] : methods.begin()->second.by_distance)
     distances.push_back(distance);
   constexpr int kPanel = 420, kMargin = 70;
-  cv::Mat figure(kPanel + 2 * kMargin + 40,
+  cv::Mat figure(kPanel + 2 * kMargin + 150,
                  static_cast<int>(distances.size()) * (kPanel + kMargin) + kMargin, CV_8UC3,
                  cv::Scalar(255, 255, 255));
   const Vec2 truth = result.options.ball_cm;
