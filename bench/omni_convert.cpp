@@ -1,7 +1,8 @@
 // Pixel -> robot-local ground point conversions of the omnidirectional camera: the paper's
-// lookup table read exactly as its robots do, ballsight's GroundMap (one read per pixel, and
-// bilinear for sub-pixel queries). Items processed = conversions; the pixels are random inside
-// the tables' valid range and precomputed outside the timed loop.
+// lookup table read exactly as its robots do, the paper's polynomial (Algorithm 1), ballsight's
+// GroundMap (one read per pixel, and bilinear for sub-pixel queries). Items processed =
+// conversions; the pixels are random inside the tables' valid range and precomputed outside the
+// timed loop.
 //
 // Each benchmark is one function: fetch the shared tables, then run_conversions() with a lambda
 // converting one pixel.
@@ -17,6 +18,8 @@
 #include <span>
 #include <vector>
 
+#include "ballsight/calib/polynomial_model.hpp"
+#include "ballsight/calib/simulated_calibration.hpp"
 #include "ballsight/camera/ground_map.hpp"
 #include "ballsight/camera/iris_lut.hpp"
 #include "ballsight/camera/omni_rig.hpp"
@@ -41,12 +44,16 @@ struct ConversionSetup {
   std::vector<IntPixel> pixels;
 };
 
-ConversionSetup make_setup() {
+OmniRigParams misaligned_rig() {
   OmniRigParams params;
   params.tilt_deg = 2.0;
   params.tilt_azimuth_deg = 30.0;
   params.center_offset_px = {3.0, 4.0};
-  const OmniRig rig(params);
+  return params;
+}
+
+ConversionSetup make_setup() {
+  const OmniRig rig(misaligned_rig());
   GroundMapInfo info;
   info.min_radius_px = 30.0;
   info.max_radius_px = 200.0;
@@ -139,6 +146,42 @@ void BM_ConvertBallsightLutBilinear(benchmark::State& state) {
                   [&](const Vec2& p) { return s.map.robot_point_cm(p); });
 }
 BENCHMARK(BM_ConvertBallsightLutBilinear);
+
+// The paper's polynomial (degree 6) fitted to a simulated marker calibration of the same rig.
+const PolynomialGroundModel& paper_polynomial() {
+  static const PolynomialGroundModel model = fit_polynomial_model(
+      simulate_calibration(OmniRig(misaligned_rig()), SimulatedCalibrationOptions{}).samples, {});
+  return model;
+}
+
+// Algorithm 1 as written: atan2, sqrt, the polynomial, then cos/sin of the bearing.
+RobotPoint polynomial_convert_with_trig(const PolynomialGroundModel& model, const Vec2& pixel) {
+  constexpr double kDeg2Rad = std::numbers::pi / 180.0;
+  const Vec2 c = model.domain().image.center_px;
+  const double dx = pixel.x() - c.x();
+  const double dy = c.y() - pixel.y();
+  const double theta = std::atan2(dy, dx);
+  const double d = model.polynomial()(std::sqrt(dx * dx + dy * dy));
+  const double bearing = theta - 90.0 * kDeg2Rad;
+  return {d * std::cos(bearing), d * std::sin(bearing)};
+}
+
+// The baseline as the paper's robots run it (Algorithm 1).
+void BM_ConvertPolynomial(benchmark::State& state) {
+  const PolynomialGroundModel& model = paper_polynomial();
+  run_conversions(state, std::span<const Vec2>(setup().subpixels),
+                  [&](const Vec2& p) { return polynomial_convert_with_trig(model, p); });
+}
+BENCHMARK(BM_ConvertPolynomial);
+
+// PolynomialGroundModel::convert: the same without trigonometry (cos/sin of the bearing are
+// (dy, -dx) / r), a faster baseline than the paper's, measured beside it.
+void BM_ConvertPolynomialNoTrig(benchmark::State& state) {
+  const PolynomialGroundModel& model = paper_polynomial();
+  run_conversions(state, std::span<const Vec2>(setup().subpixels),
+                  [&](const Vec2& p) { return model.convert(p); });
+}
+BENCHMARK(BM_ConvertPolynomialNoTrig);
 
 }  // namespace
 }  // namespace ballsight

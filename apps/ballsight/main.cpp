@@ -25,7 +25,13 @@ int main(int argc, char** argv) {
   CLI::App* omni = app.add_subcommand(
       "omni", "Omnidirectional camera: calibration, lookup tables, ball localisation");
   omni->require_subcommand(1);
+  ballsight::app::add_omni_fit_commands(*omni);
   ballsight::app::add_omni_inspect_command(*omni);
+
+  CLI::App* eval = app.add_subcommand("eval", "Experiments: ballsight against the papers' methods");
+  eval->require_subcommand(1);
+  ballsight::app::add_eval_commands(*eval);
+  ballsight::app::add_demo_command(app);
 
   CLI::App* calibrate = app.add_subcommand("calibrate", "Camera calibration from chessboards");
   calibrate->require_subcommand(1);

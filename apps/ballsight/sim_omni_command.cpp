@@ -2,21 +2,16 @@
 
 #include <charconv>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/core/file_io.hpp"
-#include "ballsight/sim/omni_renderer.hpp"
-#include "ballsight/sim/omni_scenario.hpp"
-#include "ballsight/sim/omni_truth_json.hpp"
+#include "ballsight/sim/omni_dataset.hpp"
 #include "commands.hpp"
+#include "option_parsing.hpp"
 
 namespace ballsight::app {
 
@@ -30,16 +25,6 @@ struct SimOmniArgs {
   bool no_markers = false;
 };
 
-Vec2 parse_pixel_pair(const std::string& text, const std::string& option) {
-  std::istringstream in(text);
-  double x = 0.0, y = 0.0;
-  char comma = 0;
-  in >> x >> comma >> y;
-  require(in && comma == ',' && (in >> std::ws).eof(), option,
-          "expected two numbers X,Y in pixels, got '" + text + "'");
-  return {x, y};
-}
-
 std::uint64_t parse_seed(const std::string& text) {
   std::uint64_t seed = 0;
   const char* end = text.data() + text.size();
@@ -49,30 +34,14 @@ std::uint64_t parse_seed(const std::string& text) {
   return seed;
 }
 
-std::string frame_name(int index, const char* extension) {
-  char name[32];
-  std::snprintf(name, sizeof(name), "omni_%04d.%s", index, extension);
-  return name;
-}
-
 void run(SimOmniArgs args) {
   args.scenario.seed = parse_seed(args.seed);
   if (args.center_offset_px) {
     args.scenario.center_offset_px = parse_pixel_pair(*args.center_offset_px, "--center-offset-px");
   }
   args.scenario.calibration_frame = !args.no_markers;
-  const sim::OmniScenario scenario = sim::make_omni_scenario(args.scenario);
-  ensure_directory(args.out);
-  const sim::OmniRenderer renderer(scenario.rig);
-  for (std::size_t i = 0; i < scenario.scenes.size(); ++i) {
-    const sim::OmniFrame frame = renderer.render(scenario.scenes[i]);
-    std::vector<uchar> png;
-    if (!cv::imencode(".png", frame.bgr, png)) throw std::runtime_error("PNG encoding failed");
-    const auto image_path = args.out / frame_name(static_cast<int>(i), "png");
-    const auto truth_path = args.out / frame_name(static_cast<int>(i), "json");
-    write_file_atomic(image_path, {reinterpret_cast<const char*>(png.data()), png.size()});
-    write_file_atomic(truth_path, sim::omni_truth_json_text(frame.truth));
-    std::cout << image_path.string() << " " << truth_path.string() << "\n";
+  for (const std::string& name : sim::write_omni_dataset(args.scenario, args.out)) {
+    std::cout << (args.out / name).string() << "\n";
   }
 }
 

@@ -79,7 +79,7 @@ TEST(CalibrateCameraCli, BadInputsFailWithOneLine) {
                         "blank3.png: image is 640x480, the first image");
   write_file_atomic(temp / "broken.png", "not a png");
   expect_one_line_error(calibrate((temp / "broken.png").string(), "9x6"),
-                        "broken.png: cannot read the image");
+                        "broken.png: not a readable image");
   EXPECT_FALSE(fs::exists(out)) << "nothing written on error";
 }
 
@@ -146,7 +146,7 @@ TEST(CourtCalibrateCli, BadSitesFailWithOneLine) {
   write_file_atomic(temp / "site.yml", site);
   expect_one_line_error(
       run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
-      "camera 'ne': " + (temp / "court_0000_cam0.png").string() + ": does not exist");
+      "camera 'ne': " + (temp / "court_0000_cam0.png").string() + ": cannot open for reading");
   cv::imwrite((temp / "court_0000_cam0.png").string(),
               cv::Mat(720, 1280, CV_8UC3, cv::Scalar::all(128)));
   expect_one_line_error(

@@ -1,15 +1,18 @@
 #pragma once
-// Reading an image file a user named: a missing or unreadable file is an InputError naming it
-// (cv::imread alone returns an empty image and prints a warning).
+// Camera image files: reading with errors that name the file, atomic PNG writes.
 
 #include <filesystem>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include <optional>
 
 namespace ballsight {
 
-/// cv::imread with `flags`; throws InputError "<file>: does not exist" or "<file>: cannot read
-/// the image".
-cv::Mat read_image(const std::filesystem::path& file, int flags = cv::IMREAD_COLOR);
+/// Reads a colour image as 8-bit BGR; throws InputError naming the file when it cannot be read
+/// or decoded, or when its size differs from `expected_size`.
+cv::Mat read_image_bgr(const std::filesystem::path& path,
+                       std::optional<cv::Size> expected_size = std::nullopt);
+
+/// Encodes `image` as PNG and writes it atomically (temporary file, then rename).
+void write_png_atomic(const std::filesystem::path& path, const cv::Mat& image);
 
 }  // namespace ballsight

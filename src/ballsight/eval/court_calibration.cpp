@@ -90,7 +90,7 @@ std::vector<CameraPoseReport> calibrate_site(const Site& site,
     cv::Mat image;
     CameraCalibration calibration;
     try {
-      image = read_image(image_file);
+      image = read_image_bgr(image_file);
       calibration = read_camera_file(camera.calibration_file);
     } catch (const InputError& e) {
       throw InputError("camera '" + camera.name + "': " + e.what());

@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/core/file_io.hpp"
 #include "ballsight/eval/chart.hpp"
 
 namespace ballsight {
@@ -157,12 +155,6 @@ cv::Mat plot_lut_inspection(const InspectedLut& lut, const LutInspection& inspec
   draw_profiles(figure, lut, inspection, max_cm);
   draw_heat_map(figure, lut, inspection, max_cm);
   return figure;
-}
-
-void save_png(const std::filesystem::path& path, const cv::Mat& bgr) {
-  std::vector<uchar> png;
-  require(cv::imencode(".png", bgr, png), path.string(), "cannot encode PNG");
-  write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 }  // namespace ballsight

@@ -13,7 +13,4 @@ namespace ballsight {
 /// A BGR figure of `lut` and its inspection.
 cv::Mat plot_lut_inspection(const InspectedLut& lut, const LutInspection& inspection);
 
-/// Writes a BGR image as PNG atomically; throws InputError naming the path on failure.
-void save_png(const std::filesystem::path& path, const cv::Mat& bgr);
-
 }  // namespace ballsight

@@ -1,13 +1,13 @@
 #include "ballsight/sim/court_dataset.hpp"
 
 #include <cstdio>
-#include <opencv2/imgcodecs.hpp>
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_truth.hpp"
 #include "ballsight/sim/court_truth_json.hpp"
+#include "ballsight/sim/dataset_writer.hpp"
 #include "ballsight/sim/ray_table.hpp"
 #include "ballsight/sim/seeding.hpp"
 
@@ -23,32 +23,6 @@ std::string format_name(const char* pattern, Args... args) {
   std::snprintf(buffer, sizeof buffer, pattern, args...);
   return buffer;
 }
-
-class DatasetWriter {
- public:
-  explicit DatasetWriter(std::filesystem::path dir) : dir_(std::move(dir)) {
-    ensure_directory(dir_);
-  }
-
-  void png(const std::string& name, const cv::Mat& image) {
-    std::vector<uchar> bytes;
-    require(cv::imencode(".png", image, bytes), name, "PNG encoding failed");
-    write_file_atomic(dir_ / name,
-                      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-    written_.push_back(name);
-  }
-
-  void json(const std::string& name, const Json& document) {
-    write_file_atomic(dir_ / name, json_text(document));
-    written_.push_back(name);
-  }
-
-  std::vector<std::string> written() && { return std::move(written_); }
-
- private:
-  std::filesystem::path dir_;
-  std::vector<std::string> written_;
-};
 
 void write_chessboards(const CourtDatasetOptions& options, const CourtRig& rig,
                        DatasetWriter& writer) {

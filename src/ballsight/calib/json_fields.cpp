@@ -1,0 +1,67 @@
+#include "ballsight/calib/json_fields.hpp"
+
+#include <cmath>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+const nlohmann::json& json_member(const nlohmann::json& object, const std::string& key,
+                                  const std::string& where) {
+  require(object.is_object(), where, "expected a JSON object");
+  const auto it = object.find(key);
+  require(it != object.end(), where + "." + key, "missing");
+  return *it;
+}
+
+double json_number(const nlohmann::json& object, const std::string& key, const std::string& where) {
+  const nlohmann::json& value = json_member(object, key, where);
+  require(value.is_number() && std::isfinite(value.get<double>()), where + "." + key,
+          "expected a finite number");
+  return value.get<double>();
+}
+
+int json_int(const nlohmann::json& object, const std::string& key, const std::string& where,
+             int min, int max) {
+  const nlohmann::json& value = json_member(object, key, where);
+  require(
+      value.is_number_integer() && value.get<long long>() >= min && value.get<long long>() <= max,
+      where + "." + key,
+      "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+  return value.get<int>();
+}
+
+std::string json_string(const nlohmann::json& object, const std::string& key,
+                        const std::string& where) {
+  const nlohmann::json& value = json_member(object, key, where);
+  require(value.is_string(), where + "." + key, "expected a string");
+  return value.get<std::string>();
+}
+
+void json_require_string(const nlohmann::json& object, const std::string& key,
+                         const std::string& where, const std::string& expected) {
+  require(json_string(object, key, where) == expected, where + "." + key,
+          "expected \"" + expected + "\"");
+}
+
+std::vector<double> json_number_array(const nlohmann::json& value, const std::string& where,
+                                      std::size_t size) {
+  const std::string expected =
+      size == 0 ? std::string("expected an array of finite numbers")
+                : "expected an array of " + std::to_string(size) + " finite numbers";
+  require(value.is_array() && (size == 0 || value.size() == size), where, expected);
+  std::vector<double> numbers;
+  numbers.reserve(value.size());
+  for (const nlohmann::json& element : value) {
+    require(element.is_number() && std::isfinite(element.get<double>()), where, expected);
+    numbers.push_back(element.get<double>());
+  }
+  return numbers;
+}
+
+std::vector<double> json_numbers(const nlohmann::json& object, const std::string& key,
+                                 const std::string& where, std::size_t size) {
+  return json_number_array(json_member(object, key, where), where + "." + key, size);
+}
+
+}  // namespace ballsight

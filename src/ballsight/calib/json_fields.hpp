@@ -1,0 +1,32 @@
+#pragma once
+// Reading fields of a JSON document with errors that name the field's path and what was
+// expected (InputError "<where>.<key>: expected ...").
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace ballsight {
+
+/// The object member `key`; throws when `object` is not an object or lacks it.
+const nlohmann::json& json_member(const nlohmann::json& object, const std::string& key,
+                                  const std::string& where);
+/// A finite number.
+double json_number(const nlohmann::json& object, const std::string& key, const std::string& where);
+/// An integer in [min, max].
+int json_int(const nlohmann::json& object, const std::string& key, const std::string& where,
+             int min, int max);
+/// A string.
+std::string json_string(const nlohmann::json& object, const std::string& key,
+                        const std::string& where);
+/// Throws unless the member `key` is the string `expected`.
+void json_require_string(const nlohmann::json& object, const std::string& key,
+                         const std::string& where, const std::string& expected);
+/// `value` as an array of finite numbers, of `size` elements unless size is 0.
+std::vector<double> json_number_array(const nlohmann::json& value, const std::string& where,
+                                      std::size_t size = 0);
+/// The member `key` as an array of finite numbers, of `size` elements unless size is 0.
+std::vector<double> json_numbers(const nlohmann::json& object, const std::string& key,
+                                 const std::string& where, std::size_t size = 0);
+
+}  // namespace ballsight

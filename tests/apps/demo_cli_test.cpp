@@ -1,0 +1,45 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "apps/run_cli.hpp"
+#include "ballsight/core/file_io.hpp"
+#include "temp_dir.hpp"
+
+namespace ballsight::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(DemoCli, WritesAReportThatShowsEveryImage) {
+  const TempDir dir;
+  const fs::path out = dir / "demo";
+  const CliResult r = run_cli({"demo", "--out", out.string(), "--omni-frames", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const std::string html = read_file(out / "report.html");
+  int images = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(out)) {
+    if (entry.path().extension() != ".png") continue;
+    ++images;
+    const std::string relative = fs::relative(entry.path(), out).string();
+    EXPECT_NE(html.find("src=\"" + relative + "\""), std::string::npos) << relative;
+  }
+  EXPECT_EQ(images, 2 + 4);  // two omni frames, four court views
+  EXPECT_NE(read_file(out / "report.md").find("calibration markers"), std::string::npos);
+}
+
+TEST(DemoCli, BadOptionsFailWithOneLine) {
+  const TempDir dir;
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"demo"},
+        {"demo", "--out", (dir / "x").string(), "--omni-frames", "0"},
+        {"demo", "--out", (dir / "x").string(), "--seed", "abc"}}) {
+    const CliResult r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 2) << args.back();
+    EXPECT_EQ(line_count(r.stderr_text), 1) << r.stderr_text;
+  }
+  EXPECT_FALSE(fs::exists(dir / "x" / "report.html"));
+}
+
+}  // namespace
+}  // namespace ballsight::test
