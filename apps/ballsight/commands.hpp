@@ -21,9 +21,14 @@ void add_demo_command(CLI::App& app);
 /// `omni fit` and `omni predict` (omni_fit_command.cpp), registered on the `omni` group.
 void add_omni_fit_commands(CLI::App& omni);
 
+/// `eval omni` (eval_command.cpp), registered on the `eval` group.
+void add_eval_commands(CLI::App& eval);
+/// `calibrate camera` (calibrate_command.cpp), registered on the `calibrate` group.
+void add_calibrate_camera_command(CLI::App& calibrate);
+/// `court calibrate` (court_calibrate_command.cpp), registered on the `court` group.
+void add_court_calibrate_command(CLI::App& court);
 /// `court run` (court_command.cpp), registered on the `court` group.
 void add_court_run_command(CLI::App& court);
-
 /// `eval court` (eval_court_command.cpp), registered on the `eval` group.
 void add_eval_court_command(CLI::App& eval);
 

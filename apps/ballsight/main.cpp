@@ -28,16 +28,21 @@ int main(int argc, char** argv) {
   ballsight::app::add_omni_fit_commands(*omni);
   ballsight::app::add_omni_inspect_command(*omni);
 
-  CLI::App* court = app.add_subcommand(
-      "court", "Fixed cameras around a tennis court: calibration and the world model");
-  court->require_subcommand(1);
-  ballsight::app::add_court_run_command(*court);
-
-  CLI::App* eval = app.add_subcommand("eval", "Measure methods against the simulator's truth");
+  CLI::App* eval = app.add_subcommand("eval", "Experiments: ballsight against the papers' methods");
   eval->require_subcommand(1);
+  ballsight::app::add_eval_commands(*eval);
   ballsight::app::add_eval_court_command(*eval);
-
   ballsight::app::add_demo_command(app);
+
+  CLI::App* calibrate = app.add_subcommand("calibrate", "Camera calibration from chessboards");
+  calibrate->require_subcommand(1);
+  ballsight::app::add_calibrate_camera_command(*calibrate);
+
+  CLI::App* court =
+      app.add_subcommand("court", "Fixed cameras around a tennis court: calibration and tracking");
+  court->require_subcommand(1);
+  ballsight::app::add_court_calibrate_command(*court);
+  ballsight::app::add_court_run_command(*court);
 
   try {
     app.parse(argc, argv);

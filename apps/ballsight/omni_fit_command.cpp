@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ballsight/calib/ground_error.hpp"
+#include "ballsight/calib/ground_map_model.hpp"
 #include "ballsight/calib/model_ground_map.hpp"
 #include "ballsight/calib/model_json.hpp"
 #include "ballsight/calib/omni_model_fit.hpp"
@@ -30,11 +31,12 @@ struct FitArgs {
   std::optional<std::string> center;
   std::optional<std::string> image_size;
   std::optional<int> degree;
-  std::optional<std::string> lut;
+  std::optional<std::string> model;
 };
 
 struct PredictArgs {
-  std::string model;
+  std::optional<std::string> lut;
+  std::optional<std::string> model;
   std::string samples;
   std::string out;
 };
@@ -54,10 +56,8 @@ void run_fit(const FitArgs& args) {
   const OmniImage image = omni_image_for_samples(samples, center, size);
   const std::unique_ptr<OmniGroundModel> model = fit_omni_model(method, samples, image, options);
 
-  std::optional<GroundMap> map;
-  if (args.lut) map = ground_map_from_model(*model);
-  save_omni_model(args.out, *model);
-  if (map) save_ground_map(*args.lut, *map);
+  save_ground_map(args.out, ground_map_from_model(*model));
+  if (args.model) save_omni_model(*args.model, *model);
 
   const GroundErrors errors = sample_errors(*model, samples);
   std::cout << std::fixed << std::setprecision(1) << model->name() << " model from "
@@ -66,11 +66,15 @@ void run_fit(const FitArgs& args) {
             << "), valid radius " << model->domain().valid_radius.min_px << " .. "
             << model->domain().valid_radius.max_px << " px; distance error on the samples: median "
             << errors.distance_cm.median << " cm, p95 " << errors.distance_cm.p95 << " cm -> "
-            << args.out << (args.lut ? ", " + *args.lut : std::string()) << "\n";
+            << args.out << (args.model ? ", " + *args.model : std::string()) << "\n";
 }
 
 void run_predict(const PredictArgs& args) {
-  const std::unique_ptr<OmniGroundModel> model = load_omni_model(args.model);
+  require(args.lut.has_value() != args.model.has_value(), "omni predict",
+          "give exactly one of --lut FILE and --model FILE");
+  const std::unique_ptr<OmniGroundModel> model =
+      args.lut ? std::make_unique<GroundMapModel>(load_ground_map(*args.lut))
+               : load_omni_model(*args.model);
   const std::vector<PolarSample> samples = read_polar_samples_csv(args.samples);
   write_file_atomic(args.out, format_prediction_csv(*model, samples));
 }
@@ -87,22 +91,26 @@ void add_omni_fit_commands(CLI::App& omni) {
   fit->add_option("--method", fit_args->method,
                   "poly (the paper's polynomial), paper-mlp (the paper's network) or ballsight")
       ->capture_default_str();
-  fit->add_option("--out", fit_args->out, "Model file to write (JSON)")->required();
+  fit->add_option("--out", fit_args->out,
+                  "Lookup table to write (ballsight ground map, docs/lut-format.md)")
+      ->required();
   fit->add_option("--center", fit_args->center,
                   "Image centre CX,CY the samples' polar coordinates are around (default: the "
                   "image's centre)");
   fit->add_option("--image-size", fit_args->image_size,
                   "Image size WxH (default: one that covers the samples' radii with margin)");
   fit->add_option("--degree", fit_args->degree, "Polynomial degree for --method poly (default 6)");
-  fit->add_option("--lut", fit_args->lut, "Also write the model as a ballsight ground map");
+  fit->add_option("--model", fit_args->model,
+                  "Also write the fitted model's parameters (JSON, for omni predict --model)");
   fit->callback([fit_args] { run_fit(*fit_args); });
 
   auto predict_args = std::make_shared<PredictArgs>();
-  CLI::App* predict =
-      omni.add_subcommand("predict",
-                          "Apply a fitted model to samples: copies the rows and adds "
-                          "predicted_distance_cm, predicted_bearing_deg and in_range");
-  predict->add_option("--model", predict_args->model, "Model file (from omni fit)")->required();
+  CLI::App* predict = omni.add_subcommand(
+      "predict",
+      "Apply a lookup table (or a fitted model) to samples: copies the rows and adds "
+      "predicted_distance_cm, predicted_bearing_deg and in_range");
+  predict->add_option("--lut", predict_args->lut, "Lookup table (from omni fit --out)");
+  predict->add_option("--model", predict_args->model, "Model file (from omni fit --model)");
   predict->add_option("--samples", predict_args->samples, "Samples CSV")->required();
   predict->add_option("--out", predict_args->out, "Output CSV")->required();
   predict->callback([predict_args] { run_predict(*predict_args); });

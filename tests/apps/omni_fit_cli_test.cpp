@@ -58,42 +58,45 @@ TEST_F(OmniFitCli, FitsThenPredicts) {
     const fs::path lut = dir / (method + ".bsgm");
     const test::CliResult fit =
         test::run_cli({"omni", "fit", "--samples", samples().string(), "--method", method, "--out",
-                       model.string(), "--image-size", "640x480", "--lut", lut.string()});
+                       lut.string(), "--image-size", "640x480", "--model", model.string()});
     ASSERT_EQ(fit.exit_code, 0) << fit.stderr_text;
     EXPECT_EQ(test::line_count(fit.stdout_text), 1) << fit.stdout_text;
     EXPECT_NE(read_file(model).find("\"method\": \"" + method + "\""), std::string::npos);
     EXPECT_EQ(read_file(lut).substr(0, 8), "BSGRDMAP");
 
-    const fs::path predictions = dir / (method + ".csv");
-    const test::CliResult predict =
-        test::run_cli({"omni", "predict", "--model", model.string(), "--samples",
-                       samples().string(), "--out", predictions.string()});
-    ASSERT_EQ(predict.exit_code, 0) << predict.stderr_text;
-    std::istringstream in(read_file(predictions));
-    std::string line;
-    std::getline(in, line);
-    EXPECT_EQ(line,
-              "theta_deg,radius_px,distance_cm,predicted_distance_cm,predicted_bearing_deg,"
-              "in_range");
-    int rows = 0;
-    while (std::getline(in, line)) {
-      ++rows;
-      EXPECT_EQ(line.back(), '1') << line;  // every sample lies in the model's range
-      // The prediction follows the sample's own distance closely on noise-free samples.
-      std::istringstream fields(line);
-      std::string theta, radius, distance, predicted;
-      std::getline(fields, theta, ',');
-      std::getline(fields, radius, ',');
-      std::getline(fields, distance, ',');
-      std::getline(fields, predicted, ',');
-      EXPECT_NEAR(std::stod(predicted), std::stod(distance), 0.05 * std::stod(distance)) << line;
+    for (const std::string table_option : {"--lut", "--model"}) {
+      SCOPED_TRACE(table_option);
+      const fs::path predictions = dir / (method + ".csv");
+      const test::CliResult predict = test::run_cli(
+          {"omni", "predict", table_option, (table_option == "--lut" ? lut : model).string(),
+           "--samples", samples().string(), "--out", predictions.string()});
+      ASSERT_EQ(predict.exit_code, 0) << predict.stderr_text;
+      std::istringstream in(read_file(predictions));
+      std::string line;
+      std::getline(in, line);
+      EXPECT_EQ(line,
+                "theta_deg,radius_px,distance_cm,predicted_distance_cm,predicted_bearing_deg,"
+                "in_range");
+      int rows = 0;
+      while (std::getline(in, line)) {
+        ++rows;
+        EXPECT_EQ(line.back(), '1') << line;  // every sample lies in the model's range
+        // The prediction follows the sample's own distance closely on noise-free samples.
+        std::istringstream fields(line);
+        std::string theta, radius, distance, predicted;
+        std::getline(fields, theta, ',');
+        std::getline(fields, radius, ',');
+        std::getline(fields, distance, ',');
+        std::getline(fields, predicted, ',');
+        EXPECT_NEAR(std::stod(predicted), std::stod(distance), 0.05 * std::stod(distance)) << line;
+      }
+      EXPECT_EQ(rows, 36 * 9);
     }
-    EXPECT_EQ(rows, 36 * 9);
   }
 }
 
 TEST_F(OmniFitCli, BadFitInputIsOneLineAndLeavesTheOutput) {
-  const fs::path out = dir / "model.json";
+  const fs::path out = dir / "table.bsgm";
   const std::vector<std::string> fit = {"omni", "fit", "--out", out.string(), "--samples"};
   const auto with = [&](const std::string& samples_path, std::vector<std::string> more) {
     std::vector<std::string> args = fit;
@@ -122,7 +125,7 @@ TEST_F(OmniFitCli, BadFitInputIsOneLineAndLeavesTheOutput) {
 TEST_F(OmniFitCli, BadPredictInputIsOneLineAndLeavesTheOutput) {
   const fs::path model = dir / "model.json";
   ASSERT_EQ(test::run_cli({"omni", "fit", "--samples", samples().string(), "--method", "poly",
-                           "--out", model.string()})
+                           "--out", (dir / "table.bsgm").string(), "--model", model.string()})
                 .exit_code,
             0);
   const fs::path out = dir / "predictions.csv";
@@ -136,6 +139,13 @@ TEST_F(OmniFitCli, BadPredictInputIsOneLineAndLeavesTheOutput) {
   expect_rejected({"omni", "predict", "--model", model.string(), "--samples", bad.string(), "--out",
                    out.string()},
                   bad.string() + ":2:9: extra column", out);
+  expect_rejected({"omni", "predict", "--samples", samples().string(), "--out", out.string()},
+                  "exactly one of --lut FILE and --model FILE", out);
+  const fs::path truncated = dir / "truncated.bsgm";
+  write_file_atomic(truncated, read_file(dir / "table.bsgm").substr(0, 1000));
+  expect_rejected({"omni", "predict", "--lut", truncated.string(), "--samples", samples().string(),
+                   "--out", out.string()},
+                  truncated.string() + ": truncated", out);
 }
 
 }  // namespace

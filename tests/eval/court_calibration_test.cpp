@@ -30,7 +30,8 @@ double rotation_error_deg(const Rigid3& a, const Rigid3& b) {
 }
 
 // The documented example site (the simulator's court and reference balls) and the rendered image
-// alone give every camera's pose: within a few centimetres and a tenth of a degree.
+// alone give every camera's pose: within 3 cm and 0.06 degrees (issue 4 asks for a few cm and
+// 0.2 degrees).
 TEST(CourtCalibration, RenderedViewsGiveEveryCameraItsPose) {
   const Site site = read_site(kExampleSite);
   double worst_position = 0.0, worst_rotation = 0.0, worst_rms = 0.0;
@@ -47,8 +48,8 @@ TEST(CourtCalibration, RenderedViewsGiveEveryCameraItsPose) {
           (report.pose.camera_from_field.inverse().translation - truth.center_in_field()).norm();
       const double rotation_error =
           rotation_error_deg(report.pose.camera_from_field, truth.camera_from_field);
-      EXPECT_LT(position_error, 0.05);
-      EXPECT_LT(rotation_error, 0.1);
+      EXPECT_LT(position_error, 0.03);
+      EXPECT_LT(rotation_error, 0.06);
       EXPECT_GE(report.pose.matches.size(), 6u);
       EXPECT_LT(report.pose.rms_px, 0.3);
       ASSERT_TRUE(report.calibration.extrinsics.has_value());

@@ -36,6 +36,7 @@ class BallsightGroundModel final : public OmniGroundModel {
   const OmniModelDomain& domain() const override { return domain_; }
   GroundPrediction predict(double theta_deg, double radius_px) const override;
   nlohmann::json parameters_json() const override;
+  std::optional<double> viewpoint_height_cm() const override { return params_.height_cm; }
 
   const CatadioptricFloorParams& params() const { return params_; }
 

@@ -1,7 +1,6 @@
 #include "ballsight/calib/chessboard_images.hpp"
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {
@@ -19,13 +18,12 @@ ChessboardImages find_chessboards_in_images(const std::vector<std::filesystem::p
   pattern.validate();
   ChessboardImages session;
   for (const std::filesystem::path& file : files) {
-    const cv::Mat grey = cv::imread(file.string(), cv::IMREAD_GRAYSCALE);
-    require(!grey.empty(), file.string(), "cannot read the image");
-    if (session.image_size.empty()) session.image_size = grey.size();
-    require(grey.size() == session.image_size, file.string(),
-            "image is " + size_text(grey.size()) + ", the first image (" + files.front().string() +
+    const cv::Mat image = read_image_bgr(file);
+    if (session.image_size.empty()) session.image_size = image.size();
+    require(image.size() == session.image_size, file.string(),
+            "image is " + size_text(image.size()) + ", the first image (" + files.front().string() +
                 ") is " + size_text(session.image_size) + ": every view must come from one camera");
-    if (auto corners = find_chessboard_corners(grey, pattern)) {
+    if (auto corners = find_chessboard_corners(image, pattern)) {
       session.found.push_back({file.string(), std::move(*corners)});
     } else {
       session.not_found.push_back(file.string());

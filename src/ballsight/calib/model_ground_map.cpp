@@ -16,6 +16,7 @@ GroundMapInfo ground_map_info(const OmniGroundModel& model) {
   info.min_radius_px = domain.valid_radius.min_px;
   info.max_radius_px = domain.valid_radius.max_px;
   info.method = std::string(model.name());
+  info.viewpoint_height_cm = model.viewpoint_height_cm().value_or(0.0);
   return info;
 }
 

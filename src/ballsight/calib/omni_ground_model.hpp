@@ -74,6 +74,8 @@ class OmniGroundModel {
   virtual GroundPrediction predict(double theta_deg, double radius_px) const = 0;
   /// The fitted parameters (without domain), as model_json stores them.
   virtual nlohmann::json parameters_json() const = 0;
+  /// Height of the camera's effective viewpoint above the floor, when the model knows it.
+  virtual std::optional<double> viewpoint_height_cm() const { return std::nullopt; }
 
   /// Pixel -> ground point in the robot frame (x forward, y left), cm; nullopt out of range.
   std::optional<Vec2> robot_point_cm(const Vec2& pixel) const;

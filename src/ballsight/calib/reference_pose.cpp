@@ -7,6 +7,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/text_format.hpp"
 
 namespace ballsight {
 
@@ -221,7 +222,7 @@ std::vector<std::size_t> unmatched(std::size_t count, const std::vector<Referenc
                    std::to_string(references.size()) + " (" + names(references, found) +
                    "), at least " + std::to_string(options.min_references) +
                    " needed; missing: " + names(references, unmatched(references.size(), matches)) +
-                   (hinted ? " (poses farther than " + std::to_string(options.hint_tolerance_m) +
+                   (hinted ? " (poses farther than " + fixed(options.hint_tolerance_m, 1) +
                                  " m from the camera's position hint were not considered)"
                            : ""));
 }
@@ -258,11 +259,11 @@ ReferencePose estimate_reference_pose(const PinholeCamera& camera,
     if (h.matches.size() == best.matches.size() &&
         h.squared_error <= 4.0 * best.squared_error + 1e-9 &&
         (h.center - best.center).norm() > options.ambiguity_m) {
-      throw InputError(
-          "reference balls: " + std::to_string(best.matches.size()) +
-          " match equally well with the camera near (" + std::to_string(best.center.x()) + ", " +
-          std::to_string(best.center.y()) + ") and near (" + std::to_string(h.center.x()) + ", " +
-          std::to_string(h.center.y()) + ") m: give the camera's rough position (position_hint_m)");
+      throw InputError("reference balls: " + std::to_string(best.matches.size()) +
+                       " match equally well with the camera near (" + fixed(best.center.x(), 1) +
+                       ", " + fixed(best.center.y(), 1) + ") and near (" + fixed(h.center.x(), 1) +
+                       ", " + fixed(h.center.y(), 1) +
+                       ") m: give the camera's rough position (position_hint_m)");
     }
   }
 

@@ -81,7 +81,9 @@ std::vector<OmniBlob> OmniBlobFinder::find(const cv::Mat& bgr, const ColorClassT
     blob.bbox = grown.bbox;
     blob.centroid_polar = image_polar_from_pixel(blob.centroid_px, options_.image_center);
     measure_radial_extent(members, width, options_.image_center, blob);
-    blobs.push_back(blob);
+    blob.pixels.reserve(members.size());
+    for (int index : members) blob.pixels.emplace_back(index % width, index / width);
+    blobs.push_back(std::move(blob));
   }
   std::sort(blobs.begin(), blobs.end(),
             [](const OmniBlob& a, const OmniBlob& b) { return a.area_px > b.area_px; });

@@ -31,6 +31,7 @@ struct OmniBlob {
   Polar centroid_polar;          // image polar coordinates of the centroid (Algorithm 2)
   double inner_radius_px = 0.0;  // silhouette extent along the centroid's ray
   double outer_radius_px = 0.0;
+  std::vector<cv::Point> pixels;  // every pixel of the blob
 };
 
 class OmniBlobFinder {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <opencv2/imgcodecs.hpp>
 
+#include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {
@@ -86,11 +87,15 @@ std::vector<CameraPoseReport> calibrate_site(const Site& site,
   std::vector<CameraPoseReport> reports;
   for (const SiteCamera& camera : site.cameras) {
     const fs::path image_file = first_source_image(camera);
-    const cv::Mat image = cv::imread(image_file.string(), cv::IMREAD_COLOR);
-    require(!image.empty(), image_file.string(),
-            "cannot read the image (camera '" + camera.name + "')");
-    reports.push_back(calibrate_site_camera(site, camera, image, image_file,
-                                            read_camera_file(camera.calibration_file), options));
+    cv::Mat image;
+    CameraCalibration calibration;
+    try {
+      image = read_image_bgr(image_file);
+      calibration = read_camera_file(camera.calibration_file);
+    } catch (const InputError& e) {
+      throw InputError("camera '" + camera.name + "': " + e.what());
+    }
+    reports.push_back(calibrate_site_camera(site, camera, image, image_file, calibration, options));
   }
   for (const CameraPoseReport& report : reports) {
     write_camera_file(report.calibration_file, report.calibration);

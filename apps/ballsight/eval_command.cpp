@@ -1,0 +1,42 @@
+// `ballsight eval ...`: the experiments that measure ballsight against the papers' methods.
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "ballsight/camera/image_file.hpp"
+#include "ballsight/eval/omni_experiment.hpp"
+#include "commands.hpp"
+
+namespace ballsight::app {
+
+void add_eval_commands(CLI::App& eval) {
+  struct Args {
+    OmniExperimentOptions options;
+    bool json = false;
+    std::optional<std::string> plot;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* omni = eval.add_subcommand(
+      "omni",
+      "The omnivision paper's experiment (Section V) on the simulator: calibrate poly, paper-mlp "
+      "and ballsight from clicked markers on a misaligned camera, locate a ball at (400, 600) cm "
+      "from 120, 200 and 285 cm in 30 degree turns; mean error and std of x and y per distance, "
+      "beside the true mapping (oracle)");
+  omni->add_option("--seed", args->options.seed, "Seed (click and sensor noise)")
+      ->capture_default_str();
+  omni->add_option("--tilt-deg", args->options.tilt_deg, "Camera axis tilt, 0..10 deg")
+      ->capture_default_str();
+  omni->add_option("--click-noise-px", args->options.click_noise_px, "Marker click noise, px")
+      ->capture_default_str();
+  omni->add_flag("--json", args->json, "Print JSON instead of a table");
+  omni->add_option("--plot", args->plot, "Also write a PNG of every estimate around the ball")
+      ->type_name("PNG");
+  omni->callback([args] {
+    const OmniExperimentResult result = run_omni_experiment(args->options);
+    if (args->plot) write_png_atomic(*args->plot, plot_omni_experiment(result));
+    std::cout << (args->json ? omni_experiment_json(result).dump(2) + "\n"
+                             : omni_experiment_table(result));
+  });
+}
+
+}  // namespace ballsight::app
