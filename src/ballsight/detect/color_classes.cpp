@@ -44,7 +44,8 @@ cv::Mat cell_centres_bgr() {
 
 }  // namespace
 
-ColorClassTable::ColorClassTable(const std::vector<ColorClassRule>& rules) : ColorClassTable() {
+ColorClassTable::ColorClassTable(const std::vector<ColorClassRule>& rules)
+    : table_(std::size_t{1} << (3 * kBits), 0) {
   for (const ColorClassRule& rule : rules) rule.range.validate("colour class");
   // Classify the centre of every quantisation cell with OpenCV's own YUV conversion, so the
   // table agrees with segment_yuv_inrange except within half a cell of a range boundary.
@@ -63,7 +64,7 @@ ColorClassTable::ColorClassTable(const std::vector<ColorClassRule>& rules) : Col
 
 ColorClassTable ColorClassTable::from_classifier(
     const std::function<ColorClassMask(const cv::Vec3b& bgr)>& classify) {
-  ColorClassTable table;
+  ColorClassTable table(std::vector<ColorClassRule>{});
   const cv::Mat bgr = cell_centres_bgr();
   for (int row = 0; row < bgr.rows; ++row)
     for (int r = 0; r < kCells; ++r)

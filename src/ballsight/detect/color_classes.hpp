@@ -48,8 +48,6 @@ class ColorClassTable {
   }
 
  private:
-  ColorClassTable() : table_(std::size_t{1} << (3 * kBits), 0) {}
-
   std::vector<ColorClassMask> table_;
 };
 

@@ -1,0 +1,173 @@
+#include "ballsight/detect/court_detector.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <opencv2/imgproc.hpp>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/sim/court_scenario.hpp"
+#include "court_scene_support.hpp"
+#include "sim/court_test_support.hpp"
+
+namespace ballsight {
+namespace {
+
+using test::Disc;
+
+std::vector<PixelDetection> balls_only(std::vector<PixelDetection> detections) {
+  std::erase_if(detections, [](const PixelDetection& d) { return d.object != ObjectClass::ball; });
+  return detections;
+}
+
+// One ball anywhere in the image, at any sub-pixel phase: its centre to a few hundredths of a
+// pixel.
+TEST(CourtDetector, SingleBallCentreIsSubPixel) {
+  CourtDetector detector(test::overhead_camera());
+  const double r = test::overhead_ball_radius_px();
+  double worst = 0.0;
+  for (int i = 0; i < 12; ++i) {
+    const Vec2 center(100.0 + 37.3 * i + 0.13 * i, 80.0 + 29.1 * i + 0.07 * i);
+    SCOPED_TRACE("ball at " + std::to_string(center.x()) + ", " + std::to_string(center.y()));
+    const auto found =
+        balls_only(detector.detect(test::draw_discs({{center, r, test::kBallYellow}}, 2.0, i)));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].split_count, 1);
+    EXPECT_NEAR(found[0].radius_px, r, 0.5);
+    worst = std::max(worst, (found[0].center_px - center).norm());
+  }
+  EXPECT_LT(worst, 0.1);
+}
+
+// Two balls touching (2 mm apart) become one blob; it is split, each centre within a tenth of a
+// pixel, whatever the direction of the pair.
+TEST(CourtDetector, TouchingBallsAreSplit) {
+  CourtDetector detector(test::overhead_camera());
+  const double r = test::overhead_ball_radius_px();
+  const double gap_px = 2.0 * r * (1.0 + 0.002 / 0.067);
+  for (int k = 0; k < 6; ++k) {
+    const double angle = 0.5 * k;
+    SCOPED_TRACE("pair direction " + std::to_string(angle) + " rad");
+    const Vec2 a(320.3, 240.6);
+    const Vec2 b = a + gap_px * Vec2(std::cos(angle), std::sin(angle));
+    const auto found = balls_only(detector.detect(
+        test::draw_discs({{a, r, test::kBallYellow}, {b, r, test::kBallYellow}}, 2.0, k)));
+    ASSERT_EQ(found.size(), 2u);
+    for (const Vec2& truth : {a, b}) {
+      const auto nearest =
+          std::min_element(found.begin(), found.end(), [&](const auto& p, const auto& q) {
+            return (p.center_px - truth).norm() < (q.center_px - truth).norm();
+          });
+      EXPECT_LT((nearest->center_px - truth).norm(), 0.15);
+      EXPECT_EQ(nearest->split_count, 2);
+    }
+  }
+}
+
+// Things of the ball's colour that are not balls: a painted line and a blob ten balls large.
+TEST(CourtDetector, RejectsShapesThatAreNotBalls) {
+  CourtDetector detector(test::overhead_camera());
+  cv::Mat image = test::draw_discs({}, 2.0);
+  cv::line(image, {100, 100}, {400, 130}, cv::Scalar(45, 250, 225), 2, cv::LINE_AA);
+  cv::circle(image, {500, 350}, 15, cv::Scalar(45, 250, 225), cv::FILLED, cv::LINE_AA);
+  EXPECT_TRUE(balls_only(detector.detect(image)).empty());
+}
+
+// An orange reference ball is not a tennis ball, though its rim on green looks yellowish.
+TEST(CourtDetector, RejectsOrangeBalls) {
+  CourtDetector detector(test::overhead_camera());
+  const double r = test::overhead_ball_radius_px();
+  for (double radius : {0.7 * r, 0.4 * r, 0.25 * r}) {
+    SCOPED_TRACE("orange ball of radius " + std::to_string(radius) + " px");
+    const cv::Mat image = test::draw_discs({{{200.4, 200.2}, radius, {20, 100, 255}}}, 2.0);
+    EXPECT_TRUE(balls_only(detector.detect(image)).empty());
+  }
+}
+
+TEST(CourtDetector, FindsBothMarkersAndNamesThem) {
+  CourtDetector detector(test::overhead_camera());
+  // Markers (4.5 cm) 34.5 cm high: a little larger than a ball on the floor.
+  const double r = 800.0 * 0.045 / (6.0 - 0.345);
+  const auto found = detector.detect(test::draw_discs(
+      {{{300.2, 200.7}, r, {180, 80, 255}}, {{300.2, 260.3}, r, {220, 80, 30}}}, 2.0));
+  ASSERT_EQ(found.size(), 2u);
+  for (const PixelDetection& d : found) {
+    const Vec2 truth =
+        d.object == ObjectClass::robot_front_marker ? Vec2(300.2, 200.7) : Vec2(300.2, 260.3);
+    EXPECT_NE(d.object, ObjectClass::ball);
+    EXPECT_LT((d.center_px - truth).norm(), 0.1);
+  }
+}
+
+TEST(CourtDetector, ImageOfAnotherSizeThanTheCalibrationIsAnError) {
+  CourtDetector detector(test::overhead_camera());
+  try {
+    detector.detect(cv::Mat3b(240, 320, cv::Vec3b(88, 128, 70)));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("320x240"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("640x480"), std::string::npos) << e.what();
+  }
+}
+
+// The simulated court, four cameras, three noisy shadowed scenes: every fully visible ball of at
+// least 0.8 px radius that stands alone is found, to about a tenth of a pixel of its analytic
+// silhouette centroid, and fewer than 3% of the detections (parts of clusters split too often)
+// are not near a true ball.
+TEST(CourtDetector, FindsTheSimulatedBalls) {
+  const auto& court = sim::testing::shared_court();
+  int visible = 0, found = 0, detections = 0, unmatched = 0;
+  std::vector<double> errors;
+  for (std::uint64_t seed = 11; seed <= 13; ++seed) {
+    const sim::CourtScene scene = sim::make_court_scene(court.rig.court, {}, seed);
+    const auto rendered = sim::testing::render_in_all_cameras(scene, seed);
+    for (std::size_t c = 0; c < court.rig.cameras.size(); ++c) {
+      SCOPED_TRACE("scene seed " + std::to_string(seed) + " camera " + std::to_string(c));
+      const sim::CourtCamera& camera = court.rig.cameras[c];
+      CourtDetector detector(FieldCamera{camera.camera, camera.camera_from_field});
+      const auto balls = balls_only(detector.detect(rendered.renders[c].bgr));
+      detections += static_cast<int>(balls.size());
+      std::vector<Vec2> truth_px;
+      for (const sim::SphereTruth& t : rendered.truth)
+        if (t.sphere.kind == sim::ObjectKind::tennis_ball && t.views[c].silhouette_centroid_px)
+          truth_px.push_back(*t.views[c].silhouette_centroid_px);
+      for (const PixelDetection& d : balls) {
+        const bool near = std::any_of(truth_px.begin(), truth_px.end(), [&](const Vec2& t) {
+          return (t - d.center_px).norm() < std::max(1.5, 1.5 * d.radius_px);
+        });
+        unmatched += !near;
+      }
+      for (const sim::SphereTruth& t : rendered.truth) {
+        const sim::SphereViewTruth& v = t.views[c];
+        if (t.sphere.kind != sim::ObjectKind::tennis_ball || v.visible_fraction < 0.999) continue;
+        const double r = camera.camera.params().fx * t.sphere.radius_m /
+                         (camera.center_in_field() - t.sphere.center_in_field).norm();
+        const bool alone = std::all_of(truth_px.begin(), truth_px.end(), [&](const Vec2& o) {
+          return o == *v.silhouette_centroid_px ||
+                 (o - *v.silhouette_centroid_px).norm() > 4 * r + 2;
+        });
+        if (r < 0.8 || !alone) continue;
+        ++visible;
+        double best = 1e9;
+        for (const PixelDetection& d : balls)
+          best = std::min(best, (d.center_px - *v.silhouette_centroid_px).norm());
+        if (best < std::max(1.0, r)) {
+          ++found;
+          errors.push_back(best);
+        }
+      }
+    }
+  }
+  std::sort(errors.begin(), errors.end());
+  const double median = errors[errors.size() / 2];
+  std::cout << found << " of " << visible << " lone visible balls found, median centre error "
+            << median << " px; " << unmatched << " of " << detections
+            << " detections not near a true ball\n";
+  EXPECT_EQ(found, visible);
+  EXPECT_LT(median, 0.15);
+  EXPECT_LT(unmatched, detections * 3 / 100);
+}
+
+}  // namespace
+}  // namespace ballsight
