@@ -81,26 +81,38 @@ class GroupFitter {
     return r.dot(information_[o] * r);
   }
 
-  // Apart in the image of observation o's camera by more than two ball images and a pixel: two
-  // such balls cannot make one blob.
+  // Image distance (pixels) in observation o's camera between two plane points.
+  double image_distance(size_t o, const Vec2& a, const Vec2& b) const {
+    return (observation(o).plane_per_pixel.inverse() * (a - b)).norm();
+  }
+  double ball_radius_px(size_t o) const {
+    return radius_ / std::sqrt(std::abs(observation(o).plane_per_pixel.determinant()));
+  }
+  // Two balls farther apart in the image than two ball images and a pixel cannot make one blob.
   bool apart_in_image(size_t o, const Vec2& a, const Vec2& b) const {
-    const Eigen::Matrix2d& j = observation(o).plane_per_pixel;
-    const double radius_px = radius_ / std::sqrt(std::abs(j.determinant()));
-    return (j.inverse() * (a - b)).norm() > 2.0 * radius_px + 1.0;
+    return image_distance(o, a, b) > 2.0 * ball_radius_px(o) + 1.0;
+  }
+  // Ball x may be (part of) what observation o saw: within its error gate, or inside its blob.
+  bool may_cover(size_t o, const Vec2& x) const {
+    return d2(o, x) <= options_.assign_gate_chi2 ||
+           image_distance(o, observation(o).position_m, x) <=
+               std::max(observation(o).radius_px, ball_radius_px(o)) + 0.5;
   }
 
-  // In every camera each ball goes to its nearest observation within the gate (none: that camera
-  // did not see it); an observation covers several balls only if they could make one blob there,
-  // else it keeps the nearest of them.
+  // In every camera each ball goes to the nearest observation (in the image) that may cover it
+  // (none: that camera did not see it); an observation covers several balls only if they could
+  // make one blob there, else it keeps the nearest of them.
   std::vector<std::vector<int>> assign(const std::vector<Vec2>& balls) const {
     std::vector<std::vector<int>> covered(members_.size());
     for (size_t i = 0; i < balls.size(); ++i) {
       for (int camera : cameras_) {
         size_t best = members_.size();
-        for (size_t o = 0; o < members_.size(); ++o)
-          if (observation(o).camera == camera && d2(o, balls[i]) <= options_.assign_gate_chi2 &&
-              (best == members_.size() || d2(o, balls[i]) < d2(best, balls[i])))
-            best = o;
+        double best_px = 0.0;
+        for (size_t o = 0; o < members_.size(); ++o) {
+          if (observation(o).camera != camera || !may_cover(o, balls[i])) continue;
+          const double px = image_distance(o, observation(o).position_m, balls[i]);
+          if (best == members_.size() || px < best_px) best = o, best_px = px;
+        }
         if (best < members_.size()) covered[best].push_back(static_cast<int>(i));
       }
     }

@@ -38,6 +38,7 @@ std::optional<FieldObservation> observe_on_plane(const FieldCamera& camera,
   out.range_m = (*center - camera.center_in_field()).norm();
   out.objects = detection.blob_objects / detection.split_count;
   out.plane_per_pixel = jacobian;
+  out.radius_px = detection.radius_px;
   return out;
 }
 
