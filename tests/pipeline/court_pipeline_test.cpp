@@ -1,0 +1,52 @@
+#include "ballsight/pipeline/court_pipeline.hpp"
+
+#include <gtest/gtest.h>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+namespace {
+
+std::vector<FieldCamera> two_cameras() {
+  PinholeParams p;
+  p.width = 320;
+  p.height = 240;
+  p.fx = p.fy = 300.0;
+  p.cx = 159.5;
+  p.cy = 119.5;
+  Rigid3 looking_down;
+  looking_down.rotation << 1, 0, 0, 0, -1, 0, 0, 0, -1;
+  looking_down.translation = Vec3(0.0, 0.0, 6.0);
+  return {{PinholeCamera(p), looking_down}, {PinholeCamera(p), looking_down}};
+}
+
+// A frame of another size than its camera's calibration is not used, and the result says why;
+// the other camera's frame is used. Both methods.
+TEST(CourtPipeline, FrameOfTheWrongSizeIsReportedNotUsed) {
+  const cv::Mat good(240, 320, CV_8UC3, cv::Scalar(70, 128, 88));
+  const cv::Mat wrong(480, 640, CV_8UC3, cv::Scalar(70, 128, 88));
+  for (auto& pipeline :
+       {make_seed_pipeline(two_cameras()), make_ballsight_pipeline(two_cameras())}) {
+    SCOPED_TRACE(court_method_name(pipeline->method()));
+    const FrameSetResult result = pipeline->process({good, wrong});
+    EXPECT_TRUE(result.camera_errors[0].empty());
+    EXPECT_NE(result.camera_errors[1].find("640x480"), std::string::npos)
+        << result.camera_errors[1];
+    EXPECT_NE(result.camera_errors[1].find("320x240"), std::string::npos)
+        << result.camera_errors[1];
+    EXPECT_TRUE(result.detections[0].has_value());
+    EXPECT_FALSE(result.detections[1].has_value());
+    EXPECT_EQ(result.world.cameras, (std::vector<int>{0}));
+    const FrameSetResult missing = pipeline->process({cv::Mat(), good});
+    EXPECT_EQ(missing.camera_errors[0], "no frame");
+    EXPECT_EQ(missing.world.cameras, (std::vector<int>{1}));
+  }
+}
+
+TEST(CourtPipeline, WrongNumberOfFramesIsAnError) {
+  const auto pipeline = make_ballsight_pipeline(two_cameras());
+  EXPECT_THROW(pipeline->process({cv::Mat()}), InputError);
+}
+
+}  // namespace
+}  // namespace ballsight
