@@ -72,6 +72,8 @@ void CourtDetectorOptions::validate() const {
   require(size_cell_px >= 1 && size_cell_px <= 256, "court detector size_cell_px",
           "must be within [1, 256]");
   require(max_objects_in_blob >= 1.0, "court detector max_objects_in_blob", "must be at least 1");
+  require(split_rounding >= 0.0 && split_rounding < 1.0, "court detector split_rounding",
+          "must be within [0, 1)");
   require(saturation > 0.0 && saturation <= 1.0, "court detector saturation",
           "must be within (0, 1]");
   require(min_thickness >= 0.0 && min_thickness < 1.0, "court detector min_thickness",
@@ -103,8 +105,7 @@ constexpr double kShadedFill = 0.75;
 // Apparent growth of a small disc by pixel footprint and optics (fits the simulator's balls of
 // 0.8-3 px radius).
 constexpr double kBlurPx = 0.15;
-// A blob is split when it holds this many objects' evidence or is this elongated.
-constexpr double kSplitMass = 1.5;
+// A blob is split when it is this elongated.
 constexpr double kSplitElongation = 1.8;
 
 }  // namespace
@@ -197,9 +198,9 @@ void CourtDetector::measure(const cv::Mat& bgr, const GrownBlob& blob, size_t sp
   // along the row for large discs, ~2-3x for discs of a pixel). Thresholds measured on the
   // simulator's clusters (docs/court-eval.md).
   int count = 1;
-  if (objects_by_mass >= kSplitMass || elongation >= kSplitElongation)
-    count = std::max(static_cast<int>(std::lround(objects_by_mass)),
-                     elongation >= kSplitElongation ? 2 : 1);
+  const int by_mass = static_cast<int>(std::floor(objects_by_mass + options_.split_rounding));
+  if (by_mass >= 2 || elongation >= kSplitElongation)
+    count = std::max(by_mass, elongation >= kSplitElongation ? 2 : 1);
   count = std::clamp(count, 1, spec.max_split);
 
   // Centres from the coverage, not the brightness: weights saturate at a share of the peak, so

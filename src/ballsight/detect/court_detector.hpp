@@ -65,6 +65,9 @@ struct CourtDetectorOptions {
   double max_objects_in_blob = 8.0;  // blobs holding more (by evidence) are not objects
   double min_thickness = 0.35;       // minor axis / expected, below: a line, not an object
   double saturation = 0.5;           // centre weights saturate at this share of the blob peak
+  /// A blob of m objects' evidence is split into floor(m + split_rounding) parts (0.5: rounding;
+  /// more: splits sooner, the world model removes parts the other cameras do not need).
+  double split_rounding = 0.5;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

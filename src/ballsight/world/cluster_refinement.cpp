@@ -24,6 +24,8 @@ void ClusterOptions::validate() const {
 
 namespace {
 
+constexpr double kOverlapSigmaM = 0.003;  // stiffness of the no-overlap constraint
+
 // One hypothesis: ball positions and, per observation, the balls it covers.
 struct Fit {
   std::vector<Vec2> balls;
@@ -154,6 +156,23 @@ class GroupFitter {
       for (int i : cov) {
         b.segment<2>(2 * i) += w * observation(o).position_m / k;
         for (int j : cov) h.block<2, 2>(2 * i, 2 * j) += w / (k * k);
+      }
+    }
+    // Balls cannot overlap: a pair closer than two radii is pushed apart to touching (a stiff
+    // linearised constraint on their distance, active only where violated).
+    const double touching = 2.0 * radius_;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      for (Eigen::Index j = i + 1; j < n; ++j) {
+        const Vec2 d = f.balls[static_cast<size_t>(i)] - f.balls[static_cast<size_t>(j)];
+        if (d.norm() >= touching) continue;
+        const Vec2 u = d.norm() > 1e-9 ? Vec2(d.normalized()) : Vec2::UnitX();
+        const Eigen::Matrix2d w = u * u.transpose() / (kOverlapSigmaM * kOverlapSigmaM);
+        h.block<2, 2>(2 * i, 2 * i) += w;
+        h.block<2, 2>(2 * j, 2 * j) += w;
+        h.block<2, 2>(2 * i, 2 * j) -= w;
+        h.block<2, 2>(2 * j, 2 * i) -= w;
+        b.segment<2>(2 * i) += w * u * touching;
+        b.segment<2>(2 * j) -= w * u * touching;
       }
     }
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(h);
