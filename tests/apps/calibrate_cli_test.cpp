@@ -20,13 +20,6 @@ namespace fs = std::filesystem;
 const fs::path kOpenCVSamples = "/usr/share/doc/opencv-doc/examples/data";
 const fs::path kExampleSite = fs::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml";
 
-void expect_one_line_error(const CliResult& r, const std::string& expected) {
-  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
-  EXPECT_EQ(line_count(r.stderr_text), 1) << r.stderr_text;
-  EXPECT_EQ(r.stderr_text.rfind("ballsight: error: ", 0), 0u) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find(expected), std::string::npos) << r.stderr_text;
-}
-
 TEST(CalibrateCameraCli, OpenCVsSamplePhotos) {
   if (!fs::exists(kOpenCVSamples / "left01.jpg")) {
     GTEST_SKIP() << kOpenCVSamples << " absent: install Debian's opencv-doc (scripts/setup does)";

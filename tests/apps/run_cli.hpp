@@ -1,6 +1,7 @@
 #pragma once
 // Runs the built `ballsight` program with arguments and captures its exit status and output.
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -55,6 +56,14 @@ inline int line_count(const std::string& text) {
   for (char c : text) lines += (c == '\n');
   if (!text.empty() && text.back() != '\n') ++lines;
   return lines;
+}
+
+/// A bad input: exit status 2 and one line "ballsight: error: ..." on stderr containing `expected`.
+inline void expect_one_line_error(const CliResult& r, const std::string& expected) {
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_EQ(line_count(r.stderr_text), 1) << r.stderr_text;
+  EXPECT_EQ(r.stderr_text.rfind("ballsight: error: ", 0), 0u) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find(expected), std::string::npos) << r.stderr_text;
 }
 
 }  // namespace ballsight::test

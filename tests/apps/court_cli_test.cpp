@@ -1,0 +1,173 @@
+// `court run` and `eval court` through the command line: a simulated court with its cameras'
+// true calibration (court calibrate is tested in calibrate_cli_test.cpp), bad frames and a camera
+// that cannot be opened.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+
+#include "apps/run_cli.hpp"
+#include "ballsight/camera/camera_file.hpp"
+#include "ballsight/core/file_io.hpp"
+#include "temp_dir.hpp"
+
+namespace ballsight::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kExampleSite = fs::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml";
+const char* const kNames[] = {"ne", "se", "sw", "nw"};
+
+// Two simulated scenes, each camera's frames in its own folder, its true calibration in camC.yml,
+// and the example site with folder sources.
+fs::path simulated_site(const TempDir& temp) {
+  const fs::path dir = temp / "site";
+  const CliResult sim =
+      run_cli({"sim", "court", "--out", dir.string(), "--seed", "4", "--scenes", "2"});
+  EXPECT_EQ(sim.exit_code, 0) << sim.stderr_text;
+  const nlohmann::json truth = nlohmann::json::parse(read_file(dir / "court_0000.json"));
+  for (int c = 0; c < 4; ++c) {
+    const std::string cam = "cam" + std::to_string(c);
+    fs::create_directories(dir / cam);
+    for (int k = 0; k < 2; ++k) {
+      const std::string image = "court_000" + std::to_string(k) + "_" + cam + ".png";
+      fs::rename(dir / image, dir / cam / image);
+    }
+    const nlohmann::json& t = truth["cameras"][c];
+    CameraCalibration calibration;
+    PinholeParams& p = calibration.intrinsics;
+    p.width = t["width"];
+    p.height = t["height"];
+    p.fx = t["fx"];
+    p.fy = t["fy"];
+    p.cx = t["cx"];
+    p.cy = t["cy"];
+    for (size_t i = 0; i < 8; ++i) p.distortion[i] = t["distortion"][i];
+    const auto& pose = t["camera_from_field"];
+    calibration.extrinsics = CameraExtrinsics{
+        Rigid3::from_rvec_tvec(Vec3(pose["rvec"][0], pose["rvec"][1], pose["rvec"][2]),
+                               Vec3(pose["tvec"][0], pose["tvec"][1], pose["tvec"][2])),
+        0.1, 12};
+    write_camera_file(dir / (cam + ".yml"), calibration);
+  }
+  std::string site = read_file(kExampleSite);
+  for (int c = 0; c < 4; ++c) {
+    const std::string from = "{file: court_0000_cam" + std::to_string(c) + ".png}";
+    site.replace(site.find(from), from.size(), "{folder: cam" + std::to_string(c) + "}");
+  }
+  write_file_atomic(dir / "site.yml", site);
+  return dir / "site.yml";
+}
+
+std::vector<nlohmann::json> json_lines(const std::string& text) {
+  std::vector<nlohmann::json> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(nlohmann::json::parse(line));
+  return out;
+}
+
+TEST(CourtRunCli, WorldModelPerFrameSet) {
+  const TempDir temp;
+  const fs::path site = simulated_site(temp);
+  const CliResult r = run_cli({"court", "run", "--site", site.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto sets = json_lines(r.stdout_text);
+  ASSERT_EQ(sets.size(), 2u) << r.stdout_text;
+  for (size_t k = 0; k < sets.size(); ++k) {
+    SCOPED_TRACE("frame set " + std::to_string(k));
+    const nlohmann::json& set = sets[k];
+    const nlohmann::json truth = nlohmann::json::parse(
+        read_file(site.parent_path() / ("court_000" + std::to_string(k) + ".json")));
+    int true_balls = 0;
+    for (const auto& o : truth["objects"]) true_balls += o["kind"] == "tennis_ball";
+    EXPECT_EQ(set["frame_set"], k);
+    EXPECT_EQ(set["cameras"], nlohmann::json({"ne", "se", "sw", "nw"}));
+    EXPECT_NEAR(static_cast<double>(set["balls"].size()), true_balls, 0.05 * true_balls + 1);
+    EXPECT_FALSE(set["sites"].empty());
+    ASSERT_FALSE(set["robot"].is_null());
+    const auto& robot = truth["robot"]["position_m"];
+    EXPECT_NEAR(set["robot"]["x_m"].get<double>(), robot[0].get<double>(), 0.02);
+    EXPECT_NEAR(set["robot"]["y_m"].get<double>(), robot[1].get<double>(), 0.02);
+    for (const char* name : kNames) {
+      EXPECT_EQ(set["frames"][name]["sequence"], k);
+      EXPECT_TRUE(set["frames"][name]["used"].get<bool>());
+    }
+  }
+  const CliResult text = run_cli({"court", "run", "--site", site.string(), "--frames", "1"});
+  ASSERT_EQ(text.exit_code, 0) << text.stderr_text;
+  EXPECT_EQ(text.stdout_text.rfind("frame set 0: cameras ne,se,sw,nw; ", 0), 0u)
+      << text.stdout_text;
+  EXPECT_EQ(text.stdout_text.find("frame set 1"), std::string::npos);
+}
+
+// A frame of another size than its calibration is not used (and said so), a camera that cannot be
+// opened is retried while the others go on; the world model names the cameras that contributed.
+TEST(CourtRunCli, BadFramesAndDeadCamerasAreReportedAndTheRestGoesOn) {
+  const TempDir temp;
+  const fs::path site = simulated_site(temp);
+  const fs::path dir = site.parent_path();
+  cv::imwrite((dir / "cam2" / "court_0000_cam2.png").string(),
+              cv::Mat(480, 640, CV_8UC3, cv::Scalar(70, 128, 88)));
+  std::string text = read_file(site);
+  const std::string nw = "{folder: cam3}";
+  text.replace(text.find(nw), nw.size(), "{device: 97}");
+  write_file_atomic(site, text);
+  const CliResult r = run_cli(
+      {"court", "run", "--site", site.string(), "--json", "--frames", "2", "--wait", "0.5"});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("camera sw: frame is 640x480 but the camera's calibration is for "
+                               "1280x720; frame not used"),
+            std::string::npos)
+      << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("camera nw: cannot open video device 97; retrying in"),
+            std::string::npos)
+      << r.stderr_text;
+  const auto sets = json_lines(r.stdout_text);
+  ASSERT_EQ(sets.size(), 2u) << r.stdout_text;
+  EXPECT_EQ(sets[0]["cameras"], nlohmann::json({"ne", "se"}));
+  EXPECT_FALSE(sets[0]["frames"]["sw"]["used"].get<bool>());
+  EXPECT_TRUE(sets[0]["frames"]["nw"].is_null());
+  EXPECT_EQ(sets[1]["cameras"], nlohmann::json({"ne", "se", "sw"}));
+  EXPECT_FALSE(sets[1]["balls"].empty());
+}
+
+TEST(CourtRunCli, BadSitesFailWithOneLine) {
+  const TempDir temp;
+  expect_one_line_error(run_cli({"court", "run", "--site", (temp / "none.yml").string()}),
+                        "none.yml");
+  const fs::path site = simulated_site(temp);
+  fs::remove(site.parent_path() / "cam1.yml");
+  expect_one_line_error(run_cli({"court", "run", "--site", site.string()}), "cam1.yml");
+  expect_one_line_error(run_cli({"court", "run", "--site", site.string(), "--frames", "-1"}),
+                        "--frames");
+}
+
+// `eval court`: both methods calibrated from rendered images, the JSON shape the lead's report
+// reads, and the pictures.
+TEST(EvalCourtCli, JsonShapeAndPictures) {
+  const TempDir temp;
+  const CliResult r = run_cli({"eval", "court", "--json", "--scenes", "1", "--seed", "3",
+                               "--plot-dir", (temp / "plots").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const nlohmann::json j = nlohmann::json::parse(r.stdout_text);
+  for (const char* method : {"seed", "ballsight"}) {
+    SCOPED_TRACE(method);
+    const nlohmann::json& m = j["methods"][method];
+    for (const char* key : {"recall", "precision", "ball_error_mean_cm", "ball_error_p95_cm",
+                            "robot_position_error_cm", "robot_heading_error_deg"})
+      EXPECT_TRUE(m[key].is_number()) << key;
+    EXPECT_TRUE(m["duplicates"].is_number_integer());
+  }
+  EXPECT_GT(j["methods"]["ballsight"]["recall"].get<double>(),
+            j["methods"]["seed"]["recall"].get<double>());
+  for (const char* picture : {"scene_0000_cam0.png", "scene_0000_cam3.png", "scene_0000_field.png"})
+    EXPECT_TRUE(fs::exists(temp / "plots" / picture)) << picture;
+  expect_one_line_error(run_cli({"eval", "court", "--scenes", "0"}), "scenes");
+}
+
+}  // namespace
+}  // namespace ballsight::test
