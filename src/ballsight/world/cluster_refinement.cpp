@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <numeric>
 
 #include "ballsight/core/error.hpp"
@@ -25,6 +26,23 @@ void ClusterOptions::validate() const {
 namespace {
 
 constexpr double kOverlapSigmaM = 0.003;  // stiffness of the no-overlap constraint
+
+// Area of the union of discs of one radius, by sampling a grid of a fifth of a pixel.
+double union_of_discs(const std::vector<Vec2>& centers, double radius) {
+  if (centers.empty()) return 0.0;
+  Vec2 lo = centers.front(), hi = centers.front();
+  for (const Vec2& c : centers) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  lo -= Vec2::Constant(radius);
+  hi += Vec2::Constant(radius);
+  constexpr double kStep = 0.2;
+  int inside = 0;
+  for (double y = lo.y() + 0.5 * kStep; y < hi.y(); y += kStep)
+    for (double x = lo.x() + 0.5 * kStep; x < hi.x(); x += kStep)
+      inside += std::any_of(centers.begin(), centers.end(), [&](const Vec2& c) {
+        return (Vec2(x, y) - c).squaredNorm() <= radius * radius;
+      });
+  return inside * kStep * kStep;
+}
 
 // One hypothesis: ball positions and, per observation, the balls it covers.
 struct Fit {
@@ -78,6 +96,16 @@ class GroupFitter {
     return all_[static_cast<size_t>(members_[o])];
   }
 
+  // For an observation no ball took: a part of a split blob may be half of a ball split in two,
+  // up to about half a radius off its centre.
+  double unexplained_d2(size_t o, const Vec2& x) const {
+    if (observation(o).split_count < 2) return d2(o, x);
+    const double half = 0.5 * radius_;
+    const Vec2 r = observation(o).position_m - x;
+    return r.dot(
+        (observation(o).covariance_m2 + half * half * Eigen::Matrix2d::Identity()).inverse() * r);
+  }
+
   double d2(size_t o, const Vec2& x) const {
     const Vec2 r = observation(o).position_m - x;
     return r.dot(information_[o] * r);
@@ -87,8 +115,11 @@ class GroupFitter {
   double image_distance(size_t o, const Vec2& a, const Vec2& b) const {
     return (observation(o).plane_per_pixel.inverse() * (a - b)).norm();
   }
+  // A ball's image radius near observation o: the radius over the plane's metres per pixel
+  // across the line of sight (the smaller singular value; along it the plane is stretched).
   double ball_radius_px(size_t o) const {
-    return radius_ / std::sqrt(std::abs(observation(o).plane_per_pixel.determinant()));
+    const Eigen::JacobiSVD<Eigen::Matrix2d> svd(observation(o).plane_per_pixel);
+    return radius_ / svd.singularValues()(1);
   }
   // Two balls farther apart in the image than two ball images and a pixel cannot make one blob.
   bool apart_in_image(size_t o, const Vec2& a, const Vec2& b) const {
@@ -182,12 +213,12 @@ class GroupFitter {
   }
 
   double chi2(const Fit& f) const {
-    double sum = 0.0;
+    double sum = size_chi2(f.balls);
     for (size_t o = 0; o < members_.size(); ++o) {
       const auto& cov = f.covered[o];
       if (cov.empty()) {  // unexplained: as far as its nearest ball, at most the gate
         double best = options_.assign_gate_chi2;
-        for (const Vec2& x : f.balls) best = std::min(best, d2(o, x));
+        for (const Vec2& x : f.balls) best = std::min(best, unexplained_d2(o, x));
         sum += best;
         continue;
       }
@@ -195,6 +226,34 @@ class GroupFitter {
       for (int i : cov) mean += f.balls[static_cast<size_t>(i)];
       const Vec2 r = observation(o).position_m - mean / static_cast<double>(cov.size());
       sum += r.dot(weight(o, cov.size()) * r);
+    }
+    return sum;
+  }
+
+  // How many balls the balls' images amount to in each camera (the area of the union of their
+  // discs, in discs: nearer balls hide farther ones) against what each camera measured (the
+  // observations' shares of their blobs), as a chi-square. The images are placed by the plane's
+  // local affine map at one of the camera's observations.
+  double size_chi2(const std::vector<Vec2>& balls) const {
+    double sum = 0.0;
+    for (int camera : cameras_) {
+      double measured = 0.0;
+      size_t reference = members_.size();
+      for (size_t o = 0; o < members_.size(); ++o) {
+        if (observation(o).camera != camera) continue;
+        measured += observation(o).objects;
+        if (reference == members_.size()) reference = o;
+      }
+      const Eigen::Matrix2d pixel_per_plane = observation(reference).plane_per_pixel.inverse();
+      const double disc = ball_radius_px(reference) + options_.blur_px;
+      std::vector<Vec2> centers;
+      for (const Vec2& x : balls) {
+        const Vec2 q = pixel_per_plane * (x - observation(reference).position_m);
+        if (q.norm() < 6.0 * disc + 6.0) centers.push_back(q);  // this blob's balls only
+      }
+      const double predicted = union_of_discs(centers, disc) / (std::numbers::pi * disc * disc);
+      const double sigma = options_.size_sigma_floor + options_.size_sigma_share * predicted;
+      sum += (measured - predicted) * (measured - predicted) / (sigma * sigma);
     }
     return sum;
   }
@@ -283,17 +342,6 @@ std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& ob
       continue;
     }
     const GroupFitter fitter(observations, members, ball_radius_m, options);
-    // How many balls the group's blobs amount to in the camera that sees most of it (the least
-    // hidden view); each observation carries its share of its blob.
-    std::map<int, double> objects_by_camera;
-    for (int o : members)
-      objects_by_camera[observations[static_cast<size_t>(o)].camera] +=
-          observations[static_cast<size_t>(o)].objects;
-    double objects = 0.0;
-    for (const auto& [camera, sum] : objects_by_camera) objects = std::max(objects, sum);
-    const int by_size =
-        1 + static_cast<int>(
-                std::floor(std::max(0.0, objects - options.count_offset) / options.count_step));
     Fit best = fitter.fit(start);
     // Fewer balls where the observations do not need them (a ball's observations fused apart).
     while (best.balls.size() > 1) {
@@ -301,7 +349,7 @@ std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& ob
       if (fewer.chi2 - best.chi2 >= options.min_chi2_keep) break;
       best = std::move(fewer);
     }
-    const int wanted = std::min<int>(by_size, static_cast<int>(start.size()) + options.max_added);
+    const int wanted = static_cast<int>(start.size()) + options.max_added;
     while (static_cast<int>(best.balls.size()) < wanted) {
       Fit more = fit_with_one_more(fitter, best, ball_radius_m);
       if (best.chi2 - more.chi2 < options.min_chi2_gain) break;

@@ -18,10 +18,11 @@ namespace ballsight {
 struct ClusterOptions {
   double link_distance_radii = 4.0;  // fused balls this close (in ball radii) form a group
   double merged_sigma_radii = 0.35;  // extra error of an observation per further ball it covers
-  // Balls a group's blobs amount to (most in one camera, m) -> count 1 + floor((m - offset) /
-  // step): measured on the simulator's clusters (mutual hiding makes n balls look like ~0.7 n).
-  double count_offset = 0.75;
-  double count_step = 0.72;
+  // The balls' images must add up to the size each camera measured: chi-square with an error of
+  // floor + share x balls (the detector's size of one ball spreads by ~15%).
+  double size_sigma_floor = 0.1;
+  double size_sigma_share = 0.12;
+  double blur_px = 0.15;               // the detector's blur of a ball's image (its size model)
   double assign_gate_chi2 = 25.0;      // an observation farther from a ball did not see it
   double min_chi2_gain = 4.0;          // a further ball must lower the chi-square this much
   double min_chi2_keep = 9.0;          // a ball whose removal raises the chi-square less goes

@@ -37,6 +37,7 @@ std::optional<FieldObservation> observe_on_plane(const FieldCamera& camera,
   out.covariance_m2 = sigma2 * jacobian * jacobian.transpose();
   out.range_m = (*center - camera.center_in_field()).norm();
   out.objects = detection.blob_objects / detection.split_count;
+  out.split_count = detection.split_count;
   out.plane_per_pixel = jacobian;
   out.radius_px = detection.radius_px;
   return out;

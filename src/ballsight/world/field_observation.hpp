@@ -21,6 +21,7 @@ struct FieldObservation {
   int detection = 0;                                            // index in that camera's detections
   double range_m = 0.0;                                         // distance from the camera
   double objects = 1.0;    // how many objects its share of its blob amounts to
+  int split_count = 1;     // parts its blob was split into (PixelDetection::split_count)
   double radius_px = 0.0;  // the detection\'s apparent radius (a blob of several: larger)
   /// Plane position per pixel of the detection's centre (2 x 2): maps image offsets to the plane.
   Eigen::Matrix2d plane_per_pixel = Eigen::Matrix2d::Identity();
