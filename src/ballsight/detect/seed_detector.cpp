@@ -42,12 +42,16 @@ void detect_class(const cv::Mat& hsv, const HsvRange& range, int median_kernel_p
   cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
   for (const std::vector<cv::Point>& contour : contours) {
     const cv::Moments m = cv::moments(contour);
-    if (m.m00 <= 0.0) continue;
     PixelDetection d;
     d.object = object;
-    d.center_px = Vec2(m.m10 / m.m00, m.m01 / m.m00);
-    d.area_px = m.m00;
-    d.radius_px = std::sqrt(m.m00 / std::numbers::pi);
+    if (m.m00 > 0.0) {
+      d.center_px = Vec2(m.m10 / m.m00, m.m01 / m.m00);
+    } else {  // a blob of one or two pixels (or a line) has no contour area: its points' mean
+      for (const cv::Point& p : contour) d.center_px += Vec2(p.x, p.y);
+      d.center_px /= static_cast<double>(contour.size());
+    }
+    d.area_px = std::max(m.m00, 1.0);
+    d.radius_px = std::sqrt(d.area_px / std::numbers::pi);
     out.push_back(d);
   }
 }

@@ -40,8 +40,9 @@ struct SeedDetectorOptions {
 std::vector<PixelDetection> detect_seed_colour(const cv::Mat& bgr, const HsvRange& range,
                                                int median_kernel_px, ObjectClass object);
 
-/// Every contour's centre of mass, for the balls and both markers (cv::moments of the contour;
-/// contours of zero area are skipped). The image is 8-bit BGR.
+/// Every contour's centre of mass, for the balls and both markers (cv::moments of the contour; a
+/// contour of zero area, one or two pixels after the threshold, gives the mean of its points).
+/// The image is 8-bit BGR.
 std::vector<PixelDetection> detect_seed(const cv::Mat& bgr, const SeedDetectorOptions& options);
 
 }  // namespace ballsight

@@ -1,5 +1,6 @@
 #include "ballsight/eval/court_eval.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -110,15 +111,25 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
       render_calibration_images(rig, options.chessboard_views, options.scenario.noise_sigma,
                                 sim::derive_seed(options.seed, kCalibrationStream));
   const Site site = simulated_site(rig);
-  report.methods.push_back(
-      {CourtMethod::seed, {}, calibrate_seed_cameras(calibration_images, site), {}});
-  report.methods.push_back(
-      {CourtMethod::ballsight, {}, calibrate_ballsight_cameras(calibration_images, site), {}});
+  // A method that cannot calibrate (too few reference balls found, say) is reported as such.
   std::vector<std::unique_ptr<CourtPipeline>> pipelines;
-  pipelines.push_back(
-      make_seed_pipeline(report.methods[0].calibration.cameras, seed_options_for_site(site)));
-  pipelines.push_back(make_ballsight_pipeline(report.methods[1].calibration.cameras,
-                                              ballsight_options_for_site(site)));
+  for (const CourtMethod method : {CourtMethod::seed, CourtMethod::ballsight}) {
+    MethodReport& m = report.methods.emplace_back();
+    m.method = method;
+    try {
+      if (method == CourtMethod::seed) {
+        m.calibration = calibrate_seed_cameras(calibration_images, site);
+        pipelines.push_back(make_seed_pipeline(m.calibration.cameras, seed_options_for_site(site)));
+      } else {
+        m.calibration = calibrate_ballsight_cameras(calibration_images, site);
+        pipelines.push_back(
+            make_ballsight_pipeline(m.calibration.cameras, ballsight_options_for_site(site)));
+      }
+    } catch (const InputError& e) {
+      m.calibration_error = e.what();
+      pipelines.push_back(nullptr);
+    }
+  }
 
   std::vector<sim::CourtRenderer> renderers;
   for (const sim::CourtCamera& camera : rig.cameras) renderers.emplace_back(camera, rig.court);
@@ -135,6 +146,12 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
     const std::vector<TruthBall> balls = truth_balls(truth);
     std::vector<FrameSetResult> results;
     for (size_t m = 0; m < pipelines.size(); ++m) {
+      if (!pipelines[m]) {
+        FrameSetResult nothing;
+        nothing.detections.resize(frames.size());
+        results.push_back(std::move(nothing));
+        continue;
+      }
       const auto start = std::chrono::steady_clock::now();
       results.push_back(pipelines[m]->process(frames));
       const std::chrono::duration<double, std::milli> elapsed =
@@ -192,6 +209,7 @@ nlohmann::json court_eval_json(const CourtEvalReport& report) {
                                  static_cast<double>(m.frame_set_ms.size()));
     j["calibration"] = {{"intrinsics_rms_px", m.calibration.intrinsics_rms_px},
                         {"pose_rms_px", m.calibration.pose_rms_px}};
+    if (!m.calibration_error.empty()) j["calibration_error"] = m.calibration_error;
     methods[court_method_name(m.method)] = j;
   }
   nlohmann::json out;
@@ -213,6 +231,11 @@ std::string court_eval_text(const CourtEvalReport& report) {
   out << "method      recall  precision  dup  FP  err mean  err p95  robot pos  robot hdg   "
          "ms/set\n";
   for (const MethodReport& m : report.methods) {
+    if (!m.calibration_error.empty()) {
+      out << court_method_name(m.method) << ": could not be calibrated: " << m.calibration_error
+          << "\n";
+      continue;
+    }
     const CourtScores& s = m.scores;
     double ms = 0.0;
     for (double v : m.frame_set_ms) ms += v / static_cast<double>(m.frame_set_ms.size());
@@ -225,7 +248,10 @@ std::string court_eval_text(const CourtEvalReport& report) {
         deg_from_rad(s.robot_heading_error_mean_rad()), ms);
     out << line;
   }
-  const CourtScores& any = report.methods.front().scores;
+  const CourtScores& any =
+      std::max_element(report.methods.begin(), report.methods.end(), [](const auto& a, const auto& b) {
+        return a.scores.scenes < b.scores.scenes;
+      })->scores;
   std::snprintf(line, sizeof line,
                 "balls: %d seen by at least one camera (counted for recall), %d seen by none\n",
                 any.counted, any.unseen);

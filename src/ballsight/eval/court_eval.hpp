@@ -37,6 +37,7 @@ struct MethodReport {
   CourtMethod method = CourtMethod::ballsight;
   CourtScores scores;
   EvalCalibration calibration;
+  std::string calibration_error;     // why the method could not be calibrated ("" when it was)
   std::vector<double> frame_set_ms;  // wall time of one frame set -> world model, per scene
 };
 
