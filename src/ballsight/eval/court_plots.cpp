@@ -43,22 +43,24 @@ cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& tr
   return image;
 }
 
-cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3>& cameras,
-                       const std::vector<TruthBall>& truth, const Pose2D& robot_truth,
-                       const std::vector<WorldLayer>& layers, const std::string& title,
-                       double pixels_per_m) {
-  const double margin_m = 1.5;
-  const double half_length = 0.5 * court.surround_length_m + margin_m;
-  const double half_width = 0.5 * court.surround_width_m + margin_m;
-  const int top = 36;
-  const int width = static_cast<int>(std::lround(2 * half_length * pixels_per_m));
-  const int height = static_cast<int>(std::lround(2 * half_width * pixels_per_m)) + top;
-  cv::Mat image(height, width, CV_8UC3, cv::Scalar(235, 235, 235));
-  // Field x to the right, y up.
-  const auto px = [&](const Vec2& p) {
-    return cv::Point2d((p.x() + half_length) * pixels_per_m,
-                       top + (half_width - p.y()) * pixels_per_m);
-  };
+namespace {
+
+// Draws the court area, cameras, truth and layers into `image` with field point (x, y) at pixel
+// offset + scale * (x - x0, y1 - y): field x to the right, y up.
+struct MapView {
+  Vec2 top_left_m;  // field coordinates of the view's top-left corner (x min, y max)
+  double pixels_per_m = 40.0;
+  cv::Point2d offset;
+
+  cv::Point2d operator()(const Vec2& p) const {
+    return offset + cv::Point2d((p.x() - top_left_m.x()) * pixels_per_m,
+                                (top_left_m.y() - p.y()) * pixels_per_m);
+  }
+};
+
+void draw_map(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& court,
+              const std::vector<Vec3>& cameras, const std::vector<TruthBall>& truth,
+              const Pose2D& robot_truth, const std::vector<WorldLayer>& layers) {
   const auto fill_rect = [&](const sim::GroundRect& r, const cv::Vec3b& bgr) {
     cv::rectangle(image, px({r.x_min, r.y_max}), px({r.x_max, r.y_min}),
                   cv::Scalar(bgr[0], bgr[1], bgr[2]), cv::FILLED);
@@ -66,38 +68,75 @@ cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3
   fill_rect(court.surround_rect(), court.surround_bgr);
   fill_rect(court.court_rect(), court.court_bgr);
   for (const sim::GroundRect& line : court.line_rects()) fill_rect(line, court.line_bgr);
-  for (const Vec3& c : cameras) {
+  for (const Vec3& c : cameras)
     cv::drawMarker(image, px(c.head<2>()), cv::Scalar(40, 40, 40), cv::MARKER_TRIANGLE_UP, 14, 2);
-  }
-
+  const double scale = px.pixels_per_m / 40.0;  // marks grow with the zoom
   const auto draw_robot = [&](const Pose2D& pose, const cv::Scalar& colour, int thickness) {
     const Vec2 forward(std::cos(pose.heading_rad), std::sin(pose.heading_rad));
     cv::arrowedLine(image, px(pose.position), px(pose.position + 0.8 * forward), colour, thickness,
                     cv::LINE_AA, 0, 0.25);
   };
-  for (const TruthBall& t : truth) {
-    cv::circle(image, px(t.position_m), 4,
+  // The true robot's body (the simulator's 0.60 x 0.45 m box) and heading.
+  std::vector<cv::Point> body;
+  for (const Vec2& corner :
+       {Vec2(0.3, 0.225), Vec2(-0.3, 0.225), Vec2(-0.3, -0.225), Vec2(0.3, -0.225)})
+    body.push_back(px(robot_truth.field_from_robot() * corner));
+  cv::polylines(image, body, true, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
+  for (const TruthBall& t : truth)
+    cv::circle(image, px(t.position_m),
+               static_cast<int>(std::lround(std::max(4.0, 0.0335 * px.pixels_per_m))),
                t.seen ? cv::Scalar(20, 20, 20) : cv::Scalar(150, 150, 150), 1, cv::LINE_AA);
-  }
   draw_robot(robot_truth, cv::Scalar(20, 20, 20), 3);
-  std::vector<LegendEntry> legend{
-      {"true balls and robot (grey: seen by no camera)", cv::Scalar(20, 20, 20)}};
   for (size_t i = 0; i < layers.size(); ++i) {
     const WorldLayer& layer = layers[i];
     for (const CollectionSite& site : layer.world.sites) {
       if (site.balls.size() < 2) continue;
-      const double r = std::max(0.5 * site.diameter_m + 0.12, 0.15) * pixels_per_m;
+      const double r = std::max(0.5 * site.diameter_m + 0.12, 0.15) * px.pixels_per_m;
       cv::circle(image, px(site.center_m), static_cast<int>(r), layer.colour, 1, cv::LINE_AA);
     }
     const int marker = i == 0 ? cv::MARKER_TILTED_CROSS : cv::MARKER_CROSS;
     for (const FusedBall& ball : layer.world.balls)
-      cv::drawMarker(image, px(ball.position_m), layer.colour, marker, 7, 1, cv::LINE_AA);
+      cv::drawMarker(image, px(ball.position_m), layer.colour, marker,
+                     static_cast<int>(std::lround(7 * std::sqrt(scale))), 1, cv::LINE_AA);
     if (layer.world.robot) draw_robot(layer.world.robot->pose, layer.colour, 1);
-    legend.push_back({layer.label, layer.colour});
   }
+}
+
+}  // namespace
+
+cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3>& cameras,
+                       const std::vector<TruthBall>& truth, const Pose2D& robot_truth,
+                       const std::vector<WorldLayer>& layers, const std::string& title,
+                       double pixels_per_m) {
+  const double margin_m = 1.5;
+  const Vec2 half(0.5 * court.surround_length_m + margin_m,
+                  0.5 * court.surround_width_m + margin_m);
+  const int top = 36 + 22 * static_cast<int>(layers.size() + 1);  // title and legend
+  const int width = static_cast<int>(std::lround(2 * half.x() * pixels_per_m));
+  const int map_height = static_cast<int>(std::lround(2 * half.y() * pixels_per_m));
+  const double zoom = 5.0 * pixels_per_m;  // the inset below the map
+  const int height = top + map_height + static_cast<int>(2.0 * zoom) + 20;
+  cv::Mat image(height, width, CV_8UC3, cv::Scalar(235, 235, 235));
+  draw_map(image, {Vec2(-half.x(), half.y()), pixels_per_m, {0.0, static_cast<double>(top)}}, court,
+           cameras, truth, robot_truth, layers);
+
+  // Inset below the map: 3 x 2 m around the true robot, five times larger, where it hides balls.
+  const cv::Rect inset((width - static_cast<int>(3.0 * zoom)) / 2, top + map_height + 10,
+                       static_cast<int>(3.0 * zoom), static_cast<int>(2.0 * zoom));
+  cv::Mat area = image(inset);
+  area.setTo(cv::Scalar(235, 235, 235));
+  draw_map(area, {robot_truth.position + Vec2(-1.5, 1.0), zoom, {0.0, 0.0}}, court, cameras, truth,
+           robot_truth, layers);
+  cv::rectangle(image, inset, cv::Scalar(30, 30, 30), 2);
+  draw_text(image, "3 x 2 m around the robot", {inset.x + 6, inset.br().y - 8}, 0.5,
+            cv::Scalar(255, 255, 255));
+
+  std::vector<LegendEntry> legend{
+      {"true balls and robot (grey: seen by no camera)", cv::Scalar(20, 20, 20)}};
+  for (const WorldLayer& layer : layers) legend.push_back({layer.label, layer.colour});
   cv::rectangle(image, {0, 0, image.cols, top}, cv::Scalar::all(255), cv::FILLED);
   draw_text(image, title, {10, 24}, 0.6);
-  draw_legend(image, {10, top + 8}, legend);
+  draw_legend(image, {10, 32}, legend);
   return image;
 }
 

@@ -33,7 +33,8 @@ struct WorldLayer {
 };
 
 /// Top-down map of the court area: lines, cameras, true balls (grey: seen by no camera) and the
-/// true robot, each layer's balls, collection sites and robot pose; `pixels_per_m` sets the scale.
+/// true robot, each layer's balls, collection sites and robot pose, with a five times larger inset
+/// of the 3 x 2 m around the robot below it; `pixels_per_m` sets the scale.
 cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3>& cameras,
                        const std::vector<TruthBall>& truth, const Pose2D& robot_truth,
                        const std::vector<WorldLayer>& layers, const std::string& title,
