@@ -27,28 +27,33 @@ namespace {
 
 constexpr double kOverlapSigmaM = 0.003;  // stiffness of the no-overlap constraint
 
-// Area of the union of discs of one radius, by sampling a grid of a fifth of a pixel.
+// Area of the union of discs of one radius in units of one disc's area: their count when no two
+// overlap, else by sampling a grid of a fifth of the radius (within 3%).
 double union_of_discs(const std::vector<Vec2>& centers, double radius) {
-  if (centers.empty()) return 0.0;
+  bool apart = true;
+  for (size_t i = 0; i < centers.size() && apart; ++i)
+    for (size_t j = i + 1; j < centers.size() && apart; ++j)
+      apart = (centers[i] - centers[j]).squaredNorm() >= 4.0 * radius * radius;
+  if (apart) return static_cast<double>(centers.size());
   Vec2 lo = centers.front(), hi = centers.front();
   for (const Vec2& c : centers) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
   lo -= Vec2::Constant(radius);
   hi += Vec2::Constant(radius);
-  constexpr double kStep = 0.2;
+  const double step = radius / 5.0;
   int inside = 0;
-  for (double y = lo.y() + 0.5 * kStep; y < hi.y(); y += kStep)
-    for (double x = lo.x() + 0.5 * kStep; x < hi.x(); x += kStep)
+  for (double y = lo.y() + 0.5 * step; y < hi.y(); y += step)
+    for (double x = lo.x() + 0.5 * step; x < hi.x(); x += step)
       inside += std::any_of(centers.begin(), centers.end(), [&](const Vec2& c) {
         return (Vec2(x, y) - c).squaredNorm() <= radius * radius;
       });
-  return inside * kStep * kStep;
+  return inside * step * step / (std::numbers::pi * radius * radius);
 }
 
 // One hypothesis: ball positions and, per observation, the balls it covers.
 struct Fit {
   std::vector<Vec2> balls;
   std::vector<std::vector<int>> covered;  // per observation of the group
-  Eigen::MatrixXd covariance;             // 2N x 2N
+  Eigen::MatrixXd information;            // 2N x 2N, of the last solve
   double chi2 = std::numeric_limits<double>::max();
 };
 
@@ -58,7 +63,11 @@ class GroupFitter {
               double ball_radius_m, const ClusterOptions& options)
       : all_(all), members_(std::move(members)), radius_(ball_radius_m), options_(options) {
     for (int o : members_) {
-      information_.push_back(all_[static_cast<size_t>(o)].covariance_m2.inverse());
+      const FieldObservation& obs = all_[static_cast<size_t>(o)];
+      information_.push_back(obs.covariance_m2.inverse());
+      pixel_per_plane_.push_back(obs.plane_per_pixel.inverse());
+      const Eigen::JacobiSVD<Eigen::Matrix2d> svd(obs.plane_per_pixel);
+      ball_radius_px_.push_back(radius_ / svd.singularValues()(1));
       if (std::find(cameras_.begin(), cameras_.end(), all_[static_cast<size_t>(o)].camera) ==
           cameras_.end())
         cameras_.push_back(all_[static_cast<size_t>(o)].camera);
@@ -76,8 +85,6 @@ class GroupFitter {
     f.chi2 = chi2(f);
     return f;
   }
-
-  const std::vector<int>& members() const { return members_; }
 
   // Cameras whose observations cover ball i.
   int camera_count(const Fit& f, int ball) const {
@@ -113,14 +120,11 @@ class GroupFitter {
 
   // Image distance (pixels) in observation o's camera between two plane points.
   double image_distance(size_t o, const Vec2& a, const Vec2& b) const {
-    return (observation(o).plane_per_pixel.inverse() * (a - b)).norm();
+    return (pixel_per_plane_[o] * (a - b)).norm();
   }
   // A ball's image radius near observation o: the radius over the plane's metres per pixel
   // across the line of sight (the smaller singular value; along it the plane is stretched).
-  double ball_radius_px(size_t o) const {
-    const Eigen::JacobiSVD<Eigen::Matrix2d> svd(observation(o).plane_per_pixel);
-    return radius_ / svd.singularValues()(1);
-  }
+  double ball_radius_px(size_t o) const { return ball_radius_px_[o]; }
   // Two balls farther apart in the image than two ball images and a pixel cannot make one blob.
   bool apart_in_image(size_t o, const Vec2& a, const Vec2& b) const {
     return image_distance(o, a, b) > 2.0 * ball_radius_px(o) + 1.0;
@@ -206,10 +210,9 @@ class GroupFitter {
         b.segment<2>(2 * j) -= w * u * touching;
       }
     }
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(h);
-    const Eigen::VectorXd x = ldlt.solve(b);
+    const Eigen::VectorXd x = h.ldlt().solve(b);
     for (Eigen::Index i = 0; i < n; ++i) f.balls[static_cast<size_t>(i)] = x.segment<2>(2 * i);
-    f.covariance = ldlt.solve(Eigen::MatrixXd::Identity(2 * n, 2 * n));
+    f.information = std::move(h);
   }
 
   double chi2(const Fit& f) const {
@@ -244,14 +247,14 @@ class GroupFitter {
         measured += observation(o).objects;
         if (reference == members_.size()) reference = o;
       }
-      const Eigen::Matrix2d pixel_per_plane = observation(reference).plane_per_pixel.inverse();
+      const Eigen::Matrix2d& pixel_per_plane = pixel_per_plane_[reference];
       const double disc = ball_radius_px(reference) + options_.blur_px;
       std::vector<Vec2> centers;
       for (const Vec2& x : balls) {
         const Vec2 q = pixel_per_plane * (x - observation(reference).position_m);
         if (q.norm() < 6.0 * disc + 6.0) centers.push_back(q);  // this blob's balls only
       }
-      const double predicted = union_of_discs(centers, disc) / (std::numbers::pi * disc * disc);
+      const double predicted = union_of_discs(centers, disc);
       const double sigma = options_.size_sigma_floor + options_.size_sigma_share * predicted;
       sum += (measured - predicted) * (measured - predicted) / (sigma * sigma);
     }
@@ -261,6 +264,8 @@ class GroupFitter {
   const std::vector<FieldObservation>& all_;
   std::vector<int> members_;
   std::vector<Eigen::Matrix2d> information_;
+  std::vector<Eigen::Matrix2d> pixel_per_plane_;  // inverse of each observation's plane_per_pixel
+  std::vector<double> ball_radius_px_;            // a ball's image radius at each observation
   std::vector<int> cameras_;
   double radius_;
   const ClusterOptions& options_;
@@ -343,6 +348,10 @@ std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& ob
     }
     const GroupFitter fitter(observations, members, ball_radius_m, options);
     Fit best = fitter.fit(start);
+    if (group.size() == 1 && best.chi2 < options.min_chi2_gain) {  // a lone ball that fits
+      out.push_back(fused[static_cast<size_t>(group.front())]);
+      continue;
+    }
     // Fewer balls where the observations do not need them (a ball's observations fused apart).
     while (best.balls.size() > 1) {
       Fit fewer = fit_with_one_less(fitter, best);
@@ -357,11 +366,12 @@ std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& ob
       if (fitter.camera_count(more, static_cast<int>(more.balls.size()) - 1) < 2) break;
       best = std::move(more);
     }
+    const Eigen::MatrixXd covariance = best.information.inverse();
     for (size_t i = 0; i < best.balls.size(); ++i) {
       FusedObject object;
       object.position_m = best.balls[i];
-      object.covariance_m2 = best.covariance.block<2, 2>(2 * static_cast<Eigen::Index>(i),
-                                                         2 * static_cast<Eigen::Index>(i));
+      object.covariance_m2 = covariance.block<2, 2>(2 * static_cast<Eigen::Index>(i),
+                                                    2 * static_cast<Eigen::Index>(i));
       for (size_t o = 0; o < members.size(); ++o) {
         const auto& cov = best.covered[o];
         if (std::find(cov.begin(), cov.end(), static_cast<int>(i)) == cov.end()) continue;

@@ -28,7 +28,7 @@ struct ClusterOptions {
   double min_chi2_keep = 9.0;          // a ball whose removal raises the chi-square less goes
   double min_separation_radii = 1.75;  // balls closer than this cannot both be real
   int max_added = 2;                   // balls added to one group at most
-  int iterations = 8;                  // assignment / solve rounds per hypothesis
+  int iterations = 3;                  // assignment / solve rounds per hypothesis
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

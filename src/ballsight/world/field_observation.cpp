@@ -19,15 +19,15 @@ std::optional<FieldObservation> observe_on_plane(const FieldCamera& camera,
   const Vec2& pixel = detection.center_px;
   const std::optional<Vec3> center = camera.point_at_height(pixel, center_height_m);
   if (!center) return std::nullopt;
-  // Jacobian of the plane point by the pixel, by central differences of half a pixel.
+  // Jacobian of the plane point by the pixel, by forward differences of half a pixel (two more
+  // rays; the map is smooth at this scale, and each ray is a Newton solve through the lens).
   constexpr double kStep = 0.5;
   Eigen::Matrix2d jacobian;
   for (int axis = 0; axis < 2; ++axis) {
-    const Vec2 step = kStep * Vec2::Unit(axis);
-    const std::optional<Vec3> plus = camera.point_at_height(pixel + step, center_height_m);
-    const std::optional<Vec3> minus = camera.point_at_height(pixel - step, center_height_m);
-    if (!plus || !minus) return std::nullopt;
-    jacobian.col(axis) = (plus->head<2>() - minus->head<2>()) / (2.0 * kStep);
+    const std::optional<Vec3> moved =
+        camera.point_at_height(pixel + kStep * Vec2::Unit(axis), center_height_m);
+    if (!moved) return std::nullopt;
+    jacobian.col(axis) = (moved->head<2>() - center->head<2>()) / kStep;
   }
   const double sigma2 = detection.center_sigma_px * detection.center_sigma_px +
                         noise.calibration_sigma_px * noise.calibration_sigma_px;
