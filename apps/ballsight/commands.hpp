@@ -25,5 +25,9 @@ void add_omni_locate_command(CLI::App& omni);
 
 /// `eval omni` (eval_command.cpp), registered on the `eval` group.
 void add_eval_commands(CLI::App& eval);
+/// `calibrate camera` (calibrate_command.cpp), registered on the `calibrate` group.
+void add_calibrate_camera_command(CLI::App& calibrate);
+/// `court calibrate` (court_calibrate_command.cpp), registered on the `court` group.
+void add_court_calibrate_command(CLI::App& court);
 
 }  // namespace ballsight::app

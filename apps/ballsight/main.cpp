@@ -34,6 +34,15 @@ int main(int argc, char** argv) {
   ballsight::app::add_eval_commands(*eval);
   ballsight::app::add_demo_command(app);
 
+  CLI::App* calibrate = app.add_subcommand("calibrate", "Camera calibration from chessboards");
+  calibrate->require_subcommand(1);
+  ballsight::app::add_calibrate_camera_command(*calibrate);
+
+  CLI::App* court =
+      app.add_subcommand("court", "Fixed cameras around a tennis court: calibration and tracking");
+  court->require_subcommand(1);
+  ballsight::app::add_court_calibrate_command(*court);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,97 @@
+#pragma once
+// The site file: what a fixed-camera installation around a tennis court needs to know (the
+// tennis-ball-collecting-robot report, chapters 6.2 and 7.4): the court, the cameras (where their
+// images come from, their calibration files, roughly where they stand), the reference balls'
+// field coordinates, the colours of the balls and the robot's markers, and the robot's
+// collector width. Written by hand in YAML; schema and example in docs/site-file.md.
+
+#include <cstdint>
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+
+namespace ballsight {
+
+/// Where a camera's images come from.
+struct CameraSource {
+  enum class Kind { file, folder, device, url };
+  Kind kind = Kind::file;
+  std::filesystem::path path;  // file or folder, resolved against the site file's folder
+  int device = 0;              // video device index
+  std::string url;             // rtsp://, http:// or https://
+};
+
+/// "file", "folder", "device" or "url".
+std::string_view camera_source_kind_name(CameraSource::Kind kind);
+
+struct SiteCamera {
+  std::string name;
+  CameraSource source;
+  std::filesystem::path calibration_file;  // resolved against the site file's folder
+  /// Rough optical centre in the field frame (e.g. "pole at the north-east corner, 5 m high");
+  /// tells apart poses that the reference layout alone cannot (a symmetric court).
+  std::optional<Vec3> position_hint_m;
+};
+
+/// A reference ball (table-tennis ball) at a point the user measured on the floor.
+struct ReferenceBall {
+  std::string name;
+  Vec2 floor_position_m = Vec2::Zero();  // where it rests, field frame
+};
+
+/// An object's colour as the cameras see it in daylight, 8-bit R, G, B.
+struct Rgb {
+  std::uint8_t r = 0, g = 0, b = 0;
+  cv::Vec3b bgr() const { return {b, g, r}; }
+};
+
+struct SiteColours {
+  Rgb ball{225, 250, 45};            // fluorescent yellow tennis ball
+  Rgb reference_ball{255, 100, 20};  // orange table-tennis ball
+  Rgb robot_front{255, 80, 180};     // pink marker
+  Rgb robot_back{30, 80, 220};       // blue marker
+};
+
+/// Field frame: origin at the centre of the court on the net line, x along the length, y across,
+/// z up (docs/conventions.md).
+struct SiteCourt {
+  double length_m = 23.77;  // doubles court, outer edges of the lines
+  double width_m = 10.97;
+  double area_length_m = 36.0;  // the surface around it where balls may lie (run-off included)
+  double area_width_m = 18.0;
+};
+
+struct SiteRobot {
+  double marker_radius_m = 0.045;
+  double marker_height_m = 0.345;  // marker centres above the floor
+  double collector_width_m = 0.40;
+};
+
+struct Site {
+  std::filesystem::path file;  // the site file itself
+  SiteCourt court;
+  double ball_radius_m = 0.0335;
+  double reference_ball_radius_m = 0.02;
+  std::vector<ReferenceBall> reference_balls;  // in file order
+  SiteColours colours;
+  SiteRobot robot;
+  std::vector<SiteCamera> cameras;
+
+  /// A reference ball's centre in the field frame (it rests on the floor: z = radius).
+  Vec3 reference_center_in_field(const ReferenceBall& ball) const;
+};
+
+/// Parses a site file's text; `file` names it in messages and its folder resolves relative paths.
+/// Throws InputError "<file>:<line>: key '<key>' <what was expected>" for a wrong type or value,
+/// a missing key or an unknown one.
+Site parse_site(std::string_view text, const std::filesystem::path& file);
+
+/// Reads and parses a site file.
+Site read_site(const std::filesystem::path& file);
+
+}  // namespace ballsight
