@@ -5,6 +5,7 @@
 #include "apps/run_cli.hpp"
 #include "ballsight/camera/ground_map_io.hpp"
 #include "ballsight/camera/image_file.hpp"
+#include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
 #include "temp_dir.hpp"
@@ -28,13 +29,7 @@ class OmniLocateCli : public ::testing::Test {
     GroundMapInfo info;
     info.min_radius_px = 50.0;
     info.max_radius_px = 230.0;
-    info.viewpoint_height_cm = 60.0;
-    save_ground_map(lut, build_ground_map(
-                             [&](const Vec2& pixel) -> std::optional<Vec2> {
-                               const auto p = rig.ground_from_pixel(pixel);
-                               return p ? std::optional<Vec2>(*p * 100.0) : std::nullopt;
-                             },
-                             info));
+    save_ground_map(lut, ground_map_from_rig(rig, info));
     write_png_atomic(image, sim::render_omni_scene(scene).bgr);
   }
 
