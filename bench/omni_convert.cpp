@@ -23,6 +23,7 @@
 #include "ballsight/camera/ground_map.hpp"
 #include "ballsight/camera/iris_lut.hpp"
 #include "ballsight/camera/omni_rig.hpp"
+#include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/core/conventions.hpp"
 
 namespace ballsight {
@@ -58,13 +59,7 @@ ConversionSetup make_setup() {
   info.min_radius_px = 30.0;
   info.max_radius_px = 200.0;
   info.method = "omni-rig-truth";
-  GroundMap map = build_ground_map(
-      [&rig](const Vec2& pixel) -> std::optional<Vec2> {
-        const std::optional<Vec2> p_m = rig.ground_from_pixel(pixel);
-        if (!p_m) return std::nullopt;
-        return 100.0 * *p_m;
-      },
-      info);
+  GroundMap map = ground_map_from_rig(rig, info);
   IrisLut paper_lut = iris_px2cm_from_ground_map(map);
   std::mt19937 rng(kSeed);
   std::uniform_real_distribution<double> theta(0.0, 360.0);

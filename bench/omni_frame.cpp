@@ -8,7 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "ballsight/camera/iris_lut.hpp"
-#include "ballsight/core/conventions.hpp"
+#include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/eval/omni_pipelines.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
 
@@ -33,20 +33,13 @@ struct Fixture {
     GroundMapInfo info;
     info.min_radius_px = 60.0;
     info.max_radius_px = 200.0;
-    info.viewpoint_height_cm = 60.0;
-    const auto truth_cm = [&](const Vec2& pixel) -> std::optional<Vec2> {
-      const auto p = rig.ground_from_pixel(pixel);
-      return p ? std::optional<Vec2>(*p * 100.0) : std::nullopt;
-    };
-    IrisLut table = build_iris_px2cm([&](double theta, double r) -> std::optional<double> {
-      const auto p = truth_cm(pixel_from_image_polar({theta, r}, info.image_center_px));
-      return p ? std::optional<double>(p->norm()) : std::nullopt;
-    });
+    GroundMap map = ground_map_from_rig(rig, info);
+    IrisLut table = iris_px2cm_from_ground_map(map);  // the same truth in the paper's layout
     return {rig,
             sim::render_omni_scene(scene).bgr,
             scene.robot_pose,
             yuv_range_around(scene.palette.ball_bgr),
-            build_ground_map(truth_cm, info),
+            std::move(map),
             std::move(table)};
   }
 };

@@ -20,6 +20,8 @@ void add_demo_command(CLI::App& app);
 
 /// `omni fit` and `omni predict` (omni_fit_command.cpp), registered on the `omni` group.
 void add_omni_fit_commands(CLI::App& omni);
+/// `omni locate` (omni_locate_command.cpp).
+void add_omni_locate_command(CLI::App& omni);
 
 /// `eval omni` (eval_command.cpp), registered on the `eval` group.
 void add_eval_commands(CLI::App& eval);

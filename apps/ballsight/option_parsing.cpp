@@ -7,14 +7,26 @@
 
 namespace ballsight::app {
 
-Vec2 parse_pixel_pair(const std::string& text, const std::string& option) {
+std::vector<double> parse_numbers(const std::string& text, std::size_t count,
+                                  const std::string& option, const std::string& what) {
   std::istringstream in(text);
-  double x = 0.0, y = 0.0;
-  char comma = 0;
-  in >> x >> comma >> y;
-  require(in && comma == ',' && (in >> std::ws).eof() && std::isfinite(x) && std::isfinite(y),
-          option, "expected two numbers X,Y in pixels, got '" + text + "'");
-  return {x, y};
+  std::vector<double> numbers;
+  bool ok = true;
+  for (std::size_t i = 0; i < count && ok; ++i) {
+    double value = 0.0;
+    char comma = ',';
+    if (i > 0) in >> comma;
+    in >> value;
+    ok = in && comma == ',' && std::isfinite(value);
+    numbers.push_back(value);
+  }
+  require(ok && (in >> std::ws).eof(), option, "expected " + what + ", got '" + text + "'");
+  return numbers;
+}
+
+Vec2 parse_pixel_pair(const std::string& text, const std::string& option) {
+  const std::vector<double> xy = parse_numbers(text, 2, option, "two numbers X,Y in pixels");
+  return {xy[0], xy[1]};
 }
 
 Eigen::Vector2i parse_image_size(const std::string& text, const std::string& option) {

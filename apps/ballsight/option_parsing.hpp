@@ -3,10 +3,16 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 #include "ballsight/core/geometry.hpp"
 
 namespace ballsight::app {
+
+/// "A,B,C" -> exactly `count` finite comma-separated numbers; throws InputError naming `option`
+/// and saying what was expected (`what`, e.g. "X,Y,THETA_DEG: robot position in cm and heading").
+std::vector<double> parse_numbers(const std::string& text, std::size_t count,
+                                  const std::string& option, const std::string& what);
 
 /// "X,Y" -> two finite numbers; throws InputError naming `option`.
 Vec2 parse_pixel_pair(const std::string& text, const std::string& option);

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "ballsight/camera/ground_map.hpp"
 #include "ballsight/camera/omni_rig.hpp"
+#include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 
@@ -53,12 +53,7 @@ TEST(BallOnFloor, SilhouetteRaysPlaceTheCentreWhereThePixelCentroidDoesNot) {
   GroundMapInfo info;
   info.min_radius_px = 30.0;
   info.max_radius_px = 235.0;
-  const GroundMap map = build_ground_map(
-      [&](const Vec2& pixel) -> std::optional<Vec2> {
-        const auto p = rig.ground_from_pixel(pixel);
-        return p ? std::optional<Vec2>(*p * 100.0) : std::nullopt;
-      },
-      info);
+  const GroundMap map = ground_map_from_rig(rig, info);
   const BallOnFloor ball{11.0, 60.0};
   for (double distance_m : {0.8, 1.2, 2.0, 2.85}) {
     const Vec2 c = robot_point_from_bearing(35.0, distance_m);

@@ -10,6 +10,7 @@
 #include "ballsight/calib/omni_model_fit.hpp"
 #include "ballsight/calib/simulated_calibration.hpp"
 #include "ballsight/camera/iris_lut.hpp"
+#include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/omni_pipelines.hpp"
@@ -122,13 +123,7 @@ OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options) {
   const GroundMap ballsight_map = ground_map_from_model(*models.at("ballsight"));
   GroundMapInfo truth_info = ballsight_map.info();
   truth_info.method = "oracle";
-  truth_info.viewpoint_height_cm = rig_params.height_m * 100.0;
-  const GroundMap truth_map = build_ground_map(
-      [&](const Vec2& pixel) -> std::optional<Vec2> {
-        const auto p = rig.ground_from_pixel(pixel);
-        return p ? std::optional<Vec2>(*p * 100.0) : std::nullopt;
-      },
-      truth_info);
+  const GroundMap truth_map = ground_map_from_rig(rig, truth_info);
 
   const PaperOmniPipeline poly_pipeline(
       ball_color, configured_center, [&](double theta, double r) -> std::optional<double> {
