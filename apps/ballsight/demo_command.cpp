@@ -4,6 +4,7 @@
 
 #include "ballsight/eval/demo.hpp"
 #include "commands.hpp"
+#include "option_parsing.hpp"
 
 namespace ballsight::app {
 
@@ -20,7 +21,7 @@ void add_demo_command(CLI::App& app) {
   cmd->add_option("--out", args->out, "Output folder (created if missing)")
       ->required()
       ->type_name("DIR");
-  cmd->add_option("--seed", args->options.seed, "Scenario seed")->capture_default_str();
+  add_seed_option(*cmd, args->options.seed, "Scenario seed");
   cmd->add_option("--omni-frames", args->options.omni_frames, "Omni frames, 1..100")
       ->capture_default_str();
   cmd->add_option("--court-scenes", args->options.court_scenes, "Court scenes, 1..20")

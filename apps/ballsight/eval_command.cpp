@@ -6,6 +6,7 @@
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/eval/omni_experiment.hpp"
 #include "commands.hpp"
+#include "option_parsing.hpp"
 
 namespace ballsight::app {
 
@@ -22,8 +23,7 @@ void add_eval_commands(CLI::App& eval) {
       "and ballsight from clicked markers on a misaligned camera, locate a ball at (400, 600) cm "
       "from 120, 200 and 285 cm in 30 degree turns; mean error and std of x and y per distance, "
       "beside the true mapping (oracle)");
-  omni->add_option("--seed", args->options.seed, "Seed (click and sensor noise)")
-      ->capture_default_str();
+  add_seed_option(*omni, args->options.seed, "Seed (click and sensor noise)");
   omni->add_option("--tilt-deg", args->options.tilt_deg, "Camera axis tilt, 0..10 deg")
       ->capture_default_str();
   omni->add_option("--click-noise-px", args->options.click_noise_px, "Marker click noise, px")

@@ -8,6 +8,7 @@
 
 #include "ballsight/eval/court_eval.hpp"
 #include "commands.hpp"
+#include "option_parsing.hpp"
 
 namespace ballsight::app {
 namespace {
@@ -39,9 +40,7 @@ void add_eval_court_command(CLI::App& eval) {
       "balls, clusters, balls hidden by the robot and lighting changes, each calibrated from "
       "rendered chessboards and reference balls: recall, precision, duplicates, ball and robot "
       "errors");
-  cmd->add_option("--seed", args->options.seed, "Random seed: same seed, same figures")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+  add_seed_option(*cmd, args->options.seed, "Random seed: same seed, same figures");
   cmd->add_option("--scenes", args->options.scenes, "Number of scenes [1, 1000]")
       ->capture_default_str();
   cmd->add_flag("--json", args->json,

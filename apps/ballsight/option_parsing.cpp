@@ -1,5 +1,6 @@
 #include "option_parsing.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -22,6 +23,19 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count,
   }
   require(ok && (in >> std::ws).eof(), option, "expected " + what + ", got '" + text + "'");
   return numbers;
+}
+
+CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::string& help) {
+  const CLI::Validator digits(
+      [](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const char* end = text.data() + text.size();
+        const auto [stop, error] = std::from_chars(text.data(), end, value);
+        if (!text.empty() && error == std::errc() && stop == end) return {};
+        return "expected an integer in [0, 2^64), got '" + text + "'";
+      },
+      "UINT");
+  return command.add_option("--seed", seed, help)->check(digits)->capture_default_str();
 }
 
 Vec2 parse_pixel_pair(const std::string& text, const std::string& option) {

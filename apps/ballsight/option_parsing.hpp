@@ -1,7 +1,9 @@
 #pragma once
 // Parsing of option values the library has no type for; errors name the option.
 
+#include <CLI/CLI.hpp>
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,10 @@ namespace ballsight::app {
 /// and saying what was expected (`what`, e.g. "X,Y,THETA_DEG: robot position in cm and heading").
 std::vector<double> parse_numbers(const std::string& text, std::size_t count,
                                   const std::string& option, const std::string& what);
+
+/// Adds `--seed` to `command`: an integer in [0, 2^64), checked as text (CLI11 alone would wrap
+/// "-5" into a huge seed).
+CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::string& help);
 
 /// "X,Y" -> two finite numbers; throws InputError naming `option`.
 Vec2 parse_pixel_pair(const std::string& text, const std::string& option);

@@ -8,6 +8,7 @@
 
 #include "ballsight/sim/court_dataset.hpp"
 #include "commands.hpp"
+#include "option_parsing.hpp"
 
 namespace ballsight::app {
 namespace {
@@ -38,9 +39,7 @@ void add_sim_court_command(CLI::App& sim) {
       "Tennis court seen by four corner-pole cameras: court_KKKK_camC.png and court_KKKK.json "
       "(truth) per scene; with --chessboards, camC_board_VV.png and chessboards.json");
   cmd->add_option("--out", args->out_dir, "Output folder (created if missing)")->required();
-  cmd->add_option("--seed", args->dataset.seed, "Random seed: same seed, same bytes")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+  add_seed_option(*cmd, args->dataset.seed, "Random seed: same seed, same bytes");
   cmd->add_option("--scenes", args->dataset.scenes, "Number of scenes [0, 9999]")
       ->capture_default_str();
   cmd->add_option("--balls", args->balls,

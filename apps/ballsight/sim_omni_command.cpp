@@ -1,6 +1,5 @@
 // `ballsight sim omni`: renders a deterministic omni scenario to PNG images and truth JSON files.
 
-#include <charconv>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -20,22 +19,11 @@ namespace {
 struct SimOmniArgs {
   std::filesystem::path out;
   sim::OmniScenarioOptions scenario;
-  std::string seed = "1";                       // parsed strictly: CLI11 wraps "-5"
   std::optional<std::string> center_offset_px;  // "X,Y"
   bool no_markers = false;
 };
 
-std::uint64_t parse_seed(const std::string& text) {
-  std::uint64_t seed = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, seed);
-  require(!text.empty() && error == std::errc() && stop == end, "--seed",
-          "expected an integer in [0, 2^64), got '" + text + "'");
-  return seed;
-}
-
 void run(SimOmniArgs args) {
-  args.scenario.seed = parse_seed(args.seed);
   if (args.center_offset_px) {
     args.scenario.center_offset_px = parse_pixel_pair(*args.center_offset_px, "--center-offset-px");
   }
@@ -57,9 +45,7 @@ void add_sim_omni_command(CLI::App& sim) {
   cmd->add_option("--out", args->out, "Output folder (created if missing)")
       ->required()
       ->type_name("DIR");
-  cmd->add_option("--seed", args->seed, "Scenario seed, an integer in [0, 2^64)")
-      ->type_name("UINT")
-      ->capture_default_str();
+  add_seed_option(*cmd, args->scenario.seed, "Scenario seed");
   cmd->add_option("--frames", args->scenario.frames, "Number of frames, 1..10000")
       ->capture_default_str();
   cmd->add_option("--tilt-deg", args->scenario.tilt_deg,

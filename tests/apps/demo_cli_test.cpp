@@ -33,7 +33,8 @@ TEST(DemoCli, BadOptionsFailWithOneLine) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"demo"},
         {"demo", "--out", (dir / "x").string(), "--omni-frames", "0"},
-        {"demo", "--out", (dir / "x").string(), "--seed", "abc"}}) {
+        {"demo", "--out", (dir / "x").string(), "--seed", "abc"},
+        {"demo", "--out", (dir / "x").string(), "--seed", "-5"}}) {
     const CliResult r = run_cli(args);
     EXPECT_EQ(r.exit_code, 2) << args.back();
     EXPECT_EQ(line_count(r.stderr_text), 1) << r.stderr_text;
