@@ -248,10 +248,11 @@ std::string court_eval_text(const CourtEvalReport& report) {
         deg_from_rad(s.robot_heading_error_mean_rad()), ms);
     out << line;
   }
-  const CourtScores& any =
-      std::max_element(report.methods.begin(), report.methods.end(), [](const auto& a, const auto& b) {
-        return a.scores.scenes < b.scores.scenes;
-      })->scores;
+  const CourtScores& any = std::max_element(report.methods.begin(), report.methods.end(),
+                                            [](const auto& a, const auto& b) {
+                                              return a.scores.scenes < b.scores.scenes;
+                                            })
+                               ->scores;
   std::snprintf(line, sizeof line,
                 "balls: %d seen by at least one camera (counted for recall), %d seen by none\n",
                 any.counted, any.unseen);
