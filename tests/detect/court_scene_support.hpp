@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "ballsight/camera/field_camera.hpp"
+#include "field_cameras.hpp"
 
 namespace ballsight::test {
 
@@ -17,16 +17,7 @@ inline const cv::Vec3b kBallYellow{45, 250, 225};
 
 /// 640 x 480, fx = fy = 800, optical centre 6 m above the field origin, looking straight down.
 inline FieldCamera overhead_camera() {
-  PinholeParams p;
-  p.width = 640;
-  p.height = 480;
-  p.fx = p.fy = 800.0;
-  p.cx = 319.5;
-  p.cy = 239.5;
-  Rigid3 camera_from_field;
-  camera_from_field.rotation << 1, 0, 0, 0, -1, 0, 0, 0, -1;  // x right, y down, z down
-  camera_from_field.translation = Vec3(0.0, 0.0, 6.0);
-  return {PinholeCamera(p), camera_from_field};
+  return overhead_camera({640, 480}, 800.0, 6.0);
 }
 
 /// Apparent radius of a tennis ball on the floor under overhead_camera().

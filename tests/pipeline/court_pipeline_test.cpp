@@ -3,21 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "ballsight/core/error.hpp"
+#include "field_cameras.hpp"
 
 namespace ballsight {
 namespace {
 
 std::vector<FieldCamera> two_cameras() {
-  PinholeParams p;
-  p.width = 320;
-  p.height = 240;
-  p.fx = p.fy = 300.0;
-  p.cx = 159.5;
-  p.cy = 119.5;
-  Rigid3 looking_down;
-  looking_down.rotation << 1, 0, 0, 0, -1, 0, 0, 0, -1;
-  looking_down.translation = Vec3(0.0, 0.0, 6.0);
-  return {{PinholeCamera(p), looking_down}, {PinholeCamera(p), looking_down}};
+  const FieldCamera camera = test::overhead_camera({320, 240}, 300.0, 6.0);
+  return {camera, camera};
 }
 
 // A frame of another size than its camera's calibration is not used, and the result says why;

@@ -66,9 +66,7 @@ WorldModel build_world_model(
     const std::vector<std::optional<std::vector<PixelDetection>>>& detections,
     const CourtWorldOptions& options) {
   options.validate();
-  require(cameras.size() == detections.size(), "world model",
-          "need one detection list per camera (" + std::to_string(cameras.size()) + " cameras, " +
-              std::to_string(detections.size()) + " lists)");
+  require_list_per_camera(cameras.size(), detections.size(), "world model");
   WorldModel model;
   std::vector<FieldObservation> fronts, backs, balls;
   const auto place = [&](size_t camera, int index, const PixelDetection& detection,

@@ -46,9 +46,7 @@ WorldModel build_seed_world_model(
     const std::vector<std::optional<std::vector<PixelDetection>>>& detections,
     const SeedWorldOptions& options) {
   options.validate();
-  require(cameras.size() == detections.size(), "seed world model",
-          "need one detection list per camera (" + std::to_string(cameras.size()) + " cameras, " +
-              std::to_string(detections.size()) + " lists)");
+  require_list_per_camera(cameras.size(), detections.size(), "seed world model");
   WorldModel model;
   std::vector<Merged> balls;
   Merged front, back;

@@ -4,6 +4,7 @@
 // contributed. The value `court run` prints and the navigation service will publish.
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -25,5 +26,8 @@ struct WorldModel {
   std::optional<RobotPoseEstimate> robot;
   std::vector<int> cameras;  // cameras whose frames went into this model, ascending
 };
+
+/// Throws InputError naming `where` unless there is one detection list per camera.
+void require_list_per_camera(std::size_t cameras, std::size_t lists, const char* where);
 
 }  // namespace ballsight
