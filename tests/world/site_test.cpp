@@ -24,7 +24,7 @@ TEST(Site, TheDocumentedExampleReads) {
   EXPECT_EQ(site.reference_balls[11].floor_position_m, Vec2(0.0, -5.46));
   EXPECT_EQ(site.reference_center_in_field(site.reference_balls[0]), Vec3(11.86, 4.09, 0.02));
   EXPECT_EQ(site.colours.reference_ball.bgr(), cv::Vec3b(20, 100, 255));
-  EXPECT_DOUBLE_EQ(site.robot.collector_width_m, 0.40);
+  EXPECT_DOUBLE_EQ(site.robot.collector_width_m, 0.70);
   ASSERT_EQ(site.cameras.size(), 4u);
   const SiteCamera& c = site.cameras[2];
   EXPECT_EQ(c.name, "sw");
