@@ -68,7 +68,7 @@ struct SiteCourt {
 
 struct SiteRobot {
   double marker_radius_m = 0.045;
-  double marker_height_m = 0.345;  // marker centres above the floor
+  double marker_height_m = 0.345;   // marker centres above the floor
   double collector_width_m = 0.70;  // the report's collector (section 7.8)
 };
 
