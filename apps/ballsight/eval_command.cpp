@@ -28,6 +28,13 @@ void add_eval_commands(CLI::App& eval) {
       ->capture_default_str();
   omni->add_option("--click-noise-px", args->options.click_noise_px, "Marker click noise, px")
       ->capture_default_str();
+  omni->add_option("--measured-height-sigma-cm", args->options.measured_height_sigma_cm,
+                   "Also give ballsight the camera's viewpoint height as measured on the robot, "
+                   "with a normal error of this standard deviation (cm)");
+  omni->add_option("--methods", args->options.methods,
+                   "Methods to run, comma-separated: poly, paper-mlp, ballsight, oracle")
+      ->delimiter(',')
+      ->capture_default_str();
   omni->add_flag("--json", args->json, "Print JSON instead of a table");
   omni->add_option("--plot", args->plot, "Also write a PNG of every estimate around the ball")
       ->type_name("PNG");

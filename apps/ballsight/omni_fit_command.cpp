@@ -31,6 +31,8 @@ struct FitArgs {
   std::optional<std::string> center;
   std::optional<std::string> image_size;
   std::optional<int> degree;
+  std::optional<double> height_cm;
+  std::optional<double> height_sigma_cm;
   std::optional<std::string> model;
 };
 
@@ -48,6 +50,16 @@ void run_fit(const FitArgs& args) {
   if (args.degree) {
     require(method == OmniMethod::kPoly, "--degree", "applies only to --method poly");
     options.poly.degree = *args.degree;
+  }
+  if (args.height_cm) {
+    require(method == OmniMethod::kBallsight, "--viewpoint-height-cm",
+            "applies only to --method ballsight");
+    options.ballsight.viewpoint_height_cm = *args.height_cm;
+  }
+  if (args.height_sigma_cm) {
+    require(args.height_cm.has_value(), "--viewpoint-height-sigma-cm",
+            "needs --viewpoint-height-cm");
+    options.ballsight.viewpoint_height_sigma_cm = *args.height_sigma_cm;
   }
   std::optional<Vec2> center;
   if (args.center) center = parse_pixel_pair(*args.center, "--center");
@@ -100,6 +112,11 @@ void add_omni_fit_commands(CLI::App& omni) {
   fit->add_option("--image-size", fit_args->image_size,
                   "Image size WxH (default: one that covers the samples' radii with margin)");
   fit->add_option("--degree", fit_args->degree, "Polynomial degree for --method poly (default 6)");
+  fit->add_option("--viewpoint-height-cm", fit_args->height_cm,
+                  "For --method ballsight: the mirror's effective viewpoint height above the floor "
+                  "as measured on the robot (floor markers determine it poorly)");
+  fit->add_option("--viewpoint-height-sigma-cm", fit_args->height_sigma_cm,
+                  "Standard deviation of that measurement (default 0.5)");
   fit->add_option("--model", fit_args->model,
                   "Also write the fitted model's parameters (JSON, for omni predict --model)");
   fit->callback([fit_args] { run_fit(*fit_args); });

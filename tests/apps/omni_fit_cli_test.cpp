@@ -119,6 +119,12 @@ TEST_F(OmniFitCli, BadFitInputIsOneLineAndLeavesTheOutput) {
                   out);
   expect_rejected(with(samples().string(), {"--center", "1,2,3"}), "--center", out);
   expect_rejected(with(samples().string(), {"--degree", "3"}), "--degree: applies only", out);
+  expect_rejected(with(samples().string(), {"--method", "poly", "--viewpoint-height-cm", "60"}),
+                  "--viewpoint-height-cm: applies only", out);
+  expect_rejected(with(samples().string(), {"--viewpoint-height-sigma-cm", "1"}),
+                  "needs --viewpoint-height-cm", out);
+  expect_rejected(with(samples().string(), {"--viewpoint-height-cm", "-5"}),
+                  "viewpoint_height_cm: expected a positive number", out);
   expect_rejected(with((dir / "missing.csv").string(), {}), "missing.csv", out);
 }
 

@@ -39,13 +39,21 @@ struct RadialProfile {
   }
 };
 
-// Start values by grid search over xi and height, the focal length by least squares for each,
-// scored by the sum of absolute radius errors (robust to a few mislabelled samples).
-RadialProfile initial_profile(std::span<const PolarSample> samples) {
+// Start values by grid search over xi and height (only the measured height when there is one),
+// the focal length by least squares for each, scored by the sum of absolute radius errors
+// (robust to a few mislabelled samples).
+RadialProfile initial_profile(std::span<const PolarSample> samples,
+                              std::optional<double> measured_height_cm) {
+  std::vector<double> heights_cm;
+  if (measured_height_cm) {
+    heights_cm.push_back(*measured_height_cm);
+  } else {
+    for (double h = 5.0; h <= 500.0; h *= 1.1) heights_cm.push_back(h);
+  }
   RadialProfile best;
   double best_cost = INFINITY;
   for (double xi = 0.0; xi <= 2.0 + 1e-9; xi += 0.05) {
-    for (double height_cm = 5.0; height_cm <= 500.0; height_cm *= 1.1) {
+    for (double height_cm : heights_cm) {
       double gr = 0.0, gg = 0.0;
       for (const PolarSample& s : samples) {
         const double g = RadialProfile::shape(s.distance_cm, xi, height_cm);
@@ -66,13 +74,19 @@ RadialProfile initial_profile(std::span<const PolarSample> samples) {
   return best;
 }
 
-// One sample as the fit sees it: residuals in cm scaled by the cm-per-pixel of the image around
-// it (radially and tangentially), so they are pixel-like and comparable across distances.
+// How a sample enters the fit. A marker with known bearing under a model without distortion
+// gives its reprojection error in pixels (the maximum-likelihood residual for click noise); with
+// distortion (whose inverse has no closed form) its floor error scaled to pixel-like units; a
+// sample without bearing its distance error, scaled alike.
+enum class ResidualKind { kReprojection, kFloorPoint, kDistance };
+
+// One sample as the fit sees it. The floor residuals are in cm scaled by the pixels-per-cm of the
+// image around the sample (radially and tangentially), so they are comparable across distances.
 struct SampleTerm {
   Vec2 pixel;
   Vec2 target_cm;  // floor point when the bearing is known
   double distance_cm = 0.0;
-  bool has_bearing = false;
+  ResidualKind kind = ResidualKind::kDistance;
   double inv_radial_cm = 1.0;      // pixels per cm, radially
   double inv_tangential_cm = 1.0;  // pixels per cm, across
 };
@@ -82,6 +96,19 @@ template <typename T>
 void floor_at(const SampleTerm& term, const T* p, T* floor) {
   floor_point_from_pixel(p, T(term.pixel.x()), T(term.pixel.y()), floor, true);
 }
+
+struct ReprojectionResidual {
+  const SampleTerm* term;
+  template <typename T>
+  bool operator()(const T* p, T* residual) const {
+    const T floor[2] = {T(term->target_cm.x()), T(term->target_cm.y())};
+    T pixel[2];
+    if (!pixel_from_floor_point(p, floor, pixel)) return false;
+    residual[0] = pixel[0] - T(term->pixel.x());
+    residual[1] = pixel[1] - T(term->pixel.y());
+    return true;
+  }
+};
 
 struct PointResidual {
   const SampleTerm* term;
@@ -113,25 +140,29 @@ struct DistanceResidual {
 
 // Weak priors: the principal point near the image centre, the mount near the ideal, no
 // distortion. They decide what the samples cannot (the yaw without bearings) and barely move
-// what they can.
+// what they can. The viewpoint height, when measured, with its uncertainty: floor markers
+// determine it poorly (docs/omni-calibration.md).
 struct PriorResidual {
-  static constexpr int kCount = 8;
+  static constexpr int kCount = 9;
   Vec2 center_px;
   double inv_center_px;
   double inv_rotation_rad;
   double inv_distortion;
+  double height_cm = 0.0;
+  double inv_height_cm = 0.0;  // 0: no measured height
   template <typename T>
   bool operator()(const T* p, T* residual) const {
     residual[0] = (p[2] - T(center_px.x())) * inv_center_px;
     residual[1] = (p[3] - T(center_px.y())) * inv_center_px;
     for (int i = 0; i < 3; ++i) residual[2 + i] = p[5 + i] * inv_rotation_rad;
     for (int i = 0; i < 3; ++i) residual[5 + i] = p[8 + i] * inv_distortion;
+    residual[8] = (p[4] - T(height_cm)) * inv_height_cm;
     return true;
   }
 };
 
 std::vector<SampleTerm> sample_terms(std::span<const PolarSample> samples, const Vec2& center_px,
-                                     const RadialProfile& profile) {
+                                     const RadialProfile& profile, bool distortion) {
   std::vector<SampleTerm> terms;
   terms.reserve(samples.size());
   for (const PolarSample& s : samples) {
@@ -139,7 +170,7 @@ std::vector<SampleTerm> sample_terms(std::span<const PolarSample> samples, const
     term.pixel = pixel_from_image_polar({s.theta_deg, s.radius_px}, center_px);
     term.distance_cm = s.distance_cm;
     if (s.bearing_deg) {
-      term.has_bearing = true;
+      term.kind = distortion ? ResidualKind::kFloorPoint : ResidualKind::kReprojection;
       term.target_cm = robot_point_from_bearing(
           robot_bearing_deg_from_image_theta_deg(*s.bearing_deg), s.distance_cm);
     }
@@ -154,18 +185,31 @@ std::vector<SampleTerm> sample_terms(std::span<const PolarSample> samples, const
   return terms;
 }
 
+// The term's residual block: its cost function and its number of components.
+std::pair<ceres::CostFunction*, int> cost_function(const SampleTerm& term) {
+  constexpr int n = CatadioptricFloorParams::kSize;
+  switch (term.kind) {
+    case ResidualKind::kReprojection:
+      return {new ceres::AutoDiffCostFunction<ReprojectionResidual, 2, n>(
+                  new ReprojectionResidual{&term}),
+              2};
+    case ResidualKind::kFloorPoint:
+      return {new ceres::AutoDiffCostFunction<PointResidual, 2, n>(new PointResidual{&term}), 2};
+    case ResidualKind::kDistance:
+      break;
+  }
+  return {new ceres::AutoDiffCostFunction<DistanceResidual, 1, n>(new DistanceResidual{&term}), 1};
+}
+
 // The pixel-like residual components of every sample at `p`.
 std::vector<double> residual_components(const std::vector<SampleTerm>& terms, const double* p) {
   std::vector<double> components;
+  const double* parameters[] = {p};
   for (const SampleTerm& term : terms) {
+    const auto [cost, count] = cost_function(term);
+    const std::unique_ptr<ceres::CostFunction> owned(cost);
     double r[2];
-    if (term.has_bearing) {
-      PointResidual{&term}(p, r);
-      components.insert(components.end(), {r[0], r[1]});
-    } else {
-      DistanceResidual{&term}(p, r);
-      components.push_back(r[0]);
-    }
+    if (cost->Evaluate(parameters, r, nullptr)) components.insert(components.end(), r, r + count);
   }
   return components;
 }
@@ -183,19 +227,7 @@ void solve(const std::vector<SampleTerm>& terms, const PriorResidual& prior, con
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
   double* p = params.data();
-  for (const SampleTerm& term : terms) {
-    if (term.has_bearing) {
-      problem.AddResidualBlock(
-          new ceres::AutoDiffCostFunction<PointResidual, 2, CatadioptricFloorParams::kSize>(
-              new PointResidual{&term}),
-          loss, p);
-    } else {
-      problem.AddResidualBlock(
-          new ceres::AutoDiffCostFunction<DistanceResidual, 1, CatadioptricFloorParams::kSize>(
-              new DistanceResidual{&term}),
-          loss, p);
-    }
-  }
+  for (const SampleTerm& term : terms) problem.AddResidualBlock(cost_function(term).first, loss, p);
   problem.AddResidualBlock(
       new ceres::AutoDiffCostFunction<PriorResidual, PriorResidual::kCount,
                                       CatadioptricFloorParams::kSize>(new PriorResidual(prior)),
@@ -250,6 +282,11 @@ void BallsightFitOptions::validate() const {
   require(positive(prior_rotation_deg), "ballsight prior_rotation_deg",
           "expected a positive number");
   require(positive(prior_distortion), "ballsight prior_distortion", "expected a positive number");
+  require(
+      !viewpoint_height_cm || (std::isfinite(*viewpoint_height_cm) && *viewpoint_height_cm > 0.0),
+      "ballsight viewpoint_height_cm", "expected a positive number");
+  require(positive(viewpoint_height_sigma_cm), "ballsight viewpoint_height_sigma_cm",
+          "expected a positive number");
   require(max_iterations >= 1, "ballsight max_iterations", "expected a positive integer");
   require(distortion_terms >= 0 && distortion_terms <= 3, "ballsight distortion_terms",
           "expected an integer in [0, 3]");
@@ -347,8 +384,9 @@ BallsightGroundModel fit_ballsight_model(std::span<const PolarSample> samples,
               std::to_string(kMinDistances) + " distinct distances, got " +
               std::to_string(samples.size()) + " at " + std::to_string(distances.size()));
 
-  const RadialProfile profile = initial_profile(samples);
-  const std::vector<SampleTerm> terms = sample_terms(samples, image.center_px, profile);
+  const RadialProfile profile = initial_profile(samples, options.viewpoint_height_cm);
+  const std::vector<SampleTerm> terms =
+      sample_terms(samples, image.center_px, profile, options.distortion_terms > 0);
   CatadioptricFloorParams start;
   start.xi = profile.xi;
   start.focal_px = profile.focal_px;
@@ -357,9 +395,13 @@ BallsightGroundModel fit_ballsight_model(std::span<const PolarSample> samples,
   start.rotation_rad = {0.0, 0.0, initial_yaw_rad(samples)};
   ParamArray params = start.to_array();
 
-  const PriorResidual prior{image.center_px, 1.0 / options.prior_center_px,
-                            1.0 / rad_from_deg(options.prior_rotation_deg),
-                            1.0 / options.prior_distortion};
+  PriorResidual prior{image.center_px, 1.0 / options.prior_center_px,
+                      1.0 / rad_from_deg(options.prior_rotation_deg),
+                      1.0 / options.prior_distortion};
+  if (options.viewpoint_height_cm) {
+    prior.height_cm = *options.viewpoint_height_cm;
+    prior.inv_height_cm = 1.0 / options.viewpoint_height_sigma_cm;
+  }
   ceres::HuberLoss huber(options.huber_px);
   solve(terms, prior, image, &huber, options, params);
   const double sigma = robust_sigma(residual_components(terms, params.data()));

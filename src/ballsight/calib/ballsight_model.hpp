@@ -4,6 +4,7 @@
 // direction as well as distance (a tilted mirror bends bearings), is checked strictly monotone
 // in radius along every ray of its valid range, and flags queries outside that range.
 
+#include <optional>
 #include <span>
 
 #include "ballsight/calib/catadioptric_floor.hpp"
@@ -20,6 +21,10 @@ struct BallsightFitOptions {
   int max_iterations = 200;         // per pass
   double range_margin_fraction = 0.03;  // valid range beyond the sample radii, of their span
   int distortion_terms = 0;  // radial distortion terms fitted (0 to 3; catadioptric_floor.hpp)
+  /// The effective viewpoint's height above the floor as measured on the robot, if it was, and
+  /// the measurement's standard deviation: a prior the fit weighs against the samples.
+  std::optional<double> viewpoint_height_cm;
+  double viewpoint_height_sigma_cm = 0.5;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

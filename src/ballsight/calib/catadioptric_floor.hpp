@@ -80,4 +80,25 @@ bool floor_point_from_pixel(const T* p, const T& u, const T& v, T* floor_cm,
   return true;
 }
 
+/// Floor point (cm, robot frame) -> pixel for parameters `p` laid out as to_array(), the inverse
+/// of floor_point_from_pixel for a model without distortion (p[8..10] are ignored). Returns false
+/// when the point is not in front of the mirror.
+template <typename T>
+bool pixel_from_floor_point(const T* p, const T* floor_cm, T* pixel) {
+  const T viewpoint_to_point[3] = {floor_cm[0], floor_cm[1], -p[4]};
+  const T inverse_rotation[3] = {-p[5], -p[6], -p[7]};
+  T ray[3];
+  ceres::AngleAxisRotatePoint(inverse_rotation, viewpoint_to_point, ray);
+  // The ideal mount's axes (floor_point_from_pixel), back to the camera's.
+  const T cx = -ray[1];
+  const T cy = -ray[0];
+  const T cz = -ray[2];
+  using std::sqrt;
+  const T denominator = cz + p[0] * sqrt(cx * cx + cy * cy + cz * cz);
+  if (!(denominator > T(0.0))) return false;
+  pixel[0] = p[1] * cx / denominator + p[2];
+  pixel[1] = p[1] * cy / denominator + p[3];
+  return true;
+}
+
 }  // namespace ballsight

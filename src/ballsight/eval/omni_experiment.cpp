@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <memory>
+#include <random>
+#include <set>
 
 #include "ballsight/calib/ground_error.hpp"
 #include "ballsight/calib/model_ground_map.hpp"
@@ -25,6 +28,13 @@ void OmniExperimentOptions::validate() const {
   require(!distances_cm.empty(), where, "needs at least one robot distance");
   for (int d : distances_cm) require(d >= 60 && d <= 460, where, "distances must be 60..460 cm");
   require(turn_step_deg >= 1.0 && turn_step_deg <= 180.0, where, "turn_step_deg must be 1..180");
+  require(!methods.empty(), where, "needs at least one method");
+  require(!measured_height_sigma_cm ||
+              (std::isfinite(*measured_height_sigma_cm) && *measured_height_sigma_cm > 0.0),
+          where, "measured_height_sigma_cm must be a positive number");
+  for (const std::string& m : methods) {
+    if (m != "oracle") parse_omni_method(m, where + " method");
+  }
   OmniRigParams rig;
   rig.tilt_deg = tilt_deg;
   rig.tilt_azimuth_deg = tilt_azimuth_deg;
@@ -73,6 +83,20 @@ Pose2D robot_pose_m(const OmniExperimentOptions& o, int distance_cm, double angl
   return {position, rad_from_deg(90.0 - angle_deg)};
 }
 
+// The paper's run-time pipeline (Algorithms 3-6) over a distance function.
+Locate paper_locate(const YuvRange& ball_color, const Vec2& center_px, RadialDistanceFn distance) {
+  auto pipeline =
+      std::make_shared<const PaperOmniPipeline>(ball_color, center_px, std::move(distance));
+  return [pipeline](const cv::Mat& f, const Pose2D& p) { return pipeline->locate_cm(f, p); };
+}
+
+// ballsight's run-time pipeline over a ground map, which it keeps alive.
+Locate ballsight_locate(const YuvRange& ball_color, GroundMap map) {
+  auto owned = std::make_shared<const GroundMap>(std::move(map));
+  auto pipeline = std::make_shared<const BallsightOmniPipeline>(ball_color, *owned, BallOnFloor{});
+  return [owned, pipeline](const cv::Mat& f, const Pose2D& p) { return pipeline->locate_cm(f, p); };
+}
+
 Pose2D in_cm(const Pose2D& pose_m) {
   return {pose_m.position * 100.0, pose_m.heading_rad};
 }
@@ -102,50 +126,67 @@ OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options) {
 
   OmniExperimentResult result;
   result.options = options;
-  std::map<std::string, std::unique_ptr<OmniGroundModel>> models;
-  for (OmniMethod method : {OmniMethod::kPoly, OmniMethod::kPaperMlp, OmniMethod::kBallsight}) {
-    const auto start = Clock::now();
-    auto model = fit_omni_model(method, clicks.samples, image);
-    MethodResult& r = result.methods[std::string(omni_method_name(method))];
-    r.fit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    r.held_out_median_cm = ground_errors(*model, held_out).position_cm.median;
-    models[std::string(model->name())] = std::move(model);
-  }
-
+  const std::set<std::string> selected(options.methods.begin(), options.methods.end());
+  std::map<std::string, Locate> pipelines;
   // The run-time pipelines. The paper's robots read the MLP through its Eq. 7-8 table and
   // evaluate the polynomial directly (its Table VI "old calibration").
   const YuvRange ball_color = yuv_range_around(sim::OmniPalette{}.ball_bgr);
-  const OmniGroundModel& poly = *models.at("poly");
-  const IrisLut mlp_table = build_iris_px2cm([&](double theta, double r) -> std::optional<double> {
-    const double d = models.at("paper-mlp")->predict(theta, r).distance_cm;
-    return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
-  });
-  const GroundMap ballsight_map = ground_map_from_model(*models.at("ballsight"));
-  GroundMapInfo truth_info = ballsight_map.info();
-  truth_info.method = "oracle";
-  const GroundMap truth_map = ground_map_from_rig(rig, truth_info);
-
-  const PaperOmniPipeline poly_pipeline(
-      ball_color, configured_center, [&](double theta, double r) -> std::optional<double> {
-        const double d = poly.predict(theta, r).distance_cm;  // Algorithm 1
-        return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
-      });
-  const PaperOmniPipeline mlp_pipeline(ball_color, configured_center,
-                                       [&](double theta, double r) -> std::optional<double> {
-                                         const auto d = iris_distance_cm(mlp_table, theta, r);
+  OmniFitOptions fit_options;
+  if (options.measured_height_sigma_cm) {
+    std::mt19937_64 rng(options.seed + 2);
+    const double sigma = *options.measured_height_sigma_cm;
+    fit_options.ballsight.viewpoint_height_cm =
+        100.0 * rig_params.height_m + sigma * std::normal_distribution<double>()(rng);
+    fit_options.ballsight.viewpoint_height_sigma_cm = sigma;
+  }
+  for (OmniMethod method : {OmniMethod::kPoly, OmniMethod::kPaperMlp, OmniMethod::kBallsight}) {
+    const std::string name(omni_method_name(method));
+    if (!selected.contains(name)) continue;
+    const auto start = Clock::now();
+    std::shared_ptr<const OmniGroundModel> model =
+        fit_omni_model(method, clicks.samples, image, fit_options);
+    MethodResult& fitted = result.methods[name];
+    fitted.fit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    fitted.held_out_median_cm = ground_errors(*model, held_out).position_cm.median;
+    switch (method) {
+      case OmniMethod::kPoly:  // Algorithm 1, evaluated directly
+        pipelines[name] = paper_locate(ball_color, configured_center,
+                                       [model](double theta, double r) -> std::optional<double> {
+                                         const double d = model->predict(theta, r).distance_cm;
+                                         return std::isfinite(d) ? std::optional(d) : std::nullopt;
+                                       });
+        break;
+      case OmniMethod::kPaperMlp: {
+        auto table = std::make_shared<const IrisLut>(
+            build_iris_px2cm([&](double theta, double r) -> std::optional<double> {
+              const double d = model->predict(theta, r).distance_cm;
+              return std::isfinite(d) ? std::optional(d) : std::nullopt;
+            }));
+        pipelines[name] = paper_locate(ball_color, configured_center,
+                                       [table](double theta, double r) -> std::optional<double> {
+                                         const auto d = iris_distance_cm(*table, theta, r);
                                          if (!d || *d <= 0) return std::nullopt;
                                          return static_cast<double>(*d);
                                        });
-  const BallsightOmniPipeline ballsight_pipeline(ball_color, ballsight_map, BallOnFloor{});
-  const BallsightOmniPipeline oracle_pipeline(ball_color, truth_map, BallOnFloor{});
-  const std::map<std::string, Locate> pipelines = {
-      {"poly", [&](const cv::Mat& f, const Pose2D& p) { return poly_pipeline.locate_cm(f, p); }},
-      {"paper-mlp",
-       [&](const cv::Mat& f, const Pose2D& p) { return mlp_pipeline.locate_cm(f, p); }},
-      {"ballsight",
-       [&](const cv::Mat& f, const Pose2D& p) { return ballsight_pipeline.locate_cm(f, p); }},
-      {"oracle",
-       [&](const cv::Mat& f, const Pose2D& p) { return oracle_pipeline.locate_cm(f, p); }}};
+        break;
+      }
+      case OmniMethod::kBallsight:
+        pipelines[name] = ballsight_locate(ball_color, ground_map_from_model(*model));
+        break;
+    }
+  }
+  if (selected.contains("oracle")) {
+    // The true mapping over the range the markers cover, through ballsight's detector.
+    const RadiusRange range = valid_radius_from_samples(clicks.samples);
+    GroundMapInfo info;
+    info.width = image.width;
+    info.height = image.height;
+    info.image_center_px = image.center_px;
+    info.min_radius_px = range.min_px;
+    info.max_radius_px = range.max_px;
+    info.method = "oracle";
+    pipelines["oracle"] = ballsight_locate(ball_color, ground_map_from_rig(rig, info));
+  }
 
   // The test (Section V-A): render each pose once, every method sees the same frame.
   const sim::OmniRenderer renderer(rig_params);
@@ -199,7 +240,10 @@ nlohmann::json omni_experiment_json(const OmniExperimentResult& result) {
             {"sensor_noise", o.sensor_noise},
             {"click_noise_px", o.click_noise_px},
             {"ball_cm", {o.ball_cm.x(), o.ball_cm.y()}},
-            {"turn_step_deg", o.turn_step_deg}}}};
+            {"turn_step_deg", o.turn_step_deg},
+            {"measured_height_sigma_cm", o.measured_height_sigma_cm
+                                             ? nlohmann::json(*o.measured_height_sigma_cm)
+                                             : nlohmann::json()}}}};
 }
 
 std::string omni_experiment_table(const OmniExperimentResult& result) {

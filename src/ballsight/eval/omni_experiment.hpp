@@ -27,6 +27,11 @@ struct OmniExperimentOptions {
   Vec2 ball_cm{400.0, 600.0};
   std::vector<int> distances_cm{120, 200, 285};
   double turn_step_deg = 30.0;
+  /// When set, ballsight is also given the viewpoint height as measured on the robot: the true
+  /// height plus a normal error of this standard deviation (drawn from the seed), weighed as such.
+  std::optional<double> measured_height_sigma_cm;
+  /// Which methods to run, of poly, paper-mlp, ballsight and oracle (all by default).
+  std::vector<std::string> methods{"poly", "paper-mlp", "ballsight", "oracle"};
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
