@@ -22,6 +22,8 @@ void add_demo_command(CLI::App& app);
 void add_omni_fit_commands(CLI::App& omni);
 /// `omni locate` (omni_locate_command.cpp).
 void add_omni_locate_command(CLI::App& omni);
+/// `omni markers`: calibration samples from the markers of one frame (omni_markers_command.cpp).
+void add_omni_markers_command(CLI::App& omni);
 
 /// `eval omni` (eval_command.cpp), registered on the `eval` group.
 void add_eval_commands(CLI::App& eval);

@@ -31,13 +31,10 @@ struct LocateArgs {
 void run_locate(const LocateArgs& args) {
   const std::vector<double> robot =
       parse_numbers(args.robot, 3, "--robot", "X,Y,THETA_DEG: robot position in cm and heading");
-  const std::vector<double> bgr = parse_numbers(args.ball_bgr, 3, "--ball-bgr", "B,G,R in 0..255");
-  for (double c : bgr) require(c >= 0 && c <= 255, "--ball-bgr", "channels must be in 0..255");
+  const cv::Vec3b ball_bgr = parse_bgr(args.ball_bgr, "--ball-bgr");
   const GroundMap map = load_ground_map(args.lut);
   const cv::Mat frame = read_image_bgr(args.image, cv::Size(map.width(), map.height()));
   const Pose2D robot_cm{{robot[0], robot[1]}, rad_from_deg(robot[2])};
-  const cv::Vec3b ball_bgr(static_cast<uchar>(bgr[0]), static_cast<uchar>(bgr[1]),
-                           static_cast<uchar>(bgr[2]));
   BallOnFloor ball;
   ball.radius_cm = args.ball_radius_cm;
   const BallsightOmniPipeline pipeline(yuv_range_around(ball_bgr), map, ball);

@@ -53,4 +53,10 @@ Eigen::Vector2i parse_image_size(const std::string& text, const std::string& opt
   return {width, height};
 }
 
+cv::Vec3b parse_bgr(const std::string& text, const std::string& option) {
+  const std::vector<double> bgr = parse_numbers(text, 3, option, "B,G,R in 0..255");
+  for (double c : bgr) require(c >= 0 && c <= 255, option, "channels must be in 0..255");
+  return {static_cast<uchar>(bgr[0]), static_cast<uchar>(bgr[1]), static_cast<uchar>(bgr[2])};
+}
+
 }  // namespace ballsight::app

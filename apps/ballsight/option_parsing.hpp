@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
@@ -25,5 +26,8 @@ Vec2 parse_pixel_pair(const std::string& text, const std::string& option);
 
 /// "WxH" -> two positive integers; throws InputError naming `option`.
 Eigen::Vector2i parse_image_size(const std::string& text, const std::string& option);
+
+/// "B,G,R" -> a colour, each channel in 0..255; throws InputError naming `option`.
+cv::Vec3b parse_bgr(const std::string& text, const std::string& option);
 
 }  // namespace ballsight::app
