@@ -9,7 +9,7 @@
 
 #include "ballsight/camera/iris_lut.hpp"
 #include "ballsight/camera/rig_ground_map.hpp"
-#include "ballsight/eval/omni_pipelines.hpp"
+#include "ballsight/pipeline/omni_pipelines.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
 
 namespace ballsight {

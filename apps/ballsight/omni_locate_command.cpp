@@ -11,7 +11,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
-#include "ballsight/eval/omni_pipelines.hpp"
+#include "ballsight/pipeline/omni_pipelines.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 

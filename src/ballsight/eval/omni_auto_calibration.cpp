@@ -3,7 +3,7 @@
 #include "ballsight/calib/marker_samples.hpp"
 #include "ballsight/detect/marker_matching.hpp"
 #include "ballsight/detect/omni_blobs.hpp"
-#include "ballsight/eval/omni_pipelines.hpp"
+#include "ballsight/pipeline/omni_pipelines.hpp"
 
 namespace ballsight {
 

@@ -16,7 +16,7 @@
 #include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
-#include "ballsight/eval/omni_pipelines.hpp"
+#include "ballsight/pipeline/omni_pipelines.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
 
 namespace ballsight {

@@ -3,8 +3,9 @@
 // ball's centre meets the floor *behind* the ball, so a pixel -> floor table read at the ball's
 // centre pixel overshoots. With the viewpoint at height h above the robot origin and a ball of
 // radius R, that floor hit is F = C h / (h - R) for the ball centre C (both horizontal, robot
-// frame), so C = F (h - R) / h. The omnivision paper reads the table at the ball's nearest edge
-// instead (Algorithm 3), which undershoots by about a radius.
+// frame), so C = F (h - R) / h. The omnivision paper reads the table at the first ball pixel of
+// the last scan ray meeting the ball (Algorithm 3 as printed), a side pixel near the centre's
+// radius, and so overshoots by up to F - C.
 
 #include <opencv2/core.hpp>
 #include <optional>

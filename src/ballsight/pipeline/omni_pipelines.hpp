@@ -42,7 +42,8 @@ class PaperOmniPipeline {
 
 class BallsightOmniPipeline {
  public:
-  /// `ball.viewpoint_height_cm` defaults to the map's when the map knows it.
+  /// `ball.viewpoint_height_cm` defaults to the map's when the map knows it. The pipeline reads
+  /// `map` in place (a table is megabytes): it must outlive the pipeline.
   BallsightOmniPipeline(const YuvRange& ball_color, const GroundMap& map, BallOnFloor ball);
 
   /// The ball's centre in the robot frame (cm): the largest ball-coloured blob.

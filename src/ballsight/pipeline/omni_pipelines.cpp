@@ -1,4 +1,4 @@
-#include "ballsight/eval/omni_pipelines.hpp"
+#include "ballsight/pipeline/omni_pipelines.hpp"
 
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
