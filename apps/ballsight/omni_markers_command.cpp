@@ -1,5 +1,6 @@
 // `ballsight omni markers`: calibration without clicking. The floor markers in one omni frame are
 // found by colour, matched to the known layout and written as calibration samples for omni fit.
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -30,6 +31,7 @@ struct MarkersArgs {
   double min_cm = 60.0;
   double max_cm = 460.0;
   double step_cm = 50.0;
+  std::optional<double> diameter_cm;
 };
 
 void run_markers(const MarkersArgs& args) {
@@ -39,24 +41,25 @@ void run_markers(const MarkersArgs& args) {
   layout.min_distance_m = 0.01 * args.min_cm;
   layout.max_distance_m = 0.01 * args.max_cm;
   layout.distance_step_m = 0.01 * args.step_cm;
-  std::vector<Vec2> layout_in_robot;
+  if (args.diameter_cm) {
+    require(std::isfinite(*args.diameter_cm) && *args.diameter_cm > 0.0, "--marker-diameter-cm",
+            "expected a positive number");
+  }
+  std::vector<LayoutMarker> markers;
   for (const sim::FloorMarker& m : sim::calibration_markers(Pose2D{}, layout)) {
-    layout_in_robot.push_back(m.position_in_field);
+    markers.push_back({m.position_in_field, args.diameter_cm ? 0.005 * *args.diameter_cm : 0.0});
   }
   const cv::Mat frame = read_image_bgr(args.image);
   const Vec2 center = args.center ? parse_pixel_pair(*args.center, "--center")
                                   : Vec2(0.5 * (frame.cols - 1), 0.5 * (frame.rows - 1));
-  const MarkerFrameSamples found =
-      samples_from_marker_frame(frame, layout_in_robot, marker_bgr, center);
+  const MarkerFrameSamples found = samples_from_marker_frame(frame, markers, marker_bgr, center);
   require(found.samples.size() >= kMinMatched, args.image,
           "matched " + std::to_string(found.samples.size()) + " of " +
-              std::to_string(layout_in_robot.size()) + " layout markers (" +
-              std::to_string(found.blobs) +
+              std::to_string(markers.size()) + " layout markers (" + std::to_string(found.blobs) +
               " blobs of the marker colour); check --marker-bgr, --center and the layout options");
   write_polar_samples_csv(args.out, found.samples);
-  std::cout << "matched " << found.samples.size() << " of " << layout_in_robot.size()
-            << " layout markers (" << found.blobs << " marker-coloured blobs) -> " << args.out
-            << "\n";
+  std::cout << "matched " << found.samples.size() << " of " << markers.size() << " layout markers ("
+            << found.blobs << " marker-coloured blobs) -> " << args.out << "\n";
 }
 
 }  // namespace
@@ -80,6 +83,9 @@ void add_omni_markers_command(CLI::App& omni) {
   cmd->add_option("--max-cm", args->max_cm, "Distance of the farthest ring, cm")
       ->capture_default_str();
   cmd->add_option("--step-cm", args->step_cm, "Distance between rings, cm")->capture_default_str();
+  cmd->add_option("--marker-diameter-cm", args->diameter_cm,
+                  "The markers' diameter, cm: when given, each blob centroid's perspective shift "
+                  "is predicted by a first fit and removed");
   cmd->callback([args] { run_markers(*args); });
 }
 

@@ -73,6 +73,7 @@ TEST(OmniMarkersCli, BadInputIsOneLineAndLeavesTheOutput) {
            {{"--image", calibration, "--marker-bgr", "0,300,0"}, "--marker-bgr"},
            {{"--image", calibration, "--center", "x"}, "--center"},
            {{"--image", calibration, "--min-cm", "10"}, "min_distance_m"},
+           {{"--image", calibration, "--marker-diameter-cm", "-3"}, "--marker-diameter-cm"},
            {{"--image", (dir / "missing.png").string()}, "missing.png"}}) {
     std::vector<std::string> command = {"omni", "markers", "--out", out};
     command.insert(command.end(), args.begin(), args.end());

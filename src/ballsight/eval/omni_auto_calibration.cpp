@@ -1,5 +1,6 @@
 #include "ballsight/eval/omni_auto_calibration.hpp"
 
+#include "ballsight/calib/marker_centroid.hpp"
 #include "ballsight/calib/marker_samples.hpp"
 #include "ballsight/detect/marker_matching.hpp"
 #include "ballsight/detect/omni_blobs.hpp"
@@ -8,7 +9,7 @@
 namespace ballsight {
 
 MarkerFrameSamples samples_from_marker_frame(const cv::Mat& bgr,
-                                             const std::vector<Vec2>& layout_in_robot,
+                                             const std::vector<LayoutMarker>& layout,
                                              const cv::Vec3b& marker_bgr,
                                              const Vec2& image_center) {
   constexpr ColorClassMask kMarker = 1;
@@ -21,13 +22,26 @@ MarkerFrameSamples samples_from_marker_frame(const cv::Mat& bgr,
 
   std::vector<Vec2> pixels;
   for (const OmniBlob& blob : blobs) pixels.push_back(blob.centroid_px);
+  std::vector<Vec2> layout_in_robot;
+  bool sizes_known = true;
+  for (const LayoutMarker& m : layout) {
+    layout_in_robot.push_back(m.p_in_robot);
+    sizes_known = sizes_known && m.radius_m > 0.0;
+  }
   MarkerMatchOptions match_options;
   match_options.image_center = image_center;
-  std::vector<MarkerObservation> observations;
+  std::vector<FoundDisc> discs;
   for (const MarkerMatch& m : match_markers_to_layout(pixels, layout_in_robot, match_options)) {
-    observations.push_back({m.pixel, layout_in_robot[static_cast<size_t>(m.layout_index)]});
+    const LayoutMarker& marker = layout[static_cast<size_t>(m.layout_index)];
+    discs.push_back({m.pixel, marker.p_in_robot, marker.radius_m});
   }
-  return {samples_from_markers(observations, image_center), static_cast<int>(blobs.size())};
+  const int blob_count = static_cast<int>(blobs.size());
+  if (sizes_known && !discs.empty()) {
+    return {debiased_disc_samples(discs, {bgr.cols, bgr.rows, image_center}), blob_count};
+  }
+  std::vector<MarkerObservation> observations;
+  for (const FoundDisc& disc : discs) observations.push_back({disc.centroid_px, disc.p_in_robot});
+  return {samples_from_markers(observations, image_center), blob_count};
 }
 
 }  // namespace ballsight

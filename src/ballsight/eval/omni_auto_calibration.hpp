@@ -1,7 +1,8 @@
 #pragma once
 // Calibration without clicking: the floor markers in an omni calibration frame are found by
 // colour (detect/omni_blobs.hpp), matched to the known layout (detect/marker_matching.hpp) and
-// turned into polar samples (Algorithm 2), ready for any mapping method.
+// turned into polar samples (Algorithm 2), ready for any mapping method. When the markers' sizes
+// are known, the perspective shift of each blob centroid is removed (calib/marker_centroid.hpp).
 
 #include <opencv2/core.hpp>
 #include <vector>
@@ -16,9 +17,17 @@ struct MarkerFrameSamples {
   int blobs = 0;                     // marker-coloured blobs found
 };
 
-/// `layout_in_robot`: the markers' positions in the robot frame (m); `marker_bgr`: their colour.
+/// A marker of the layout: its centre in the robot frame (m) and its disc's radius (m, 0 when
+/// unknown).
+struct LayoutMarker {
+  Vec2 p_in_robot = Vec2::Zero();
+  double radius_m = 0.0;
+};
+
+/// `layout`: the markers; `marker_bgr`: their colour. With every radius known, the samples are
+/// those of the discs' centres (ballsight's model fitted to predict the centroid shifts).
 MarkerFrameSamples samples_from_marker_frame(const cv::Mat& bgr,
-                                             const std::vector<Vec2>& layout_in_robot,
+                                             const std::vector<LayoutMarker>& layout,
                                              const cv::Vec3b& marker_bgr, const Vec2& image_center);
 
 }  // namespace ballsight

@@ -16,7 +16,9 @@
 #include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/eval/omni_auto_calibration.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
+#include "ballsight/sim/omni_marker_layout.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
 
 namespace ballsight {
@@ -33,7 +35,7 @@ void OmniExperimentOptions::validate() const {
               (std::isfinite(*measured_height_sigma_cm) && *measured_height_sigma_cm > 0.0),
           where, "measured_height_sigma_cm must be a positive number");
   for (const std::string& m : methods) {
-    if (m != "oracle") parse_omni_method(m, where + " method");
+    if (m != "oracle" && m != "ballsight-auto") parse_omni_method(m, where + " method");
   }
   OmniRigParams rig;
   rig.tilt_deg = tilt_deg;
@@ -97,6 +99,26 @@ Locate ballsight_locate(const YuvRange& ball_color, GroundMap map) {
   return [owned, pipeline](const cv::Mat& f, const Pose2D& p) { return pipeline->locate_cm(f, p); };
 }
 
+// ballsight's own calibration, without clicking: the markers of one rendered calibration frame
+// found, matched and their centroid shifts removed (omni_auto_calibration.hpp).
+std::vector<PolarSample> auto_calibration_samples(const OmniRigParams& rig,
+                                                  const OmniExperimentOptions& options,
+                                                  const Vec2& configured_center) {
+  sim::OmniScene scene;
+  scene.rig = rig;
+  scene.robot_pose = {{4.0, 6.0}, 0.0};
+  scene.markers = sim::calibration_markers(scene.robot_pose);
+  scene.effects.noise_sigma = options.sensor_noise;
+  scene.noise_seed = options.seed * 1000 + 999;  // the test frames use seed * 1000 + 0..35
+  std::vector<LayoutMarker> layout;
+  for (const sim::FloorMarker& m : sim::calibration_markers(Pose2D{})) {
+    layout.push_back({m.position_in_field, m.radius_m});
+  }
+  return samples_from_marker_frame(sim::render_omni_scene(scene).bgr, layout,
+                                   scene.palette.marker_bgr, configured_center)
+      .samples;
+}
+
 Pose2D in_cm(const Pose2D& pose_m) {
   return {pose_m.position * 100.0, pose_m.heading_rad};
 }
@@ -139,15 +161,19 @@ OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options) {
         100.0 * rig_params.height_m + sigma * std::normal_distribution<double>()(rng);
     fit_options.ballsight.viewpoint_height_sigma_cm = sigma;
   }
+  const auto record_fit = [&](const std::string& name, Clock::time_point start,
+                              const OmniGroundModel& model) {
+    MethodResult& fitted = result.methods[name];
+    fitted.fit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    fitted.held_out_median_cm = ground_errors(model, held_out).position_cm.median;
+  };
   for (OmniMethod method : {OmniMethod::kPoly, OmniMethod::kPaperMlp, OmniMethod::kBallsight}) {
     const std::string name(omni_method_name(method));
     if (!selected.contains(name)) continue;
     const auto start = Clock::now();
     std::shared_ptr<const OmniGroundModel> model =
         fit_omni_model(method, clicks.samples, image, fit_options);
-    MethodResult& fitted = result.methods[name];
-    fitted.fit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    fitted.held_out_median_cm = ground_errors(*model, held_out).position_cm.median;
+    record_fit(name, start, *model);
     switch (method) {
       case OmniMethod::kPoly:  // Algorithm 1, evaluated directly
         pipelines[name] = paper_locate(ball_color, configured_center,
@@ -174,6 +200,14 @@ OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options) {
         pipelines[name] = ballsight_locate(ball_color, ground_map_from_model(*model));
         break;
     }
+  }
+  if (selected.contains("ballsight-auto")) {
+    const auto start = Clock::now();
+    const BallsightGroundModel model =
+        fit_ballsight_model(auto_calibration_samples(rig_params, options, configured_center), image,
+                            fit_options.ballsight);
+    record_fit("ballsight-auto", start, model);
+    pipelines["ballsight-auto"] = ballsight_locate(ball_color, ground_map_from_model(model));
   }
   if (selected.contains("oracle")) {
     // The true mapping over the range the markers cover, through ballsight's detector.
@@ -248,11 +282,11 @@ nlohmann::json omni_experiment_json(const OmniExperimentResult& result) {
 
 std::string omni_experiment_table(const OmniExperimentResult& result) {
   std::string out =
-      "method      distance  found  mean error  std x  std y  (cm)   held-out median  fit\n";
+      "method          distance  found  mean error  std x  std y  (cm)   held-out median  fit\n";
   char line[160];
   for (const auto& [name, method] : result.methods) {
     for (const auto& [distance, r] : method.by_distance) {
-      std::snprintf(line, sizeof line, "%-10s %6d cm  %2d/%-2zu %9.2f %7.2f %6.2f %17.2f %6.2f s\n",
+      std::snprintf(line, sizeof line, "%-14s %6d cm  %2d/%-2zu %9.2f %7.2f %6.2f %17.2f %6.2f s\n",
                     name.c_str(), distance, r.found, r.estimates_cm.size(), r.mean_error_cm,
                     r.std_x_cm, r.std_y_cm, method.held_out_median_cm, method.fit_seconds);
       out += line;

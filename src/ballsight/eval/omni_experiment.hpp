@@ -3,7 +3,9 @@
 // calibrated by each method from clicked floor markers, then a ball at (400, 600) cm is located
 // by a robot 120, 200 and 285 cm away turning in place in 30 degree steps. Methods: `poly` and
 // `paper-mlp` (the paper's baseline and method, each with the paper's run-time pipeline),
-// `ballsight`, and `oracle` (the simulator's true mapping with ballsight's detector: the floor).
+// `ballsight`, `ballsight-auto` (ballsight calibrated from the markers it finds in a rendered
+// calibration frame instead of clicks) and `oracle` (the simulator's true mapping with ballsight's
+// detector: the floor).
 
 #include <cstdint>
 #include <map>
@@ -30,8 +32,9 @@ struct OmniExperimentOptions {
   /// When set, ballsight is also given the viewpoint height as measured on the robot: the true
   /// height plus a normal error of this standard deviation (drawn from the seed), weighed as such.
   std::optional<double> measured_height_sigma_cm;
-  /// Which methods to run, of poly, paper-mlp, ballsight and oracle (all by default).
-  std::vector<std::string> methods{"poly", "paper-mlp", "ballsight", "oracle"};
+  /// Which methods to run, of poly, paper-mlp, ballsight, ballsight-auto (ballsight calibrated
+  /// without clicking, from one rendered calibration frame) and oracle (all by default).
+  std::vector<std::string> methods{"poly", "paper-mlp", "ballsight", "ballsight-auto", "oracle"};
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
