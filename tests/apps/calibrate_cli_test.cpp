@@ -136,15 +136,50 @@ TEST(CourtCalibrateCli, BadSitesFailWithOneLine) {
   write_file_atomic(temp / "site.yml", site + "colour:\n  ball: [1, 2, 3]\n");
   expect_one_line_error(run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
                         "site.yml:60: unknown key 'colour'");
+  expect_one_line_error(
+      run_cli({"court", "calibrate", "--site", (temp / "site.yml").string(), "--attempts", "0"}),
+      "attempts");
+  expect_one_line_error(
+      run_cli({"court", "calibrate", "--site", (temp / "site.yml").string(), "--retry-wait", "-1"}),
+      "--retry-wait");
+}
+
+// Every camera is tried: each failure is one line naming the camera, then one error line says
+// which failed and that nothing was written.
+TEST(CourtCalibrateCli, FailingCamerasAreEachReported) {
+  const TempDir temp;
+  std::string site = read_file(kExampleSite);
+  const std::string ne = "{file: court_0000_cam0.png}";
+  site.replace(site.find(ne), ne.size(), "{device: 97}");
   write_file_atomic(temp / "site.yml", site);
-  expect_one_line_error(
-      run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
-      "camera 'ne': " + (temp / "court_0000_cam0.png").string() + ": cannot open for reading");
-  cv::imwrite((temp / "court_0000_cam0.png").string(),
+  CameraCalibration calibration;
+  calibration.intrinsics.width = 1280;
+  calibration.intrinsics.height = 720;
+  calibration.intrinsics.fx = calibration.intrinsics.fy = 800;
+  calibration.intrinsics.cx = 639.5;
+  calibration.intrinsics.cy = 359.5;
+  for (const char* cam : {"cam0.yml", "cam2.yml", "cam3.yml"}) {
+    write_camera_file(temp / cam, calibration);
+  }
+  cv::imwrite((temp / "court_0000_cam3.png").string(),
               cv::Mat(720, 1280, CV_8UC3, cv::Scalar::all(128)));
-  expect_one_line_error(
-      run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
-      "camera 'ne': " + (temp / "cam0.yml").string() + ": cannot open for reading");
+  const CliResult r = run_cli({"court", "calibrate", "--site", (temp / "site.yml").string(),
+                               "--attempts", "2", "--retry-wait", "0"});
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_EQ(r.stdout_text, "");
+  for (const std::string& line : std::vector<std::string>{
+           "ballsight: camera 'ne': cannot open video device 97 (gave up after 2 attempts)\n",
+           "ballsight: camera 'se': " + (temp / "cam1.yml").string() +
+               ": cannot open for reading\n",
+           "ballsight: camera 'sw': cannot read image " + (temp / "court_0000_cam2.png").string() +
+               "\n",
+           "ballsight: camera 'nw' (file " + (temp / "court_0000_cam3.png").string() +
+               "): reference balls: found 0 of 12",
+           "ballsight: error: 4 of 4 cameras failed (ne, se, sw, nw); no calibration file "
+           "written\n"}) {
+    EXPECT_NE(r.stderr_text.find(line), std::string::npos) << line << "\n" << r.stderr_text;
+  }
+  EXPECT_FALSE(read_camera_file(temp / "cam3.yml").extrinsics.has_value());
 }
 
 }  // namespace

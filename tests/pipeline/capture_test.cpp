@@ -43,12 +43,15 @@ TEST(BoundedFrameQueue, NewestDropsTheStaleOnesAndCloseWakesWaiters) {
 
 TEST(CaptureOptions, BackoffDoublesUpToTheCap) {
   CaptureOptions options;
-  options.initial_backoff = 10ms;
-  options.max_backoff = 50ms;
-  EXPECT_EQ(options.backoff(1), 10ms);
-  EXPECT_EQ(options.backoff(2), 20ms);
-  EXPECT_EQ(options.backoff(3), 40ms);
-  EXPECT_EQ(options.backoff(4), 50ms);
+  options.backoff.initial = 10ms;
+  options.backoff.max = 50ms;
+  EXPECT_EQ(options.backoff.after(1), 10ms);
+  EXPECT_EQ(options.backoff.after(2), 20ms);
+  EXPECT_EQ(options.backoff.after(3), 40ms);
+  EXPECT_EQ(options.backoff.after(4), 50ms);
+  options.backoff.factor = 0.5;
+  EXPECT_THROW(options.validate(), InputError);
+  options.backoff.factor = 2.0;
   options.queue_capacity = 0;
   EXPECT_THROW(options.validate(), InputError);
 }
@@ -74,8 +77,8 @@ class FlakySource final : public FrameSource {
 
 CaptureOptions fast_retries() {
   CaptureOptions options;
-  options.initial_backoff = 2ms;
-  options.max_backoff = 8ms;
+  options.backoff.initial = 2ms;
+  options.backoff.max = 8ms;
   return options;
 }
 

@@ -1,42 +1,9 @@
 #include "ballsight/eval/court_calibration.hpp"
 
-#include <algorithm>
-#include <opencv2/imgcodecs.hpp>
-
-#include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/pipeline/site_setup.hpp"
 
 namespace ballsight {
-
-namespace fs = std::filesystem;
-
-std::filesystem::path first_source_image(const SiteCamera& camera) {
-  const CameraSource& source = camera.source;
-  const std::string where = "camera '" + camera.name + "'";
-  switch (source.kind) {
-    case CameraSource::Kind::file:
-      return source.path;
-    case CameraSource::Kind::folder: {
-      std::error_code ec;
-      require(fs::is_directory(source.path, ec), where,
-              "source folder " + source.path.string() + " does not exist");
-      std::vector<fs::path> images;
-      for (const fs::directory_entry& entry : fs::directory_iterator(source.path, ec)) {
-        if (entry.is_regular_file(ec) && cv::haveImageReader(entry.path().string())) {
-          images.push_back(entry.path());
-        }
-      }
-      require(!images.empty(), where, "no image in source folder " + source.path.string());
-      return *std::min_element(images.begin(), images.end());
-    }
-    case CameraSource::Kind::device:
-    case CameraSource::Kind::url:
-      break;
-  }
-  throw InputError(where + ": calibration reads a still image; a " +
-                   std::string(camera_source_kind_name(source.kind)) +
-                   " source is not supported yet (save a frame and use a file source)");
-}
 
 std::vector<ReferencePoint> site_references(const Site& site) {
   std::vector<ReferencePoint> references;
@@ -47,10 +14,10 @@ std::vector<ReferencePoint> site_references(const Site& site) {
 }
 
 CameraPoseReport calibrate_site_camera(const Site& site, const SiteCamera& camera,
-                                       const cv::Mat& image, const fs::path& image_file,
+                                       const cv::Mat& image, const std::string& source,
                                        const CameraCalibration& calibration,
                                        const CourtCalibrationOptions& options) {
-  const std::string where = "camera '" + camera.name + "' (" + image_file.string() + ")";
+  const std::string where = "camera '" + camera.name + "' (" + source + ")";
   const PinholeParams& intrinsics = calibration.intrinsics;
   require(image.cols == intrinsics.width && image.rows == intrinsics.height, where,
           "image is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
@@ -64,7 +31,7 @@ CameraPoseReport calibrate_site_camera(const Site& site, const SiteCamera& camer
 
   CameraPoseReport report;
   report.camera = camera.name;
-  report.image = image_file;
+  report.source = source;
   report.calibration_file = camera.calibration_file;
   report.blob_count = static_cast<int>(blobs.size());
   report.references = site_references(site);
@@ -82,25 +49,41 @@ CameraPoseReport calibrate_site_camera(const Site& site, const SiteCamera& camer
   return report;
 }
 
-std::vector<CameraPoseReport> calibrate_site(const Site& site,
-                                             const CourtCalibrationOptions& options) {
-  std::vector<CameraPoseReport> reports;
-  for (const SiteCamera& camera : site.cameras) {
-    const fs::path image_file = first_source_image(camera);
-    cv::Mat image;
-    CameraCalibration calibration;
-    try {
-      image = read_image_bgr(image_file);
-      calibration = read_camera_file(camera.calibration_file);
-    } catch (const InputError& e) {
-      throw InputError("camera '" + camera.name + "': " + e.what());
-    }
-    reports.push_back(calibrate_site_camera(site, camera, image, image_file, calibration, options));
+namespace {
+
+// One camera's pose; throws InputError naming the camera.
+CameraPoseReport calibrate_one(const Site& site, const SiteCamera& camera,
+                               const CourtCalibrationOptions& options) {
+  CameraCalibration calibration;
+  cv::Mat image;
+  const std::unique_ptr<FrameSource> source = site_frame_source(camera);
+  try {
+    calibration = read_camera_file(camera.calibration_file);
+    image = read_still_frame(*source, options.frame);
+  } catch (const InputError& e) {
+    throw InputError("camera '" + camera.name + "': " + e.what());
   }
-  for (const CameraPoseReport& report : reports) {
+  return calibrate_site_camera(site, camera, image, source->describe(), calibration, options);
+}
+
+}  // namespace
+
+SiteCalibration calibrate_site(const Site& site, const CourtCalibrationOptions& options) {
+  options.frame.validate();
+  SiteCalibration result;
+  for (const SiteCamera& camera : site.cameras) {
+    try {
+      result.calibrated.push_back(calibrate_one(site, camera, options));
+    } catch (const InputError& e) {
+      result.failed.push_back({camera.name, e.what()});
+    }
+  }
+  if (!result.failed.empty()) return result;
+  for (const CameraPoseReport& report : result.calibrated) {
     write_camera_file(report.calibration_file, report.calibration);
   }
-  return reports;
+  result.written = true;
+  return result;
 }
 
 }  // namespace ballsight

@@ -1,7 +1,6 @@
 #include "ballsight/pipeline/capture.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <exception>
 
@@ -80,16 +79,7 @@ std::uint64_t BoundedFrameQueue::dropped() const {
 void CaptureOptions::validate() const {
   require(queue_capacity >= 1 && queue_capacity <= 64, "capture queue_capacity",
           "must be within [1, 64]");
-  require(initial_backoff.count() >= 0 && max_backoff >= initial_backoff, "capture backoff",
-          "need 0 <= initial_backoff <= max_backoff");
-  require(backoff_factor >= 1.0, "capture backoff_factor", "must be at least 1");
-}
-
-std::chrono::milliseconds CaptureOptions::backoff(int failures) const {
-  const double ms = static_cast<double>(initial_backoff.count()) *
-                    std::pow(backoff_factor, std::max(0, failures - 1));
-  return std::chrono::milliseconds(
-      static_cast<std::int64_t>(std::min(ms, static_cast<double>(max_backoff.count()))));
+  backoff.validate();
 }
 
 CameraCapture::CameraCapture(std::string name, std::unique_ptr<FrameSource> source,
@@ -142,7 +132,7 @@ void CameraCapture::fail(const std::string& error) {
     ++status_.failures_total;
     status_.last_error = error;
     status_.state = CaptureState::retrying;
-    wait = options_.backoff(status_.failures_in_a_row);
+    wait = options_.backoff.after(status_.failures_in_a_row);
   }
   if (log_) {
     char seconds[32];

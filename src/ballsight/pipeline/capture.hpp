@@ -58,14 +58,10 @@ class BoundedFrameQueue {
 
 struct CaptureOptions {
   std::size_t queue_capacity = 2;
-  std::chrono::milliseconds initial_backoff{200};
-  std::chrono::milliseconds max_backoff{5000};
-  double backoff_factor = 2.0;
+  BackoffOptions backoff;  // 0.2 s, 0.4 s, ... up to 5 s
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
-  /// Wait before attempt number `failures` + 1 after `failures` failures in a row (>= 1).
-  std::chrono::milliseconds backoff(int failures) const;
 };
 
 enum class CaptureState { starting, running, retrying, finished, stopped };

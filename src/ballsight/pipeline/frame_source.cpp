@@ -1,11 +1,27 @@
 #include "ballsight/pipeline/frame_source.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 #include <stdexcept>
 
+#include "ballsight/core/error.hpp"
+
 namespace ballsight {
+
+void BackoffOptions::validate() const {
+  require(initial.count() >= 0 && max >= initial, "backoff", "need 0 <= initial <= max");
+  require(factor >= 1.0, "backoff factor", "must be at least 1");
+}
+
+std::chrono::milliseconds BackoffOptions::after(int failures) const {
+  const double ms =
+      static_cast<double>(initial.count()) * std::pow(factor, std::max(0, failures - 1));
+  return std::chrono::milliseconds(
+      static_cast<std::int64_t>(std::min(ms, static_cast<double>(max.count()))));
+}
 
 namespace {
 

@@ -3,6 +3,7 @@
 // stream (a video device or a network URL, through cv::VideoCapture). A source may fail at any
 // time (a camera disconnects); the capture thread then reopens it with back-off.
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <opencv2/core.hpp>
@@ -11,6 +12,19 @@
 #include <vector>
 
 namespace ballsight {
+
+/// How long to wait before reopening a source that failed: `initial`, then `factor` times longer
+/// after every further failure in a row, never more than `max`.
+struct BackoffOptions {
+  std::chrono::milliseconds initial{200};
+  std::chrono::milliseconds max{5000};
+  double factor = 2.0;
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+  /// Wait before attempt number `failures` + 1 after `failures` failures in a row (>= 1).
+  std::chrono::milliseconds after(int failures) const;
+};
 
 class FrameSource {
  public:
