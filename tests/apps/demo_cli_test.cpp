@@ -24,8 +24,17 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
     const std::string relative = fs::relative(entry.path(), out).string();
     EXPECT_NE(html.find("src=\"" + relative + "\""), std::string::npos) << relative;
   }
-  EXPECT_EQ(images, 2 + 4);  // two omni frames, four court views
-  EXPECT_NE(read_file(out / "report.md").find("calibration markers"), std::string::npos);
+  // Two omni frames, four court views, and the court evaluation's four views and field map.
+  EXPECT_EQ(images, 2 + 4 + 5);
+  const std::string markdown = read_file(out / "report.md");
+  EXPECT_NE(markdown.find("calibration markers"), std::string::npos);
+  // The omni run time: calibrated from the markers found, the ball placed and scored.
+  EXPECT_NE(markdown.find("324 of 324 markers found in frame 0"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("ballsight: error "), std::string::npos) << markdown;
+  EXPECT_TRUE(fs::exists(out / "omni" / "ballsight.bsgm"));
+  // The court evaluation: both methods scored.
+  EXPECT_NE(markdown.find("ballsight   "), std::string::npos) << markdown;
+  EXPECT_EQ(markdown.find("wrote "), std::string::npos) << markdown;
 }
 
 TEST(DemoCli, BadOptionsFailWithOneLine) {

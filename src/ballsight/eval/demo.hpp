@@ -1,7 +1,8 @@
 #pragma once
 // The main job: ballsight end to end on built-in simulated data, with a report a person can read.
-// Today it renders both simulated rigs and summarises their truth; later stages (calibration,
-// localisation, fusion, routes) add their sections here.
+// It renders both simulated rigs, calibrates the omni camera from the markers it finds and places
+// the ball in every frame (ballsight's pipeline beside the paper's), and calibrates and runs both
+// court methods against the truth; later stages (routes, service) add their sections here.
 
 #include <cstdint>
 #include <filesystem>
