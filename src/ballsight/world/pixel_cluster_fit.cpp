@@ -297,10 +297,6 @@ std::vector<FusedObject> fit_clusters_to_pixels(
       if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
       best = std::move(more);
     }
-    if (best.balls.size() == start.balls.size()) {
-      keep_group();
-      continue;
-    }
     Eigen::MatrixXd information;
     const double cost = model.fit(best.balls, options.iterations, &information);
     const Eigen::MatrixXd covariance =
