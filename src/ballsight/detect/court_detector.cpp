@@ -151,6 +151,7 @@ std::vector<PixelDetection> CourtDetector::detect(const cv::Mat& bgr) {
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
   const auto* pixels = image.ptr<cv::Vec3b>(0);
   std::vector<PixelDetection> out;
+  int blob_count = 0;
   for (int seed : seeds_) {
     const ColorClassMask classes = table_.classify(pixels[seed]);
     if (!classes) continue;
@@ -158,7 +159,7 @@ std::vector<PixelDetection> CourtDetector::detect(const cv::Mat& bgr) {
       if (!(classes & seed_bit(i))) continue;
       if (!grow_blob(image, table_, grow_bits(i), seed, buffers_, blob_)) break;
       touched_.insert(touched_.end(), blob_.pixels.begin(), blob_.pixels.end());
-      measure(image, blob_, i, out);
+      measure(image, blob_, i, blob_count++, out);
       break;
     }
   }
@@ -167,8 +168,35 @@ std::vector<PixelDetection> CourtDetector::detect(const cv::Mat& bgr) {
   return out;
 }
 
+namespace {
+
+// The coverage of `pixels` (weights saturating at `level`) over their box grown by 2 pixels.
+CoveragePatch coverage_patch(const std::vector<EvidencePixel>& pixels, float level, int blob) {
+  CoveragePatch patch;
+  patch.blob = blob;
+  if (pixels.empty()) return patch;
+  constexpr int kMargin = 2;
+  float x0 = pixels.front().x, y0 = pixels.front().y, x1 = x0, y1 = y0;
+  for (const EvidencePixel& p : pixels) {
+    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y);
+    x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  }
+  patch.x = static_cast<int>(x0) - kMargin;
+  patch.y = static_cast<int>(y0) - kMargin;
+  patch.width = static_cast<int>(x1 - x0) + 1 + 2 * kMargin;
+  patch.height = static_cast<int>(y1 - y0) + 1 + 2 * kMargin;
+  patch.coverage.assign(static_cast<size_t>(patch.width * patch.height), 0.0f);
+  for (const EvidencePixel& p : pixels)
+    patch.coverage[static_cast<size_t>((static_cast<int>(p.y) - patch.y) * patch.width +
+                                       static_cast<int>(p.x) - patch.x)] =
+        std::min(p.weight, level) / level;
+  return patch;
+}
+
+}  // namespace
+
 void CourtDetector::measure(const cv::Mat& bgr, const GrownBlob& blob, size_t spec_index,
-                            std::vector<PixelDetection>& out) const {
+                            int blob_index, std::vector<PixelDetection>& out) const {
   const CourtObjectSpec& spec = options_.objects[spec_index];
   const Vec2 box_center(blob.bbox.x + 0.5 * (blob.bbox.width - 1),
                         blob.bbox.y + 0.5 * (blob.bbox.height - 1));
@@ -216,8 +244,10 @@ void CourtDetector::measure(const cv::Mat& bgr, const GrownBlob& blob, size_t sp
   } else {
     parts = split_blob(coverage, count);
   }
+  const CoveragePatch patch = coverage_patch(coverage, level, blob_index);
   for (const BlobPart& part : parts) {
     PixelDetection d;
+    d.patch = patch;
     d.object = spec.object;
     d.center_px = part.centroid;
     d.area_px = part.mass / level;

@@ -10,7 +10,8 @@
 // - Size and shape are checked against the size the object must have at that place
 //   (ApparentSizeMap): blobs much larger than a few objects or thinner than one are rejected;
 //   blobs of touching balls are counted by their evidence and elongation and split (k-means).
-// - Every detection carries the expected error of its centre: noise, shading, splitting and
+// - Every detection carries its blob's coverage patch (the world model fits merged clusters of
+//   balls to it) and the expected error of its centre: noise, shading, splitting and
 //   partial occlusion, from which world gates and weights observations.
 
 #include <opencv2/core.hpp>
@@ -87,7 +88,7 @@ class CourtDetector {
   std::size_t seed_count() const { return seeds_.size(); }
 
  private:
-  void measure(const cv::Mat& bgr, const GrownBlob& blob, size_t spec_index,
+  void measure(const cv::Mat& bgr, const GrownBlob& blob, size_t spec_index, int blob_index,
                std::vector<PixelDetection>& out) const;
 
   CourtDetectorOptions options_;

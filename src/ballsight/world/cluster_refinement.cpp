@@ -271,14 +271,6 @@ class GroupFitter {
   const ClusterOptions& options_;
 };
 
-double min_separation(const std::vector<Vec2>& balls) {
-  double best = std::numeric_limits<double>::max();
-  for (size_t i = 0; i < balls.size(); ++i)
-    for (size_t j = i + 1; j < balls.size(); ++j)
-      best = std::min(best, (balls[i] - balls[j]).norm());
-  return best;
-}
-
 // The best fit with one more ball: each ball in turn split in two, touching, in four directions.
 Fit fit_with_one_more(const GroupFitter& fitter, const Fit& current, double radius_m) {
   Fit best;
@@ -308,7 +300,17 @@ Fit fit_with_one_less(const GroupFitter& fitter, const Fit& current) {
   return best;
 }
 
-std::vector<std::vector<int>> groups_of(const std::vector<FusedObject>& fused, double link_m) {
+}  // namespace
+
+double min_separation(const std::vector<Vec2>& balls) {
+  double best = std::numeric_limits<double>::max();
+  for (size_t i = 0; i < balls.size(); ++i)
+    for (size_t j = i + 1; j < balls.size(); ++j)
+      best = std::min(best, (balls[i] - balls[j]).norm());
+  return best;
+}
+
+std::vector<std::vector<int>> ball_groups(const std::vector<FusedObject>& fused, double link_m) {
   std::vector<int> parent(fused.size());
   std::iota(parent.begin(), parent.end(), 0);
   const auto root = [&](int i) {
@@ -326,15 +328,13 @@ std::vector<std::vector<int>> groups_of(const std::vector<FusedObject>& fused, d
   return groups;
 }
 
-}  // namespace
-
 std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& observations,
                                          const std::vector<FusedObject>& fused,
                                          double ball_radius_m, const ClusterOptions& options) {
   options.validate();
   std::vector<FusedObject> out;
   for (const std::vector<int>& group :
-       groups_of(fused, options.link_distance_radii * ball_radius_m)) {
+       ball_groups(fused, options.link_distance_radii * ball_radius_m)) {
     std::vector<int> members;
     std::vector<Vec2> start;
     for (int g : group) {

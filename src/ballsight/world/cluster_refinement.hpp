@@ -34,6 +34,13 @@ struct ClusterOptions {
   void validate() const;
 };
 
+/// Smallest distance between two of `balls` (the largest double for fewer than two).
+double min_separation(const std::vector<Vec2>& balls);
+
+/// Indices of `fused` grouped by links shorter than `link_m` (transitively), in no particular
+/// order.
+std::vector<std::vector<int>> ball_groups(const std::vector<FusedObject>& fused, double link_m);
+
 /// The fused balls after refitting every group of two or more nearby balls (and single balls whose
 /// observations disagree); each result lists the observations assigned to it (an observation may
 /// be listed by several balls).

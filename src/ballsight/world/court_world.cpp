@@ -17,6 +17,7 @@ void CourtWorldOptions::validate() const {
   noise.validate();
   fusion.validate();
   clusters.validate();
+  pixel_fit.validate();
   support.validate();
   require(std::isfinite(collector_width_m) && collector_width_m > 0.0, "world collector_width_m",
           "must be positive");
@@ -105,8 +106,10 @@ WorldModel build_world_model(
     }
   }
   std::vector<FusedBall> fused;
-  for (const FusedObject& object : refine_clusters(balls, fuse_observations(balls, options.fusion),
-                                                   options.ball_radius_m, options.clusters))
+  const std::vector<FusedObject> refined = refine_clusters(
+      balls, fuse_observations(balls, options.fusion), options.ball_radius_m, options.clusters);
+  for (const FusedObject& object :
+       fit_clusters_to_pixels(balls, refined, detections, options.ball_radius_m, options.pixel_fit))
     fused.push_back({object.position_m, object.covariance_m2, object.cameras});
   const std::vector<bool> kept =
       supported_balls(fused, cameras, detections, options.ball_radius_m,

@@ -2,8 +2,9 @@
 // ballsight's world model from the court cameras' detections: every detection placed on the plane
 // of its object's centre with its expected error, the robot's pose from its markers, ball
 // detections the robot's body may cut into made less certain, then the balls fused across cameras
-// by their expected errors, checked against the cameras that missed them (ball_support.hpp) and
-// grouped into collection sites.
+// by their expected errors, groups of touching balls refitted to their observations and then to
+// their blobs' pixels (pixel_cluster_fit.hpp), checked against the cameras that missed them
+// (ball_support.hpp) and grouped into collection sites.
 
 #include <optional>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "ballsight/world/cluster_refinement.hpp"
 #include "ballsight/world/field_observation.hpp"
 #include "ballsight/world/observation_fusion.hpp"
+#include "ballsight/world/pixel_cluster_fit.hpp"
 #include "ballsight/world/robot_pose.hpp"
 #include "ballsight/world/world_model.hpp"
 
@@ -26,6 +28,7 @@ struct CourtWorldOptions {
   ObservationNoise noise;
   FusionOptions fusion;
   ClusterOptions clusters;
+  PixelFitOptions pixel_fit;
   BallSupportOptions support;
   double collector_width_m = 0.70;               // the report's collector (section 7.8)
   FieldRect area{{-19.5, -10.5}, {19.5, 10.5}};  // observations elsewhere are dropped

@@ -1,0 +1,335 @@
+#include "ballsight/world/pixel_cluster_fit.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/world/cluster_refinement.hpp"
+
+namespace ballsight {
+
+void PixelFitOptions::validate() const {
+  require(link_distance_radii > 0.0, "pixel fit link_distance_radii", "must be positive");
+  require(radius_scale > 0.0 && blur_px >= 0.0 && coverage_gain > 0.0, "pixel fit",
+          "radius_scale and coverage_gain must be positive, blur_px non-negative");
+  require(ball_penalty > 0.0, "pixel fit ball_penalty", "must be positive");
+  require(min_separation_radii >= 0.0, "pixel fit min_separation_radii", "must be non-negative");
+  require(overlap_sigma_m > 0.0, "pixel fit overlap_sigma_m", "must be positive");
+  require(max_added >= 0 && max_added <= 8, "pixel fit max_added", "must be within [0, 8]");
+  require(iterations >= 1, "pixel fit iterations", "must be at least 1");
+}
+
+namespace {
+
+// One blob seen by one camera: its coverage and where plane points fall in it.
+struct View {
+  const CoveragePatch* patch = nullptr;
+  int camera = 0;
+  Vec2 origin_px = Vec2::Zero();  // a detection's centre ...
+  Vec2 origin_m = Vec2::Zero();   // ... and its point on the plane
+  Eigen::Matrix2d pixel_per_plane = Eigen::Matrix2d::Identity();
+  double radius_px = 0.0;      // a ball's disc in the coverage model
+  std::vector<float> visible;  // per pixel: share left uncovered by the balls outside the group
+
+  Vec2 pixel(const Vec2& x) const { return origin_px + pixel_per_plane * (x - origin_m); }
+  bool contains(const Vec2& q) const {
+    return q.x() >= patch->x - 0.5 && q.y() >= patch->y - 0.5 &&
+           q.x() < patch->x + patch->width - 0.5 && q.y() < patch->y + patch->height - 0.5;
+  }
+};
+
+// A pixel's share covered by a disc of `radius` at distance `d`: a ramp one pixel wide.
+double disc_share(double d, double radius) {
+  return std::clamp(radius + 0.5 - d, 0.0, 1.0);
+}
+
+class CoverageModel {
+ public:
+  CoverageModel(std::vector<View> views, double ball_radius_m, const PixelFitOptions& options)
+      : views_(std::move(views)), radius_(ball_radius_m), options_(options) {
+    for (const View& v : views_) pixels_ += v.patch->coverage.size();
+  }
+
+  const std::vector<View>& views() const { return views_; }
+
+  // Residuals (predicted - observed coverage per patch pixel, then the overlap constraints) and,
+  // if `jacobian`, their derivatives by the balls' positions.
+  double evaluate(const std::vector<Vec2>& balls, Eigen::VectorXd& residuals,
+                  Eigen::MatrixXd* jacobian) const {
+    const auto n = static_cast<Eigen::Index>(balls.size());
+    const auto rows = static_cast<Eigen::Index>(pixels_) + n * (n - 1) / 2;
+    residuals.setZero(rows);
+    if (jacobian) jacobian->setZero(rows, 2 * n);
+    std::vector<Vec2> q(balls.size());
+    std::vector<double> share(balls.size());
+    std::vector<Vec2> slope(balls.size());
+    Eigen::Index row = 0;
+    for (const View& v : views_) {
+      for (size_t i = 0; i < balls.size(); ++i) q[i] = v.pixel(balls[i]);
+      const CoveragePatch& p = *v.patch;
+      for (int y = 0; y < p.height; ++y) {
+        for (int x = 0; x < p.width; ++x, ++row) {
+          const Vec2 pixel(p.x + x, p.y + y);
+          const auto k = static_cast<size_t>(y * p.width + x);
+          double free = v.visible[k];
+          for (size_t i = 0; i < balls.size(); ++i) {
+            const Vec2 d = pixel - q[i];
+            const double dist = d.norm();
+            share[i] = disc_share(dist, v.radius_px);
+            const bool ramp = share[i] > 0.0 && share[i] < 1.0 && dist > 1e-9;
+            slope[i] = ramp ? Vec2(d / dist) : Vec2::Zero();  // d share / d q
+            free *= 1.0 - share[i];
+          }
+          const double predicted = options_.coverage_gain * (1.0 - free);
+          residuals(row) = std::min(predicted, 1.0) - p.coverage[k];
+          if (!jacobian || predicted >= 1.0) continue;
+          for (size_t i = 0; i < balls.size(); ++i) {
+            if (share[i] <= 0.0 || share[i] >= 1.0) continue;
+            const double others = free / (1.0 - share[i]);
+            jacobian->block<1, 2>(row, 2 * static_cast<Eigen::Index>(i)) =
+                options_.coverage_gain * others * slope[i].transpose() * v.pixel_per_plane;
+          }
+        }
+      }
+    }
+    const double touching = 2.0 * radius_;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      for (Eigen::Index j = i + 1; j < n; ++j, ++row) {
+        const Vec2 d = balls[static_cast<size_t>(i)] - balls[static_cast<size_t>(j)];
+        const double dist = d.norm();
+        if (dist >= touching) continue;
+        residuals(row) = (touching - dist) / options_.overlap_sigma_m;
+        if (!jacobian || dist < 1e-9) continue;
+        const Vec2 u = d / dist;
+        jacobian->block<1, 2>(row, 2 * i) = -u.transpose() / options_.overlap_sigma_m;
+        jacobian->block<1, 2>(row, 2 * j) = u.transpose() / options_.overlap_sigma_m;
+      }
+    }
+    return residuals.squaredNorm();
+  }
+
+  double cost(const std::vector<Vec2>& balls) const {
+    Eigen::VectorXd r;
+    return evaluate(balls, r, nullptr);
+  }
+
+  // Levenberg-Marquardt from `balls`; returns the final cost, `balls` moved to the optimum.
+  double fit(std::vector<Vec2>& balls, int iterations,
+             Eigen::MatrixXd* information = nullptr) const {
+    Eigen::VectorXd r;
+    Eigen::MatrixXd j;
+    double cost = evaluate(balls, r, &j);
+    double lambda = 1e-3;
+    for (int it = 0; it < iterations; ++it) {
+      const Eigen::MatrixXd h = j.transpose() * j;
+      const Eigen::VectorXd g = j.transpose() * r;
+      Eigen::MatrixXd damped = h;
+      damped.diagonal() += lambda * (h.diagonal().array() + 1e-6).matrix();
+      const Eigen::VectorXd step = -damped.ldlt().solve(g);
+      std::vector<Vec2> moved = balls;
+      for (size_t i = 0; i < balls.size(); ++i)
+        moved[i] += step.segment<2>(2 * static_cast<Eigen::Index>(i));
+      Eigen::VectorXd r2;
+      Eigen::MatrixXd j2;
+      const double c2 = evaluate(moved, r2, &j2);
+      if (c2 < cost) {
+        balls = std::move(moved);
+        r = std::move(r2);
+        j = std::move(j2);
+        const bool converged = cost - c2 < 1e-6 * cost + 1e-9 || step.norm() < 1e-5;
+        cost = c2;
+        lambda = std::max(lambda / 4.0, 1e-7);
+        if (converged) break;
+      } else {
+        lambda *= 8.0;
+        if (lambda > 1e6) break;
+      }
+    }
+    if (information) *information = j.transpose() * j;
+    return cost;
+  }
+
+  // Per pixel of the group's patches: the residual variance one ball's fit leaves.
+  double residual_variance(double cost, size_t balls) const {
+    const double dof =
+        std::max(1.0, static_cast<double>(pixels_) - 2.0 * static_cast<double>(balls));
+    return std::max(cost / dof, 1e-3);
+  }
+
+ private:
+  std::vector<View> views_;
+  size_t pixels_ = 0;
+  double radius_;
+  const PixelFitOptions& options_;
+};
+
+struct Hypothesis {
+  std::vector<Vec2> balls;
+  double cost = std::numeric_limits<double>::max();
+};
+
+// The best fit with one more ball: started touching one of the balls, in eight directions, the
+// two starts that explain most before fitting are fitted.
+Hypothesis with_one_more(const CoverageModel& model, const Hypothesis& current, double radius_m,
+                         const PixelFitOptions& options) {
+  std::vector<Hypothesis> starts;
+  for (const Vec2& b : current.balls) {
+    for (int k = 0; k < 8; ++k) {
+      const double angle = k * std::numbers::pi / 4.0;
+      Hypothesis h{current.balls, 0.0};
+      h.balls.push_back(b + 2.0 * radius_m * Vec2(std::cos(angle), std::sin(angle)));
+      if (min_separation(h.balls) < 1.9 * radius_m) continue;
+      h.cost = model.cost(h.balls);
+      starts.push_back(std::move(h));
+    }
+  }
+  std::sort(starts.begin(), starts.end(),
+            [](const Hypothesis& a, const Hypothesis& b) { return a.cost < b.cost; });
+  Hypothesis best;
+  for (size_t s = 0; s < std::min<size_t>(2, starts.size()); ++s) {
+    Hypothesis h = starts[s];
+    h.cost = model.fit(h.balls, options.iterations);
+    if (h.cost < best.cost) best = std::move(h);
+  }
+  return best;
+}
+
+// The best fit with one ball less: the ball whose removal costs least before fitting is removed.
+Hypothesis with_one_less(const CoverageModel& model, const Hypothesis& current,
+                         const PixelFitOptions& options) {
+  Hypothesis best;
+  for (size_t i = 0; i < current.balls.size(); ++i) {
+    Hypothesis h{current.balls, 0.0};
+    h.balls.erase(h.balls.begin() + static_cast<std::ptrdiff_t>(i));
+    h.cost = model.cost(h.balls);
+    if (h.cost < best.cost) best = std::move(h);
+  }
+  best.cost = model.fit(best.balls, options.iterations);
+  return best;
+}
+
+}  // namespace
+
+std::vector<FusedObject> fit_clusters_to_pixels(
+    const std::vector<FieldObservation>& observations, const std::vector<FusedObject>& balls,
+    const std::vector<std::optional<std::vector<PixelDetection>>>& detections, double ball_radius_m,
+    const PixelFitOptions& options) {
+  options.validate();
+  if (!options.enabled) return balls;
+  std::vector<FusedObject> out;
+  for (const std::vector<int>& group :
+       ball_groups(balls, options.link_distance_radii * ball_radius_m)) {
+    std::vector<int> members;
+    Hypothesis start;
+    bool split = false;
+    for (int g : group) {
+      const FusedObject& ball = balls[static_cast<size_t>(g)];
+      members.insert(members.end(), ball.observations.begin(), ball.observations.end());
+      start.balls.push_back(ball.position_m);
+      for (int o : ball.observations)
+        split = split || observations[static_cast<size_t>(o)].split_count > 1;
+    }
+    std::sort(members.begin(), members.end());
+    members.erase(std::unique(members.begin(), members.end()), members.end());
+    const auto keep_group = [&] {
+      for (int g : group) out.push_back(balls[static_cast<size_t>(g)]);
+    };
+    if (group.size() < 2 && !split) {
+      keep_group();
+      continue;
+    }
+    // One view per blob the group's observations come from.
+    std::vector<View> views;
+    for (int m : members) {
+      const FieldObservation& o = observations[static_cast<size_t>(m)];
+      const auto& list = detections[static_cast<size_t>(o.camera)];
+      if (!list) continue;
+      const PixelDetection& d = (*list)[static_cast<size_t>(o.detection)];
+      if (d.patch.width == 0) continue;
+      if (std::any_of(views.begin(), views.end(), [&](const View& v) {
+            return v.camera == o.camera && v.patch->blob == d.patch.blob;
+          }))
+        continue;
+      View v;
+      v.patch = &d.patch;
+      v.camera = o.camera;
+      v.origin_px = d.center_px;
+      v.origin_m = o.position_m;
+      v.pixel_per_plane = o.plane_per_pixel.inverse();
+      const Eigen::JacobiSVD<Eigen::Matrix2d> svd(o.plane_per_pixel);
+      v.radius_px =
+          options.radius_scale * ball_radius_m / svd.singularValues()(1) + options.blur_px;
+      views.push_back(std::move(v));
+    }
+    if (views.size() < 2) {
+      keep_group();
+      continue;
+    }
+    // Balls outside the group that fall into its patches cover their share there.
+    for (View& v : views) {
+      const CoveragePatch& p = *v.patch;
+      v.visible.assign(p.coverage.size(), 1.0f);
+      for (size_t b = 0; b < balls.size(); ++b) {
+        if (std::find(group.begin(), group.end(), static_cast<int>(b)) != group.end()) continue;
+        const Vec2 q = v.pixel(balls[b].position_m);
+        if ((q - v.origin_px).norm() > p.width + p.height + v.radius_px) continue;
+        for (int y = 0; y < p.height; ++y)
+          for (int x = 0; x < p.width; ++x)
+            v.visible[static_cast<size_t>(y * p.width + x)] *= static_cast<float>(
+                1.0 - disc_share((Vec2(p.x + x, p.y + y) - q).norm(), v.radius_px));
+      }
+    }
+    const CoverageModel model(std::move(views), ball_radius_m, options);
+    Hypothesis best = start;
+    best.cost = model.fit(best.balls, options.iterations);
+    while (best.balls.size() > 1) {
+      Hypothesis fewer = with_one_less(model, best, options);
+      if (fewer.cost - best.cost >= options.ball_penalty) break;
+      best = std::move(fewer);
+    }
+    const size_t wanted = start.balls.size() + static_cast<size_t>(options.max_added);
+    while (best.balls.size() < wanted) {
+      Hypothesis more = with_one_more(model, best, ball_radius_m, options);
+      if (best.cost - more.cost < options.ball_penalty) break;
+      if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
+      best = std::move(more);
+    }
+    Eigen::MatrixXd information;
+    const double cost = model.fit(best.balls, options.iterations, &information);
+    const Eigen::MatrixXd covariance =
+        model.residual_variance(cost, best.balls.size()) *
+        (information + 1e-9 * Eigen::MatrixXd::Identity(information.rows(), information.cols()))
+            .inverse();
+    for (size_t i = 0; i < best.balls.size(); ++i) {
+      FusedObject object;
+      object.position_m = best.balls[i];
+      object.covariance_m2 = covariance.block<2, 2>(2 * static_cast<Eigen::Index>(i),
+                                                    2 * static_cast<Eigen::Index>(i));
+      // Its observations: those whose blob's patch its centre falls into.
+      for (int m : members) {
+        const FieldObservation& o = observations[static_cast<size_t>(m)];
+        const int blob =
+            (*detections[static_cast<size_t>(o.camera)])[static_cast<size_t>(o.detection)]
+                .patch.blob;
+        const bool inside =
+            std::any_of(model.views().begin(), model.views().end(), [&](const View& v) {
+              return v.camera == o.camera && v.patch->blob == blob &&
+                     v.contains(v.pixel(object.position_m));
+            });
+        if (!inside) continue;
+        object.observations.push_back(m);
+        if (std::find(object.cameras.begin(), object.cameras.end(), o.camera) ==
+            object.cameras.end())
+          object.cameras.push_back(o.camera);
+      }
+      std::sort(object.cameras.begin(), object.cameras.end());
+      out.push_back(std::move(object));
+    }
+  }
+  return out;
+}
+
+}  // namespace ballsight
