@@ -33,7 +33,7 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
   EXPECT_NE(markdown.find("ballsight: error "), std::string::npos) << markdown;
   EXPECT_TRUE(fs::exists(out / "omni" / "ballsight.bsgm"));
   // The court evaluation: both methods scored.
-  EXPECT_NE(markdown.find("ballsight   "), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("\nballsight "), std::string::npos) << markdown;  // its table row
   EXPECT_EQ(markdown.find("wrote "), std::string::npos) << markdown;
 }
 
