@@ -309,7 +309,8 @@ std::vector<FusedObject> fit_clusters_to_pixels(
       best = std::move(fewer);
     }
     const size_t wanted = start.balls.size() + static_cast<size_t>(options.max_added);
-    while (best.balls.size() < wanted) {
+    // A further ball lowers the cost by at most all of it.
+    while (best.balls.size() < wanted && best.cost >= options.ball_penalty) {
       Hypothesis more = with_one_more(model, best, ball_radius_m, options);
       if (best.cost - more.cost < options.ball_penalty) break;
       if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
