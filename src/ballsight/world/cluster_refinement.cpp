@@ -28,7 +28,8 @@ namespace {
 constexpr double kOverlapSigmaM = 0.003;  // stiffness of the no-overlap constraint
 
 // Area of the union of discs of one radius in units of one disc's area: their count when no two
-// overlap, else by sampling a grid of a fifth of the radius (within 3%).
+// overlap, else by counting the points of a grid of a fifth of the radius inside (within 3%), row
+// by row through the discs' chords.
 double union_of_discs(const std::vector<Vec2>& centers, double radius) {
   bool apart = true;
   for (size_t i = 0; i < centers.size() && apart; ++i)
@@ -40,12 +41,27 @@ double union_of_discs(const std::vector<Vec2>& centers, double radius) {
   lo -= Vec2::Constant(radius);
   hi += Vec2::Constant(radius);
   const double step = radius / 5.0;
+  const double x0 = lo.x() + 0.5 * step;
+  const double columns = std::ceil((hi.x() - x0) / step);
+  std::vector<std::pair<double, double>> chords;  // grid columns from, to (inclusive)
   int inside = 0;
-  for (double y = lo.y() + 0.5 * step; y < hi.y(); y += step)
-    for (double x = lo.x() + 0.5 * step; x < hi.x(); x += step)
-      inside += std::any_of(centers.begin(), centers.end(), [&](const Vec2& c) {
-        return (Vec2(x, y) - c).squaredNorm() <= radius * radius;
-      });
+  for (double y = lo.y() + 0.5 * step; y < hi.y(); y += step) {
+    chords.clear();
+    for (const Vec2& c : centers) {
+      const double h2 = radius * radius - (y - c.y()) * (y - c.y());
+      if (h2 < 0.0) continue;
+      const double h = std::sqrt(h2);
+      const double from = std::max(0.0, std::ceil((c.x() - h - x0) / step));
+      const double to = std::min(columns - 1.0, std::floor((c.x() + h - x0) / step));
+      if (from <= to) chords.emplace_back(from, to);
+    }
+    std::sort(chords.begin(), chords.end());
+    double counted_to = -1.0;
+    for (const auto& [from, to] : chords) {
+      if (to > counted_to) inside += static_cast<int>(to - std::max(from, counted_to + 1.0) + 1.0);
+      counted_to = std::max(counted_to, to);
+    }
+  }
   return inside * step * step / (std::numbers::pi * radius * radius);
 }
 
@@ -359,7 +375,8 @@ std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& ob
       best = std::move(fewer);
     }
     const int wanted = static_cast<int>(start.size()) + options.max_added;
-    while (static_cast<int>(best.balls.size()) < wanted) {
+    // A further ball lowers the chi-square by at most all of it.
+    while (static_cast<int>(best.balls.size()) < wanted && best.chi2 >= options.min_chi2_gain) {
       Fit more = fit_with_one_more(fitter, best, ball_radius_m);
       if (best.chi2 - more.chi2 < options.min_chi2_gain) break;
       if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;

@@ -46,6 +46,24 @@ double disc_share(double d, double radius) {
   return std::clamp(radius + 0.5 - d, 0.0, 1.0);
 }
 
+// J^T J and J^T r of a least-squares problem, accumulated row by row.
+struct NormalEquations {
+  Eigen::MatrixXd h;
+  Eigen::VectorXd g;
+};
+
+// Adds a residual `r` whose derivative by ball index[a]'s position is slope[a] (a < count; zero
+// by the other balls).
+void accumulate(const std::vector<Eigen::Index>& index,
+                const std::vector<Eigen::RowVector2d>& slope, size_t count, double r,
+                NormalEquations& normal) {
+  for (size_t a = 0; a < count; ++a) {
+    normal.g.segment<2>(2 * index[a]) += r * slope[a].transpose();
+    for (size_t b = 0; b < count; ++b)
+      normal.h.block<2, 2>(2 * index[a], 2 * index[b]) += slope[a].transpose() * slope[b];
+  }
+}
+
 class CoverageModel {
  public:
   CoverageModel(std::vector<View> views, double ball_radius_m, const PixelFitOptions& options)
@@ -55,90 +73,90 @@ class CoverageModel {
 
   const std::vector<View>& views() const { return views_; }
 
-  // Residuals (predicted - observed coverage per patch pixel, then the overlap constraints) and,
-  // if `jacobian`, their derivatives by the balls' positions.
-  double evaluate(const std::vector<Vec2>& balls, Eigen::VectorXd& residuals,
-                  Eigen::MatrixXd* jacobian) const {
+  // The sum of squared residuals (predicted - observed coverage per patch pixel, then the overlap
+  // constraints) and, if `normal`, the Gauss-Newton normal equations by the balls' positions.
+  double evaluate(const std::vector<Vec2>& balls, NormalEquations* normal) const {
     const auto n = static_cast<Eigen::Index>(balls.size());
-    const auto rows = static_cast<Eigen::Index>(pixels_) + n * (n - 1) / 2;
-    residuals.setZero(rows);
-    if (jacobian) jacobian->setZero(rows, 2 * n);
+    if (normal) {
+      normal->h.setZero(2 * n, 2 * n);
+      normal->g.setZero(2 * n);
+    }
+    double sum = 0.0;
     std::vector<Vec2> q(balls.size());
-    std::vector<double> share(balls.size());
-    std::vector<Vec2> slope(balls.size());
-    Eigen::Index row = 0;
+    // Per pixel, the balls whose rim crosses it: index, share and d share / d pixel.
+    std::vector<Eigen::Index> rim(balls.size());
+    std::vector<double> rim_share(balls.size());
+    std::vector<Eigen::RowVector2d> rim_slope(balls.size());
     for (const View& v : views_) {
       for (size_t i = 0; i < balls.size(); ++i) q[i] = v.pixel(balls[i]);
+      const double reach2 = (v.radius_px + 0.5) * (v.radius_px + 0.5);  // beyond: share 0
       const CoveragePatch& p = *v.patch;
       for (int y = 0; y < p.height; ++y) {
-        for (int x = 0; x < p.width; ++x, ++row) {
+        for (int x = 0; x < p.width; ++x) {
           const Vec2 pixel(p.x + x, p.y + y);
           const auto k = static_cast<size_t>(y * p.width + x);
           double free = v.visible[k];
+          size_t rims = 0;
           for (size_t i = 0; i < balls.size(); ++i) {
             const Vec2 d = pixel - q[i];
-            const double dist = d.norm();
-            share[i] = disc_share(dist, v.radius_px);
-            const bool ramp = share[i] > 0.0 && share[i] < 1.0 && dist > 1e-9;
-            slope[i] = ramp ? Vec2(d / dist) : Vec2::Zero();  // d share / d q
-            free *= 1.0 - share[i];
+            const double d2 = d.squaredNorm();
+            if (d2 >= reach2) continue;
+            const double dist = std::sqrt(d2);
+            const double share = disc_share(dist, v.radius_px);
+            free *= 1.0 - share;
+            if (share >= 1.0 || dist <= 1e-9) continue;
+            rim[rims] = static_cast<Eigen::Index>(i);
+            rim_share[rims] = share;
+            rim_slope[rims++] = (d / dist).transpose() * v.pixel_per_plane;
           }
           const double predicted = options_.coverage_gain * (1.0 - free);
-          residuals(row) = std::min(predicted, 1.0) - p.coverage[k];
-          if (!jacobian || predicted >= 1.0) continue;
-          for (size_t i = 0; i < balls.size(); ++i) {
-            if (share[i] <= 0.0 || share[i] >= 1.0) continue;
-            const double others = free / (1.0 - share[i]);
-            jacobian->block<1, 2>(row, 2 * static_cast<Eigen::Index>(i)) =
-                options_.coverage_gain * others * slope[i].transpose() * v.pixel_per_plane;
-          }
+          const double r = std::min(predicted, 1.0) - p.coverage[k];
+          sum += r * r;
+          if (!normal || predicted >= 1.0) continue;
+          for (size_t a = 0; a < rims; ++a)  // d residual / d ball: the others' free share
+            rim_slope[a] *= options_.coverage_gain * free / (1.0 - rim_share[a]);
+          accumulate(rim, rim_slope, rims, r, *normal);
         }
       }
     }
     const double touching = 2.0 * radius_;
     for (Eigen::Index i = 0; i < n; ++i) {
-      for (Eigen::Index j = i + 1; j < n; ++j, ++row) {
+      for (Eigen::Index j = i + 1; j < n; ++j) {
         const Vec2 d = balls[static_cast<size_t>(i)] - balls[static_cast<size_t>(j)];
         const double dist = d.norm();
         if (dist >= touching) continue;
-        residuals(row) = (touching - dist) / options_.overlap_sigma_m;
-        if (!jacobian || dist < 1e-9) continue;
-        const Vec2 u = d / dist;
-        jacobian->block<1, 2>(row, 2 * i) = -u.transpose() / options_.overlap_sigma_m;
-        jacobian->block<1, 2>(row, 2 * j) = u.transpose() / options_.overlap_sigma_m;
+        const double r = (touching - dist) / options_.overlap_sigma_m;
+        sum += r * r;
+        if (!normal || dist < 1e-9) continue;
+        rim[0] = i, rim[1] = j;
+        rim_slope[0] = -(d / dist).transpose() / options_.overlap_sigma_m;
+        rim_slope[1] = -rim_slope[0];
+        accumulate(rim, rim_slope, 2, r, *normal);
       }
     }
-    return residuals.squaredNorm();
+    return sum;
   }
 
-  double cost(const std::vector<Vec2>& balls) const {
-    Eigen::VectorXd r;
-    return evaluate(balls, r, nullptr);
-  }
+  double cost(const std::vector<Vec2>& balls) const { return evaluate(balls, nullptr); }
 
   // Levenberg-Marquardt from `balls`; returns the final cost, `balls` moved to the optimum.
   double fit(std::vector<Vec2>& balls, int iterations,
              Eigen::MatrixXd* information = nullptr) const {
-    Eigen::VectorXd r;
-    Eigen::MatrixXd j;
-    double cost = evaluate(balls, r, &j);
+    NormalEquations normal;
+    double cost = evaluate(balls, &normal);
     double lambda = 1e-3;
     for (int it = 0; it < iterations; ++it) {
-      const Eigen::MatrixXd h = j.transpose() * j;
-      const Eigen::VectorXd g = j.transpose() * r;
-      Eigen::MatrixXd damped = h;
-      damped.diagonal() += lambda * (h.diagonal().array() + 1e-6).matrix();
-      const Eigen::VectorXd step = -damped.ldlt().solve(g);
+      Eigen::MatrixXd damped = normal.h;
+      damped.diagonal() += lambda * (normal.h.diagonal().array() + 1e-6).matrix();
+      const Eigen::VectorXd step = -damped.ldlt().solve(normal.g);
       std::vector<Vec2> moved = balls;
       for (size_t i = 0; i < balls.size(); ++i)
         moved[i] += step.segment<2>(2 * static_cast<Eigen::Index>(i));
-      Eigen::VectorXd r2;
-      Eigen::MatrixXd j2;
-      const double c2 = evaluate(moved, r2, &j2);
+      NormalEquations moved_normal;
+      const double c2 = evaluate(moved, &moved_normal);
       if (c2 < cost) {
         balls = std::move(moved);
-        r = std::move(r2);
-        j = std::move(j2);
+        normal = std::move(moved_normal);
         const bool converged = cost - c2 < 1e-6 * cost + 1e-9 || step.norm() < 1e-5;
         cost = c2;
         lambda = std::max(lambda / 4.0, 1e-7);
@@ -148,7 +166,7 @@ class CoverageModel {
         if (lambda > 1e6) break;
       }
     }
-    if (information) *information = j.transpose() * j;
+    if (information) *information = std::move(normal.h);
     return cost;
   }
 
@@ -291,7 +309,8 @@ std::vector<FusedObject> fit_clusters_to_pixels(
       best = std::move(fewer);
     }
     const size_t wanted = start.balls.size() + static_cast<size_t>(options.max_added);
-    while (best.balls.size() < wanted) {
+    // A further ball lowers the cost by at most all of it.
+    while (best.balls.size() < wanted && best.cost >= options.ball_penalty) {
       Hypothesis more = with_one_more(model, best, ball_radius_m, options);
       if (best.cost - more.cost < options.ball_penalty) break;
       if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
