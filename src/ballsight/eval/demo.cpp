@@ -88,10 +88,7 @@ std::string omni_localisation(const fs::path& dir, std::vector<Figure>& figures)
   const auto start = Clock::now();
   const sim::OmniPalette palette;
   const Vec2 configured_center(319.5, 239.5);
-  std::vector<LayoutMarker> layout;
-  for (const sim::FloorMarker& m : sim::calibration_markers(Pose2D{})) {
-    layout.push_back({m.position_in_field, m.radius_m});
-  }
+  const std::vector<LayoutMarker> layout = layout_of(sim::calibration_markers(Pose2D{}));
   const cv::Mat calibration_frame = read_image_bgr(dir / "omni_0000.png");
   const MarkerFrameSamples found =
       samples_from_marker_frame(calibration_frame, layout, palette.marker_bgr, configured_center);

@@ -8,6 +8,12 @@
 
 namespace ballsight {
 
+std::vector<LayoutMarker> layout_of(const std::vector<sim::FloorMarker>& markers) {
+  std::vector<LayoutMarker> layout;
+  for (const sim::FloorMarker& m : markers) layout.push_back({m.position_in_field, m.radius_m});
+  return layout;
+}
+
 MarkerFrameSamples samples_from_marker_frame(const cv::Mat& bgr,
                                              const std::vector<LayoutMarker>& layout,
                                              const cv::Vec3b& marker_bgr,

@@ -9,6 +9,7 @@
 
 #include "ballsight/calib/polar_sample.hpp"
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/sim/omni_scene.hpp"
 
 namespace ballsight {
 
@@ -23,6 +24,9 @@ struct LayoutMarker {
   Vec2 p_in_robot = Vec2::Zero();
   double radius_m = 0.0;
 };
+
+/// The simulator's calibration markers around a robot at the origin, as a layout with sizes.
+std::vector<LayoutMarker> layout_of(const std::vector<sim::FloorMarker>& markers);
 
 /// `layout`: the markers; `marker_bgr`: their colour. With every radius known, the samples are
 /// those of the discs' centres (ballsight's model fitted to predict the centroid shifts).

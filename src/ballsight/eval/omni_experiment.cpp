@@ -110,10 +110,7 @@ std::vector<PolarSample> auto_calibration_samples(const OmniRigParams& rig,
   scene.markers = sim::calibration_markers(scene.robot_pose);
   scene.effects.noise_sigma = options.sensor_noise;
   scene.noise_seed = options.seed * 1000 + 999;  // the test frames use seed * 1000 + 0..35
-  std::vector<LayoutMarker> layout;
-  for (const sim::FloorMarker& m : sim::calibration_markers(Pose2D{})) {
-    layout.push_back({m.position_in_field, m.radius_m});
-  }
+  const std::vector<LayoutMarker> layout = layout_of(sim::calibration_markers(Pose2D{}));
   return samples_from_marker_frame(sim::render_omni_scene(scene).bgr, layout,
                                    scene.palette.marker_bgr, configured_center)
       .samples;
