@@ -45,9 +45,14 @@ void add_eval_court_command(CLI::App& eval) {
       ->capture_default_str();
   cmd->add_flag("--json", args->json,
                 "JSON: {\"methods\": {\"seed\": {...}, \"ballsight\": {...}}, ...}");
-  cmd->add_option("--plot-dir", args->plot_dir,
-                  "Write each camera's view with detections and a field map of truth vs "
-                  "estimates for the first scenes");
+  CLI::Option* plot_dir =
+      cmd->add_option("--plot-dir", args->plot_dir,
+                      "Write each camera's view with detections and a field map of truth vs "
+                      "estimates for the first scenes");
+  cmd->add_flag("--plot-mistakes", args->options.plot_mistakes,
+                "With --plot-dir: also the pictures of every scene where ballsight missed a ball "
+                "or made a duplicate or false estimate (listed with --json under \"mistakes\")")
+      ->needs(plot_dir);
   cmd->callback([args] { run_eval_court(*args); });
 }
 

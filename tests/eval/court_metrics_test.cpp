@@ -31,8 +31,22 @@ TEST(CourtMetrics, HitsDuplicatesFalsePositivesAndUnseenBalls) {
   EXPECT_NEAR(s.robot_position_error_m, 0.01, 1e-12);
   EXPECT_NEAR(deg_from_rad(s.robot_heading_error_rad), 1.0, 1e-9);
 
+  // Each mistake with its place: the missed ball's true position, the wrong estimates' own.
+  ASSERT_EQ(s.mistakes.size(), 3u);
+  EXPECT_EQ(s.mistakes[0].kind, BallMistake::Kind::duplicate);
+  EXPECT_EQ(s.mistakes[0].position_m, Vec2(0.05, 0));
+  EXPECT_EQ(s.mistakes[1].kind, BallMistake::Kind::false_positive);
+  EXPECT_EQ(s.mistakes[1].position_m, Vec2(8, 8));
+  EXPECT_EQ(s.mistakes[2].kind, BallMistake::Kind::missed);
+  EXPECT_EQ(s.mistakes[2].position_m, Vec2(2, 0));
+  EXPECT_EQ(mistake_kind_name(s.mistakes[1].kind), "false_positive");
+
   CourtScores scores;
   scores.add(s);
+  scores.add(s);
+  ASSERT_EQ(scores.mistakes.size(), 6u);
+  EXPECT_EQ(scores.mistakes[2].scene, 0);
+  EXPECT_EQ(scores.mistakes[3].scene, 1);
   EXPECT_NEAR(scores.recall(), 2.0 / 3.0, 1e-12);
   EXPECT_NEAR(scores.precision(), 3.0 / 5.0, 1e-12);
   EXPECT_NEAR(scores.ball_error_mean_m(), 0.02, 1e-12);

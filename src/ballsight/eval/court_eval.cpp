@@ -145,6 +145,7 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
     const std::vector<sim::SphereTruth> truth = sim::court_scene_truth(rig, scene, renders);
     const std::vector<TruthBall> balls = truth_balls(truth);
     std::vector<FrameSetResult> results;
+    bool ballsight_erred = false;
     for (size_t m = 0; m < pipelines.size(); ++m) {
       if (!pipelines[m]) {
         FrameSetResult nothing;
@@ -161,12 +162,14 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
       std::vector<Vec2> estimates;
       for (const FusedBall& ball : results.back().world.balls) estimates.push_back(ball.position_m);
       const WorldModel& world = results.back().world;
-      method.scores.add(
+      const SceneScore score =
           score_scene(balls, estimates, scene.robot.pose,
                       world.robot ? std::optional<Pose2D>(world.robot->pose) : std::nullopt,
-                      options.match_radius_m));
+                      options.match_radius_m);
+      if (method.method == CourtMethod::ballsight) ballsight_erred = !score.mistakes.empty();
+      method.scores.add(score);
     }
-    if (options.plot_dir && k < options.plot_scenes)
+    if (options.plot_dir && (k < options.plot_scenes || (options.plot_mistakes && ballsight_erred)))
       write_pictures(options, rig, k, frames, truth, scene.robot.pose, results, report.pictures);
   }
   return report;
@@ -209,6 +212,13 @@ nlohmann::json court_eval_json(const CourtEvalReport& report) {
                                  static_cast<double>(m.frame_set_ms.size()));
     j["calibration"] = {{"intrinsics_rms_px", m.calibration.intrinsics_rms_px},
                         {"pose_rms_px", m.calibration.pose_rms_px}};
+    nlohmann::json mistakes = nlohmann::json::array();
+    for (const BallMistake& mistake : s.mistakes)
+      mistakes.push_back({{"scene", mistake.scene},
+                          {"kind", mistake_kind_name(mistake.kind)},
+                          {"x_m", mistake.position_m.x()},
+                          {"y_m", mistake.position_m.y()}});
+    j["mistakes"] = mistakes;
     if (!m.calibration_error.empty()) j["calibration_error"] = m.calibration_error;
     methods[court_method_name(m.method)] = j;
   }
@@ -247,6 +257,13 @@ std::string court_eval_text(const CourtEvalReport& report) {
         100.0 * s.ball_error_p95_m(), 100.0 * s.robot_position_error_mean_m(),
         deg_from_rad(s.robot_heading_error_mean_rad()), ms);
     out << line;
+    if (m.method == CourtMethod::ballsight)
+      for (const BallMistake& mistake : s.mistakes) {
+        std::snprintf(line, sizeof line, "  scene %d: %s at (%.3f, %.3f) m\n", mistake.scene,
+                      mistake_kind_name(mistake.kind).c_str(), mistake.position_m.x(),
+                      mistake.position_m.y());
+        out << line;
+      }
   }
   const CourtScores& any = std::max_element(report.methods.begin(), report.methods.end(),
                                             [](const auto& a, const auto& b) {

@@ -27,6 +27,7 @@ struct CourtEvalOptions {
   double match_radius_m = 0.10;
   std::optional<std::filesystem::path> plot_dir;  // pictures of the first plot_scenes scenes
   int plot_scenes = 2;
+  bool plot_mistakes = false;  // also pictures of every scene where ballsight got a ball wrong
 
   static constexpr int kMaxScenes = 1000;
   /// Throws InputError naming the first invalid field.

@@ -10,6 +10,18 @@
 
 namespace ballsight {
 
+std::string mistake_kind_name(BallMistake::Kind kind) {
+  switch (kind) {
+    case BallMistake::Kind::missed:
+      return "missed";
+    case BallMistake::Kind::duplicate:
+      return "duplicate";
+    case BallMistake::Kind::false_positive:
+      return "false_positive";
+  }
+  return "unknown";
+}
+
 SceneScore score_scene(const std::vector<TruthBall>& truth, const std::vector<Vec2>& estimates,
                        const Pose2D& robot_truth, const std::optional<Pose2D>& robot_estimate,
                        double match_radius_m) {
@@ -42,7 +54,13 @@ SceneScore score_scene(const std::vector<TruthBall>& truth, const std::vector<Ve
       return std::get<2>(p) == e && truth_used[std::get<1>(p)];
     });
     ++(near_matched ? score.duplicates : score.false_positives);
+    score.mistakes.push_back(
+        {near_matched ? BallMistake::Kind::duplicate : BallMistake::Kind::false_positive,
+         estimates[e]});
   }
+  for (size_t t = 0; t < truth.size(); ++t)
+    if (truth[t].seen && !truth_used[t])
+      score.mistakes.push_back({BallMistake::Kind::missed, truth[t].position_m});
   if (robot_estimate) {
     score.robot_found = true;
     score.robot_position_error_m = (robot_estimate->position - robot_truth.position).norm();
@@ -62,6 +80,10 @@ void CourtScores::add(const SceneScore& s) {
   duplicates += s.duplicates;
   false_positives += s.false_positives;
   errors_m.insert(errors_m.end(), s.errors_m.begin(), s.errors_m.end());
+  for (BallMistake mistake : s.mistakes) {
+    mistake.scene = scenes - 1;
+    mistakes.push_back(mistake);
+  }
   if (s.robot_found) {
     ++robot_found;
     robot_position_errors_m.push_back(s.robot_position_error_m);

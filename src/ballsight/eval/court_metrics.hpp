@@ -12,6 +12,7 @@
 //   estimates. Ball error: distance of each true positive to its ball.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
@@ -23,6 +24,17 @@ struct TruthBall {
   bool seen = true;  // visible in at least one camera
 };
 
+/// One ball a method got wrong: a counted ball it missed (the true position), or an estimate that
+/// is a duplicate or a false positive (the estimated position).
+struct BallMistake {
+  enum class Kind { missed, duplicate, false_positive };
+  Kind kind = Kind::missed;
+  Vec2 position_m = Vec2::Zero();
+  int scene = 0;  // set by CourtScores::add
+};
+
+std::string mistake_kind_name(BallMistake::Kind kind);
+
 struct SceneScore {
   int counted = 0;  // true balls that count for recall
   int unseen = 0;   // true balls no camera sees
@@ -32,6 +44,7 @@ struct SceneScore {
   int duplicates = 0;
   int false_positives = 0;
   std::vector<double> errors_m;  // one per true positive
+  std::vector<BallMistake> mistakes;
   bool robot_found = false;
   double robot_position_error_m = 0.0;  // when found
   double robot_heading_error_rad = 0.0;
@@ -48,6 +61,7 @@ struct CourtScores {
   int counted = 0, unseen = 0, estimates = 0;
   int true_positives = 0, correct_extras = 0, duplicates = 0, false_positives = 0;
   std::vector<double> errors_m;
+  std::vector<BallMistake> mistakes;  // scene: index of the scene in the order added
   int robot_found = 0;
   std::vector<double> robot_position_errors_m, robot_heading_errors_rad;
 

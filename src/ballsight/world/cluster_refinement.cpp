@@ -326,22 +326,29 @@ double min_separation(const std::vector<Vec2>& balls) {
   return best;
 }
 
-std::vector<std::vector<int>> ball_groups(const std::vector<FusedObject>& fused, double link_m) {
-  std::vector<int> parent(fused.size());
+std::vector<std::vector<int>> linked_groups(size_t count,
+                                            const std::function<bool(size_t, size_t)>& linked) {
+  std::vector<int> parent(count);
   std::iota(parent.begin(), parent.end(), 0);
   const auto root = [&](int i) {
     while (parent[static_cast<size_t>(i)] != i) i = parent[static_cast<size_t>(i)];
     return i;
   };
-  for (size_t i = 0; i < fused.size(); ++i)
-    for (size_t j = i + 1; j < fused.size(); ++j)
-      if ((fused[i].position_m - fused[j].position_m).norm() < link_m)
+  for (size_t i = 0; i < count; ++i)
+    for (size_t j = i + 1; j < count; ++j)
+      if (linked(i, j))
         parent[static_cast<size_t>(root(static_cast<int>(j)))] = root(static_cast<int>(i));
-  std::vector<std::vector<int>> groups(fused.size());
-  for (size_t i = 0; i < fused.size(); ++i)
+  std::vector<std::vector<int>> groups(count);
+  for (size_t i = 0; i < count; ++i)
     groups[static_cast<size_t>(root(static_cast<int>(i)))].push_back(static_cast<int>(i));
   std::erase_if(groups, [](const std::vector<int>& g) { return g.empty(); });
   return groups;
+}
+
+std::vector<std::vector<int>> ball_groups(const std::vector<FusedObject>& fused, double link_m) {
+  return linked_groups(fused.size(), [&](size_t i, size_t j) {
+    return (fused[i].position_m - fused[j].position_m).norm() < link_m;
+  });
 }
 
 std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& observations,

@@ -8,6 +8,7 @@
 // added where that explains the observations much better (a chi-square drop), the balls staying
 // at least about two radii apart.
 
+#include <functional>
 #include <vector>
 
 #include "ballsight/world/field_observation.hpp"
@@ -40,6 +41,10 @@ double min_separation(const std::vector<Vec2>& balls);
 /// Indices of `fused` grouped by links shorter than `link_m` (transitively), in no particular
 /// order.
 std::vector<std::vector<int>> ball_groups(const std::vector<FusedObject>& fused, double link_m);
+
+/// Indices 0..count-1 grouped by `linked(i, j)` (i < j, transitively), in no particular order.
+std::vector<std::vector<int>> linked_groups(size_t count,
+                                            const std::function<bool(size_t, size_t)>& linked);
 
 /// The fused balls after refitting every group of two or more nearby balls (and single balls whose
 /// observations disagree); each result lists the observations assigned to it (an observation may

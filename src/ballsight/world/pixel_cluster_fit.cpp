@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numbers>
 
@@ -189,26 +190,65 @@ struct Hypothesis {
   double cost = std::numeric_limits<double>::max();
 };
 
-// The best fit with one more ball: started touching one of the balls, in eight directions, the
-// two starts that explain most before fitting are fitted.
-Hypothesis with_one_more(const CoverageModel& model, const Hypothesis& current, double radius_m,
-                         const PixelFitOptions& options) {
-  std::vector<Hypothesis> starts;
-  for (const Vec2& b : current.balls) {
+// Where one more ball may start, two kinds: touching one of the balls, in eight directions; and
+// touching two of them at once (the gap of a packed cluster, which the eight directions of one
+// ball miss by more than the fit recovers).
+std::vector<Vec2> touching_one_starts(const std::vector<Vec2>& balls, double radius_m) {
+  std::vector<Vec2> starts;
+  for (const Vec2& b : balls)
     for (int k = 0; k < 8; ++k) {
       const double angle = k * std::numbers::pi / 4.0;
-      Hypothesis h{current.balls, 0.0};
-      h.balls.push_back(b + 2.0 * radius_m * Vec2(std::cos(angle), std::sin(angle)));
-      if (min_separation(h.balls) < 1.9 * radius_m) continue;
-      h.cost = model.cost(h.balls);
-      starts.push_back(std::move(h));
+      starts.push_back(b + 2.0 * radius_m * Vec2(std::cos(angle), std::sin(angle)));
     }
+  return starts;
+}
+
+std::vector<Vec2> touching_two_starts(const std::vector<Vec2>& balls, double radius_m) {
+  const double touching = 2.0 * radius_m;
+  std::vector<Vec2> starts;
+  for (size_t i = 0; i < balls.size(); ++i)
+    for (size_t j = i + 1; j < balls.size(); ++j) {
+      const Vec2 chord = balls[j] - balls[i];
+      const double half = 0.5 * chord.norm();
+      if (half >= touching || half == 0.0) continue;
+      const Vec2 normal = Vec2(-chord.y(), chord.x()) / (2.0 * half);
+      const double height = std::sqrt(touching * touching - half * half);
+      for (double side : {-1.0, 1.0})
+        starts.push_back(0.5 * (balls[i] + balls[j]) + side * height * normal);
+    }
+  return starts;
+}
+
+// The hypotheses with one ball more started at `starts` (those that keep the balls apart), the
+// `count` that explain most before fitting first.
+std::vector<Hypothesis> best_starts(const CoverageModel& model, const Hypothesis& current,
+                                    const std::vector<Vec2>& starts, double radius_m,
+                                    size_t count) {
+  std::vector<Hypothesis> out;
+  for (const Vec2& start : starts) {
+    Hypothesis h{current.balls, 0.0};
+    h.balls.push_back(start);
+    if (min_separation(h.balls) < 1.9 * radius_m) continue;
+    h.cost = model.cost(h.balls);
+    out.push_back(std::move(h));
   }
-  std::sort(starts.begin(), starts.end(),
+  std::sort(out.begin(), out.end(),
             [](const Hypothesis& a, const Hypothesis& b) { return a.cost < b.cost; });
+  out.resize(std::min(out.size(), count));
+  return out;
+}
+
+// The best fit with one more ball: the two best starts touching one ball and the best touching
+// two are fitted.
+Hypothesis with_one_more(const CoverageModel& model, const Hypothesis& current, double radius_m,
+                         const PixelFitOptions& options) {
+  std::vector<Hypothesis> starts =
+      best_starts(model, current, touching_one_starts(current.balls, radius_m), radius_m, 2);
+  for (Hypothesis& h :
+       best_starts(model, current, touching_two_starts(current.balls, radius_m), radius_m, 1))
+    starts.push_back(std::move(h));
   Hypothesis best;
-  for (size_t s = 0; s < std::min<size_t>(2, starts.size()); ++s) {
-    Hypothesis h = starts[s];
+  for (Hypothesis& h : starts) {
     h.cost = model.fit(h.balls, options.iterations);
     if (h.cost < best.cost) best = std::move(h);
   }
@@ -229,6 +269,39 @@ Hypothesis with_one_less(const CoverageModel& model, const Hypothesis& current,
   return best;
 }
 
+// The blobs (camera, blob index) a fused ball's observations were cut from, ascending.
+std::vector<std::pair<int, int>> blobs_of(
+    const FusedObject& ball, const std::vector<FieldObservation>& observations,
+    const std::vector<std::optional<std::vector<PixelDetection>>>& detections) {
+  std::vector<std::pair<int, int>> blobs;
+  for (int m : ball.observations) {
+    const FieldObservation& o = observations[static_cast<size_t>(m)];
+    const auto& list = detections[static_cast<size_t>(o.camera)];
+    if (!list) continue;
+    const CoveragePatch& patch = (*list)[static_cast<size_t>(o.detection)].patch;
+    if (patch.width > 0) blobs.emplace_back(o.camera, patch.blob);
+  }
+  std::sort(blobs.begin(), blobs.end());
+  return blobs;
+}
+
+// Groups of balls to fit together: balls near each other, and balls cut from one blob (a blob is
+// one coverage patch, fitted once: two groups fitting it apart would each explain its pixels with
+// a ball of their own, two estimates of one ball).
+std::vector<std::vector<int>> fit_groups(
+    const std::vector<FusedObject>& balls, const std::vector<FieldObservation>& observations,
+    const std::vector<std::optional<std::vector<PixelDetection>>>& detections, double link_m) {
+  std::vector<std::vector<std::pair<int, int>>> blobs;
+  for (const FusedObject& ball : balls) blobs.push_back(blobs_of(ball, observations, detections));
+  return linked_groups(balls.size(), [&](size_t i, size_t j) {
+    if ((balls[i].position_m - balls[j].position_m).norm() < link_m) return true;
+    std::vector<std::pair<int, int>> shared;
+    std::set_intersection(blobs[i].begin(), blobs[i].end(), blobs[j].begin(), blobs[j].end(),
+                          std::back_inserter(shared));
+    return !shared.empty();
+  });
+}
+
 }  // namespace
 
 std::vector<FusedObject> fit_clusters_to_pixels(
@@ -239,7 +312,7 @@ std::vector<FusedObject> fit_clusters_to_pixels(
   if (!options.enabled) return balls;
   std::vector<FusedObject> out;
   for (const std::vector<int>& group :
-       ball_groups(balls, options.link_distance_radii * ball_radius_m)) {
+       fit_groups(balls, observations, detections, options.link_distance_radii * ball_radius_m)) {
     std::vector<int> members;
     Hypothesis start;
     bool split = false;
@@ -303,12 +376,16 @@ std::vector<FusedObject> fit_clusters_to_pixels(
     const CoverageModel model(std::move(views), ball_radius_m, options);
     Hypothesis best = start;
     best.cost = model.fit(best.balls, options.iterations);
-    while (best.balls.size() > 1) {
-      Hypothesis fewer = with_one_less(model, best, options);
-      if (fewer.cost - best.cost >= options.ball_penalty) break;
-      best = std::move(fewer);
-    }
+    const auto remove_unneeded = [&] {
+      while (best.balls.size() > 1) {
+        Hypothesis fewer = with_one_less(model, best, options);
+        if (fewer.cost - best.cost >= options.ball_penalty) break;
+        best = std::move(fewer);
+      }
+    };
+    remove_unneeded();
     const size_t wanted = start.balls.size() + static_cast<size_t>(options.max_added);
+    const size_t before_adding = best.balls.size();
     // A further ball lowers the cost by at most all of it.
     while (best.balls.size() < wanted && best.cost >= options.ball_penalty) {
       Hypothesis more = with_one_more(model, best, ball_radius_m, options);
@@ -316,6 +393,8 @@ std::vector<FusedObject> fit_clusters_to_pixels(
       if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
       best = std::move(more);
     }
+    // A ball added moves its neighbours; one of them may no longer be needed.
+    if (best.balls.size() > before_adding) remove_unneeded();
     Eigen::MatrixXd information;
     const double cost = model.fit(best.balls, options.iterations, &information);
     const Eigen::MatrixXd covariance =
