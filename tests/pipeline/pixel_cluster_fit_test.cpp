@@ -91,14 +91,16 @@ TEST(PixelClusterFit, FindsTheBallsOfMergedClusters) {
 // Scenes of `eval court` (rig and scene seeds as it derives them) where clusters went wrong: a
 // refit group's blobs reached into another group's and each fitted the shared blob apart, both
 // placing a ball in one spot (a duplicate); or a ball added to a cluster moved its neighbours so
-// that another was no longer needed (a duplicate). Rendered and seen through the rig's true
-// cameras (no calibration), every ball is found once within 1 cm.
+// that another was no longer needed (a duplicate); or a far ball that one camera alone sees was
+// split in two along its line of sight (scene 3 of seed 3). Rendered and seen through the rig's
+// true cameras (no calibration), no ball is the nearest of two estimates. (Scene 14 of seed 2
+// showed its duplicate only through the evaluation's calibrated cameras; it is kept as a case.)
 TEST(PixelClusterFit, SimulatedScenesHaveNoDuplicateBalls) {
   struct Case {
     std::uint64_t seed;
     int scene;
   };
-  for (const Case& c : {Case{2, 14}, Case{3, 16}, Case{7, 5}}) {
+  for (const Case& c : {Case{2, 14}, Case{3, 16}, Case{7, 5}, Case{3, 3}}) {
     SCOPED_TRACE("eval court --seed " + std::to_string(c.seed) + ", scene " +
                  std::to_string(c.scene));
     const sim::CourtRig rig = sim::make_court_rig({}, {}, sim::derive_seed(c.seed, 0));

@@ -355,7 +355,9 @@ std::vector<FusedObject> fit_clusters_to_pixels(
           options.radius_scale * ball_radius_m / svd.singularValues()(1) + options.blur_px;
       views.push_back(std::move(v));
     }
-    if (views.size() < 2) {
+    // One view is enough where a blob was split: its pixels alone say whether it holds the balls
+    // it was split into (a far ball seen by one camera only, split in two along its line of sight).
+    if (views.empty() || (views.size() < 2 && !split)) {
       keep_group();
       continue;
     }
