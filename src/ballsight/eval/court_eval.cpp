@@ -68,6 +68,7 @@ std::string scene_name(int scene) {
 void write_pictures(const CourtEvalOptions& options, const sim::CourtRig& rig, int scene,
                     const std::vector<cv::Mat>& frames, const std::vector<sim::SphereTruth>& truth,
                     const Pose2D& robot_truth, const std::vector<FrameSetResult>& results,
+                    const std::vector<BallMistake>& ballsight_mistakes,
                     std::vector<std::string>& written) {
   const std::filesystem::path& dir = *options.plot_dir;
   ensure_directory(dir);
@@ -90,7 +91,8 @@ void write_pictures(const CourtEvalOptions& options, const sim::CourtRig& rig, i
   std::vector<WorldLayer> layers;
   for (size_t m = 0; m < results.size(); ++m)
     layers.push_back({m == 0 ? "seed pipeline" : "ballsight (circles: collection sites)",
-                      m == 0 ? kSeedColour : kBallsightColour, results[m].world});
+                      m == 0 ? kSeedColour : kBallsightColour, results[m].world,
+                      m == 0 ? std::vector<BallMistake>{} : ballsight_mistakes});
   const std::string name = scene_name(scene) + "_field.png";
   write_png_atomic(dir / name, draw_field_map(rig.court, centers, truth_balls(truth), robot_truth,
                                               layers, scene_name(scene) + ": truth vs estimates"));
@@ -145,7 +147,7 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
     const std::vector<sim::SphereTruth> truth = sim::court_scene_truth(rig, scene, renders);
     const std::vector<TruthBall> balls = truth_balls(truth);
     std::vector<FrameSetResult> results;
-    bool ballsight_erred = false;
+    std::vector<BallMistake> ballsight_mistakes;
     for (size_t m = 0; m < pipelines.size(); ++m) {
       if (!pipelines[m]) {
         FrameSetResult nothing;
@@ -166,11 +168,13 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
           score_scene(balls, estimates, scene.robot.pose,
                       world.robot ? std::optional<Pose2D>(world.robot->pose) : std::nullopt,
                       options.match_radius_m);
-      if (method.method == CourtMethod::ballsight) ballsight_erred = !score.mistakes.empty();
+      if (method.method == CourtMethod::ballsight) ballsight_mistakes = score.mistakes;
       method.scores.add(score);
     }
-    if (options.plot_dir && (k < options.plot_scenes || (options.plot_mistakes && ballsight_erred)))
-      write_pictures(options, rig, k, frames, truth, scene.robot.pose, results, report.pictures);
+    if (options.plot_dir &&
+        (k < options.plot_scenes || (options.plot_mistakes && !ballsight_mistakes.empty())))
+      write_pictures(options, rig, k, frames, truth, scene.robot.pose, results, ballsight_mistakes,
+                     report.pictures);
   }
   return report;
 }

@@ -45,6 +45,20 @@ cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& tr
 
 namespace {
 
+const cv::Scalar kMistakeColour(200, 0, 200);  // magenta
+
+std::string mistake_letter(BallMistake::Kind kind) {
+  switch (kind) {
+    case BallMistake::Kind::missed:
+      return "M";
+    case BallMistake::Kind::duplicate:
+      return "D";
+    case BallMistake::Kind::false_positive:
+      return "F";
+  }
+  return "?";
+}
+
 // Draws the court area, cameras, truth and layers into `image` with field point (x, y) at pixel
 // offset + scale * (x - x0, y1 - y): field x to the right, y up.
 struct MapView {
@@ -99,6 +113,13 @@ void draw_map(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& cou
       cv::drawMarker(image, px(ball.position_m), layer.colour, marker,
                      static_cast<int>(std::lround(7 * std::sqrt(scale))), 1, cv::LINE_AA);
     if (layer.world.robot) draw_robot(layer.world.robot->pose, layer.colour, 1);
+    for (const BallMistake& mistake : layer.mistakes) {
+      const cv::Point2d at = px(mistake.position_m);
+      cv::circle(image, at, static_cast<int>(std::lround(12 * std::sqrt(scale))), kMistakeColour, 2,
+                 cv::LINE_AA);
+      draw_text(image, mistake_letter(mistake.kind),
+                to_point(Vec2(at.x + 14 * std::sqrt(scale), at.y - 6)), 0.5, kMistakeColour);
+    }
   }
 }
 
@@ -133,7 +154,13 @@ cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3
 
   std::vector<LegendEntry> legend{
       {"true balls and robot (grey: seen by no camera)", cv::Scalar(20, 20, 20)}};
-  for (const WorldLayer& layer : layers) legend.push_back({layer.label, layer.colour});
+  for (const WorldLayer& layer : layers) {
+    legend.push_back({layer.label, layer.colour});
+    if (!layer.mistakes.empty())
+      legend.push_back({layer.label.substr(0, layer.label.find(' ')) +
+                            "'s mistakes: M missed, D duplicate, F false positive",
+                        kMistakeColour});
+  }
   cv::rectangle(image, {0, 0, image.cols, top}, cv::Scalar::all(255), cv::FILLED);
   draw_text(image, title, {10, 24}, 0.6);
   draw_legend(image, {10, 32}, legend);

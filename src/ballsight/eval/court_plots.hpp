@@ -25,15 +25,17 @@ struct DetectionLayer {
 cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& truth_px,
                                const std::vector<DetectionLayer>& layers, const std::string& title);
 
-/// One method's world model on the map.
+/// One method's world model on the map, with the balls it got wrong (court_metrics.hpp) marked.
 struct WorldLayer {
   std::string label;
   cv::Scalar colour;
   WorldModel world;
+  std::vector<BallMistake> mistakes;
 };
 
 /// Top-down map of the court area: lines, cameras, true balls (grey: seen by no camera) and the
-/// true robot, each layer's balls, collection sites and robot pose, with a five times larger inset
+/// true robot, each layer's balls, collection sites and robot pose, its mistakes (magenta rings
+/// with M: missed, D: duplicate, F: false positive), with a five times larger inset
 /// of the 3 x 2 m around the robot below it; `pixels_per_m` sets the scale.
 cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3>& cameras,
                        const std::vector<TruthBall>& truth, const Pose2D& robot_truth,
