@@ -1,5 +1,6 @@
 #include "ballsight/eval/court_plots.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -47,16 +48,9 @@ namespace {
 
 const cv::Scalar kMistakeColour(200, 0, 200);  // magenta
 
+// "M" (missed), "D" (duplicate), "F" (false positive).
 std::string mistake_letter(BallMistake::Kind kind) {
-  switch (kind) {
-    case BallMistake::Kind::missed:
-      return "M";
-    case BallMistake::Kind::duplicate:
-      return "D";
-    case BallMistake::Kind::false_positive:
-      return "F";
-  }
-  return "?";
+  return std::string(1, static_cast<char>(std::toupper(mistake_kind_name(kind).front())));
 }
 
 // Draws the court area, cameras, truth and layers into `image` with field point (x, y) at pixel
