@@ -171,8 +171,8 @@ TEST(CourtCalibrateCli, FailingCamerasAreEachReported) {
            "ballsight: camera 'ne': cannot open video device 97 (gave up after 2 attempts)\n",
            "ballsight: camera 'se': " + (temp / "cam1.yml").string() +
                ": cannot open for reading\n",
-           "ballsight: camera 'sw': cannot read image " + (temp / "court_0000_cam2.png").string() +
-               "\n",
+           "ballsight: camera 'sw': " + (temp / "court_0000_cam2.png").string() +
+               ": cannot open for reading\n",
            "ballsight: camera 'nw' (file " + (temp / "court_0000_cam3.png").string() +
                "): reference balls: found 0 of 12",
            "ballsight: error: 4 of 4 cameras failed (ne, se, sw, nw); no calibration file "

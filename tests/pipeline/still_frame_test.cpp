@@ -101,7 +101,7 @@ TEST(StillFrame, RecordedSourcesGiveTheirFirstImage) {
   const std::unique_ptr<FrameSource> missing =
       make_image_files_source({dir / "none.png"}, "file none.png");
   EXPECT_EQ(error_of(*missing, quick_retries(3)),
-            "cannot read image " + (dir / "none.png").string());
+            (dir / "none.png").string() + ": cannot open for reading");
 }
 
 TEST(StillFrame, OptionsAreChecked) {

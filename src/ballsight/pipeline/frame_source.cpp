@@ -7,6 +7,7 @@
 #include <opencv2/videoio.hpp>
 #include <stdexcept>
 
+#include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {
@@ -52,8 +53,9 @@ class ImageFilesSource final : public FrameSource {
   std::optional<cv::Mat> read() override {
     if (next_ >= files_.size()) return std::nullopt;
     const std::filesystem::path& file = files_[next_];
-    cv::Mat image = cv::imread(file.string(), cv::IMREAD_COLOR);
-    if (image.empty()) throw std::runtime_error("cannot read image " + file.string());
+    // read_image_bgr names the file and what is wrong with it (OpenCV's imread would print a
+    // warning of its own on every retry).
+    cv::Mat image = read_image_bgr(file);
     ++next_;
     return image;
   }
@@ -76,7 +78,10 @@ class VideoCaptureSource final : public FrameSource {
   }
   void open() override {
     capture_.release();
-    const bool ok = device_ ? capture_.open(*device_) : capture_.open(url_);
+    // Backends named: OpenCV's default tries GStreamer and an image-sequence reader first, and
+    // each failed try prints errors of its own on every retry of an unreachable camera.
+    const bool ok =
+        device_ ? capture_.open(*device_, cv::CAP_V4L2) : capture_.open(url_, cv::CAP_FFMPEG);
     if (!ok || !capture_.isOpened()) throw std::runtime_error("cannot open " + describe());
   }
   std::optional<cv::Mat> read() override {
