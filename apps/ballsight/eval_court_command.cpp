@@ -51,7 +51,8 @@ void add_eval_court_command(CLI::App& eval) {
                       "estimates for the first scenes");
   cmd->add_flag("--plot-mistakes", args->options.plot_mistakes,
                 "With --plot-dir: also the pictures of every scene where ballsight missed a ball "
-                "or made a duplicate or false estimate (listed with --json under \"mistakes\")")
+                "or made a duplicate or false estimate (the text lists ballsight's, --json every "
+                "method's under \"mistakes\")")
       ->needs(plot_dir);
   cmd->callback([args] { run_eval_court(*args); });
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
@@ -161,12 +162,25 @@ TEST(EvalCourtCli, JsonShapeAndPictures) {
                             "robot_position_error_cm", "robot_heading_error_deg"})
       EXPECT_TRUE(m[key].is_number()) << key;
     EXPECT_TRUE(m["duplicates"].is_number_integer());
+    // Every ball the method got wrong, one entry each: the counts add up.
+    ASSERT_TRUE(m["mistakes"].is_array());
+    std::map<std::string, int> kinds;
+    for (const nlohmann::json& mistake : m["mistakes"]) {
+      EXPECT_EQ(mistake["scene"], 0);
+      EXPECT_TRUE(mistake["x_m"].is_number() && mistake["y_m"].is_number());
+      ++kinds[mistake["kind"].get<std::string>()];
+    }
+    EXPECT_EQ(kinds["missed"], m["balls_counted"].get<int>() - m["true_positives"].get<int>());
+    EXPECT_EQ(kinds["duplicate"], m["duplicates"].get<int>());
+    EXPECT_EQ(kinds["false_positive"], m["false_positives"].get<int>());
+    EXPECT_EQ(kinds.size(), 3u);  // no other kind
   }
   EXPECT_GT(j["methods"]["ballsight"]["recall"].get<double>(),
             j["methods"]["seed"]["recall"].get<double>());
   for (const char* picture : {"scene_0000_cam0.png", "scene_0000_cam3.png", "scene_0000_field.png"})
     EXPECT_TRUE(fs::exists(temp / "plots" / picture)) << picture;
   expect_one_line_error(run_cli({"eval", "court", "--scenes", "0"}), "scenes");
+  expect_one_line_error(run_cli({"eval", "court", "--plot-mistakes"}), "--plot-dir");
 }
 
 }  // namespace

@@ -7,10 +7,6 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/detect/court_detector.hpp"
-#include "ballsight/sim/court_renderer.hpp"
-#include "ballsight/sim/court_rig.hpp"
-#include "ballsight/sim/court_scenario.hpp"
-#include "ballsight/sim/seeding.hpp"
 #include "ballsight/world/court_world.hpp"
 #include "detect/court_scene_support.hpp"
 #include "field_cameras.hpp"
@@ -86,51 +82,6 @@ TEST(PixelClusterFit, FindsTheBallsOfMergedClusters) {
     EXPECT_LT(worst_error(cluster.balls, model.balls), 0.01);
   }
   EXPECT_GE(old_wrong, 4);  // the previous path miscounted four of the five
-}
-
-// Scenes of `eval court` (rig and scene seeds as it derives them) where clusters went wrong: a
-// refit group's blobs reached into another group's and each fitted the shared blob apart, both
-// placing a ball in one spot (a duplicate); or a ball added to a cluster moved its neighbours so
-// that another was no longer needed (a duplicate); or a far ball that one camera alone sees was
-// split in two along its line of sight (scene 3 of seed 3). Rendered and seen through the rig's
-// true cameras (no calibration), no ball is the nearest of two estimates. (Scene 14 of seed 2
-// showed its duplicate only through the evaluation's calibrated cameras; it is kept as a case.)
-TEST(PixelClusterFit, SimulatedScenesHaveNoDuplicateBalls) {
-  struct Case {
-    std::uint64_t seed;
-    int scene;
-  };
-  for (const Case& c : {Case{2, 14}, Case{3, 16}, Case{7, 5}, Case{3, 3}}) {
-    SCOPED_TRACE("eval court --seed " + std::to_string(c.seed) + ", scene " +
-                 std::to_string(c.scene));
-    const sim::CourtRig rig = sim::make_court_rig({}, {}, sim::derive_seed(c.seed, 0));
-    const std::uint64_t scene_seed = sim::derive_seed(c.seed, 1000 + c.scene);
-    const sim::CourtScene scene = sim::make_court_scene(rig.court, {}, scene_seed);
-    std::vector<FieldCamera> cameras;
-    std::vector<std::optional<std::vector<PixelDetection>>> detections;
-    for (size_t k = 0; k < rig.cameras.size(); ++k) {
-      cameras.push_back({rig.cameras[k].camera, rig.cameras[k].camera_from_field});
-      const sim::CourtRender render = sim::CourtRenderer(rig.cameras[k], rig.court)
-                                          .render(scene, sim::derive_seed(scene_seed, k));
-      detections.emplace_back(CourtDetector(cameras.back()).detect(render.bgr));
-    }
-    const WorldModel model = build_world_model(cameras, detections, {});
-    std::vector<Vec2> truth;
-    for (const sim::SceneSphere& sphere : scene.balls)
-      if (sphere.kind == sim::ObjectKind::tennis_ball)
-        truth.push_back(sphere.center_in_field.head<2>());
-    // No two estimates of one ball: each estimate's nearest true ball is its own.
-    std::vector<int> estimates_of(truth.size(), 0);
-    for (const FusedBall& ball : model.balls) {
-      size_t nearest = 0;
-      for (size_t t = 1; t < truth.size(); ++t)
-        if ((truth[t] - ball.position_m).norm() < (truth[nearest] - ball.position_m).norm())
-          nearest = t;
-      ++estimates_of[nearest];
-    }
-    for (size_t t = 0; t < truth.size(); ++t)
-      EXPECT_LE(estimates_of[t], 1) << "ball at " << truth[t].transpose();
-  }
 }
 
 // A lone ball seen split by one camera is not made two: the fit needs no further ball.

@@ -101,12 +101,19 @@ void write_pictures(const CourtEvalOptions& options, const sim::CourtRig& rig, i
 
 }  // namespace
 
+std::uint64_t court_eval_rig_seed(std::uint64_t seed) {
+  return sim::derive_seed(seed, kRigStream);
+}
+
+std::uint64_t court_eval_scene_seed(std::uint64_t seed, int scene) {
+  return sim::derive_seed(seed, kSceneStream + static_cast<std::uint64_t>(scene));
+}
+
 CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
   options.validate();
   CourtEvalReport report;
   report.options = options;
-  const sim::CourtRig rig =
-      sim::make_court_rig({}, options.rig, sim::derive_seed(options.seed, kRigStream));
+  const sim::CourtRig rig = sim::make_court_rig({}, options.rig, court_eval_rig_seed(options.seed));
 
   // Each method calibrates its cameras from the same rendered images.
   const CalibrationImages calibration_images =
@@ -136,7 +143,7 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
   std::vector<sim::CourtRenderer> renderers;
   for (const sim::CourtCamera& camera : rig.cameras) renderers.emplace_back(camera, rig.court);
   for (int k = 0; k < options.scenes; ++k) {
-    const std::uint64_t scene_seed = sim::derive_seed(options.seed, kSceneStream + k);
+    const std::uint64_t scene_seed = court_eval_scene_seed(options.seed, k);
     const sim::CourtScene scene = sim::make_court_scene(rig.court, options.scenario, scene_seed);
     std::vector<sim::CourtRender> renders;
     std::vector<cv::Mat> frames;
@@ -236,6 +243,7 @@ nlohmann::json court_eval_json(const CourtEvalReport& report) {
 }
 
 std::string court_eval_text(const CourtEvalReport& report) {
+  constexpr size_t kMistakesShown = 20;
   std::ostringstream out;
   char line[256];
   std::snprintf(line, sizeof line, "court evaluation: seed %llu, %d scenes, match radius %.0f cm\n",
@@ -261,13 +269,19 @@ std::string court_eval_text(const CourtEvalReport& report) {
         100.0 * s.ball_error_p95_m(), 100.0 * s.robot_position_error_mean_m(),
         deg_from_rad(s.robot_heading_error_mean_rad()), ms);
     out << line;
-    if (m.method == CourtMethod::ballsight)
-      for (const BallMistake& mistake : s.mistakes) {
+    if (m.method == CourtMethod::ballsight && !s.mistakes.empty()) {
+      out << "  ballsight's mistakes (scene: kind at field position):\n";
+      const size_t shown = std::min<size_t>(s.mistakes.size(), kMistakesShown);
+      for (size_t i = 0; i < shown; ++i) {
+        const BallMistake& mistake = s.mistakes[i];
         std::snprintf(line, sizeof line, "  scene %d: %s at (%.3f, %.3f) m\n", mistake.scene,
                       mistake_kind_name(mistake.kind).c_str(), mistake.position_m.x(),
                       mistake.position_m.y());
         out << line;
       }
+      if (shown < s.mistakes.size())
+        out << "  ... " << s.mistakes.size() - shown << " more (all in --json)\n";
+    }
   }
   const CourtScores& any = std::max_element(report.methods.begin(), report.methods.end(),
                                             [](const auto& a, const auto& b) {

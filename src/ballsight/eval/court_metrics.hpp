@@ -33,6 +33,7 @@ struct BallMistake {
   int scene = 0;  // set by CourtScores::add
 };
 
+/// "missed", "duplicate", "false_positive".
 std::string mistake_kind_name(BallMistake::Kind kind);
 
 struct SceneScore {

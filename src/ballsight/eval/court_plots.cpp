@@ -126,7 +126,16 @@ cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3
   const double margin_m = 1.5;
   const Vec2 half(0.5 * court.surround_length_m + margin_m,
                   0.5 * court.surround_width_m + margin_m);
-  const int top = 36 + 22 * static_cast<int>(layers.size() + 1);  // title and legend
+  std::vector<LegendEntry> legend{
+      {"true balls and robot (grey: seen by no camera)", cv::Scalar(20, 20, 20)}};
+  for (const WorldLayer& layer : layers) {
+    legend.push_back({layer.label, layer.colour});
+    if (!layer.mistakes.empty())
+      legend.push_back({layer.label.substr(0, layer.label.find(' ')) +
+                            "'s mistakes: M missed, D duplicate, F false positive",
+                        kMistakeColour});
+  }
+  const int top = 36 + 22 * static_cast<int>(legend.size());  // title and legend
   const int width = static_cast<int>(std::lround(2 * half.x() * pixels_per_m));
   const int map_height = static_cast<int>(std::lround(2 * half.y() * pixels_per_m));
   const double zoom = 5.0 * pixels_per_m;  // the inset below the map
@@ -146,15 +155,6 @@ cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3
   draw_text(image, "3 x 2 m around the robot", {inset.x + 6, inset.br().y - 8}, 0.5,
             cv::Scalar(255, 255, 255));
 
-  std::vector<LegendEntry> legend{
-      {"true balls and robot (grey: seen by no camera)", cv::Scalar(20, 20, 20)}};
-  for (const WorldLayer& layer : layers) {
-    legend.push_back({layer.label, layer.colour});
-    if (!layer.mistakes.empty())
-      legend.push_back({layer.label.substr(0, layer.label.find(' ')) +
-                            "'s mistakes: M missed, D duplicate, F false positive",
-                        kMistakeColour});
-  }
   cv::rectangle(image, {0, 0, image.cols, top}, cv::Scalar::all(255), cv::FILLED);
   draw_text(image, title, {10, 24}, 0.6);
   draw_legend(image, {10, 32}, legend);

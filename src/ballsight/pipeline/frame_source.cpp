@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
+#include <opencv2/videoio/registry.hpp>
 #include <stdexcept>
 
 #include "ballsight/camera/image_file.hpp"
@@ -78,10 +79,13 @@ class VideoCaptureSource final : public FrameSource {
   }
   void open() override {
     capture_.release();
-    // Backends named: OpenCV's default tries GStreamer and an image-sequence reader first, and
-    // each failed try prints errors of its own on every retry of an unreachable camera.
-    const bool ok =
-        device_ ? capture_.open(*device_, cv::CAP_V4L2) : capture_.open(url_, cv::CAP_FFMPEG);
+    // Backends named where OpenCV has them: after a failed open its default goes on to
+    // GStreamer and an image-sequence reader, which print errors of their own on every retry of
+    // an unreachable camera.
+    const cv::VideoCaptureAPIs wanted = device_ ? cv::CAP_V4L2 : cv::CAP_FFMPEG;
+    const cv::VideoCaptureAPIs api =
+        cv::videoio_registry::hasBackend(wanted) ? wanted : cv::CAP_ANY;
+    const bool ok = device_ ? capture_.open(*device_, api) : capture_.open(url_, api);
     if (!ok || !capture_.isOpened()) throw std::runtime_error("cannot open " + describe());
   }
   std::optional<cv::Mat> read() override {

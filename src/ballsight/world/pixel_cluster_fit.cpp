@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <numbers>
 
@@ -190,9 +189,7 @@ struct Hypothesis {
   double cost = std::numeric_limits<double>::max();
 };
 
-// Where one more ball may start, two kinds: touching one of the balls, in eight directions; and
-// touching two of them at once (the gap of a packed cluster, which the eight directions of one
-// ball miss by more than the fit recovers).
+// Where one more ball may start, two kinds. Touching one of the balls, in eight directions:
 std::vector<Vec2> touching_one_starts(const std::vector<Vec2>& balls, double radius_m) {
   std::vector<Vec2> starts;
   for (const Vec2& b : balls)
@@ -203,6 +200,9 @@ std::vector<Vec2> touching_one_starts(const std::vector<Vec2>& balls, double rad
   return starts;
 }
 
+// Touching two of the balls at once, on either side of the pair (every start 2 radii from both):
+// the gap of a packed cluster, which the eight directions of one ball miss by more than the fit
+// recovers.
 std::vector<Vec2> touching_two_starts(const std::vector<Vec2>& balls, double radius_m) {
   const double touching = 2.0 * radius_m;
   std::vector<Vec2> starts;
@@ -295,10 +295,13 @@ std::vector<std::vector<int>> fit_groups(
   for (const FusedObject& ball : balls) blobs.push_back(blobs_of(ball, observations, detections));
   return linked_groups(balls.size(), [&](size_t i, size_t j) {
     if ((balls[i].position_m - balls[j].position_m).norm() < link_m) return true;
-    std::vector<std::pair<int, int>> shared;
-    std::set_intersection(blobs[i].begin(), blobs[i].end(), blobs[j].begin(), blobs[j].end(),
-                          std::back_inserter(shared));
-    return !shared.empty();
+    // A blob in common: both lists ascending.
+    auto a = blobs[i].begin(), b = blobs[j].begin();
+    while (a != blobs[i].end() && b != blobs[j].end()) {
+      if (*a == *b) return true;
+      *a < *b ? ++a : ++b;
+    }
+    return false;
   });
 }
 

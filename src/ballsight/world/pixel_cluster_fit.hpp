@@ -21,7 +21,8 @@ namespace ballsight {
 
 struct PixelFitOptions {
   bool enabled = true;
-  double link_distance_radii = 4.0;  // balls this close (in ball radii) form a group
+  double link_distance_radii = 4.0;  // balls this close (in ball radii), or cut from one blob,
+                                     // form a group
   // The coverage model, measured on isolated single balls: a ball covers a disc of its outline's
   // radius times radius_scale plus blur_px, a pixel's share of it ramping over one pixel; the
   // detector's coverage is that share times coverage_gain, at most 1.
