@@ -269,6 +269,14 @@ Hypothesis with_one_less(const CoverageModel& model, const Hypothesis& current,
   return best;
 }
 
+// The detection an observation was placed from; nullptr where its camera has no frame.
+const PixelDetection* detection_of(
+    const FieldObservation& o,
+    const std::vector<std::optional<std::vector<PixelDetection>>>& detections) {
+  const auto& list = detections[static_cast<size_t>(o.camera)];
+  return list ? &(*list)[static_cast<size_t>(o.detection)] : nullptr;
+}
+
 // The blobs (camera, blob index) a fused ball's observations were cut from, ascending.
 std::vector<std::pair<int, int>> blobs_of(
     const FusedObject& ball, const std::vector<FieldObservation>& observations,
@@ -276,10 +284,8 @@ std::vector<std::pair<int, int>> blobs_of(
   std::vector<std::pair<int, int>> blobs;
   for (int m : ball.observations) {
     const FieldObservation& o = observations[static_cast<size_t>(m)];
-    const auto& list = detections[static_cast<size_t>(o.camera)];
-    if (!list) continue;
-    const CoveragePatch& patch = (*list)[static_cast<size_t>(o.detection)].patch;
-    if (patch.width > 0) blobs.emplace_back(o.camera, patch.blob);
+    const PixelDetection* d = detection_of(o, detections);
+    if (d && d->patch.width > 0) blobs.emplace_back(o.camera, d->patch.blob);
   }
   std::sort(blobs.begin(), blobs.end());
   return blobs;
@@ -339,10 +345,9 @@ std::vector<FusedObject> fit_clusters_to_pixels(
     std::vector<View> views;
     for (int m : members) {
       const FieldObservation& o = observations[static_cast<size_t>(m)];
-      const auto& list = detections[static_cast<size_t>(o.camera)];
-      if (!list) continue;
-      const PixelDetection& d = (*list)[static_cast<size_t>(o.detection)];
-      if (d.patch.width == 0) continue;
+      const PixelDetection* found = detection_of(o, detections);
+      if (!found || found->patch.width == 0) continue;
+      const PixelDetection& d = *found;
       if (std::any_of(views.begin(), views.end(), [&](const View& v) {
             return v.camera == o.camera && v.patch->blob == d.patch.blob;
           }))
@@ -414,9 +419,7 @@ std::vector<FusedObject> fit_clusters_to_pixels(
       // Its observations: those whose blob's patch its centre falls into.
       for (int m : members) {
         const FieldObservation& o = observations[static_cast<size_t>(m)];
-        const int blob =
-            (*detections[static_cast<size_t>(o.camera)])[static_cast<size_t>(o.detection)]
-                .patch.blob;
+        const int blob = detection_of(o, detections)->patch.blob;
         const bool inside =
             std::any_of(model.views().begin(), model.views().end(), [&](const View& v) {
               return v.camera == o.camera && v.patch->blob == blob &&
