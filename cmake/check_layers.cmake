@@ -8,7 +8,7 @@ set(allowed_detect core camera detect)
 set(allowed_world core camera world)
 set(allowed_plan core plan)
 set(allowed_net core world plan net)
-set(allowed_pipeline core camera detect world pipeline)
+set(allowed_pipeline core camera detect world plan pipeline)
 set(allowed_sim core camera sim)
 set(allowed_eval core camera calib detect world pipeline plan net sim eval)
 

@@ -1,0 +1,18 @@
+#pragma once
+// A basket of K balls: the route is planned as one giant path, then cut into trips by an optimal
+// split (route-first, cluster-second: Prins, Lacomme & Prodhon, "Order-first split-second methods
+// for vehicle routing problems: a review", 2014): dynamic programming over where each trip ends,
+// every trip closing at the unload point. O(n K).
+
+#include <vector>
+
+#include "ballsight/plan/travel_model.hpp"
+
+namespace ballsight {
+
+/// Cuts `path` (node 0 first, then the balls) into trips of at most `capacity` balls; returns the
+/// path with `unload` inserted after each trip, the last one included.
+std::vector<int> split_into_trips(const TravelModel& model, const std::vector<int>& path,
+                                  int capacity, int unload);
+
+}  // namespace ballsight

@@ -1,0 +1,55 @@
+#pragma once
+// Where the collecting robot may drive: the fenced area around a tennis court, with the net
+// across its middle as an obstacle the robot goes around. Travel between two points is the
+// shortest drivable path: the straight segment, or a detour round the corners of the net's keep-
+// out rectangle (a convex obstacle inside a convex fence: the shortest path bends only at its
+// corners). Field frame: origin at the court centre on the net line, x along the length.
+
+#include <array>
+#include <optional>
+
+#include "ballsight/core/geometry.hpp"
+
+namespace ballsight {
+
+/// The net as the robot sees it: a segment on x = 0 from post to post, kept out of by
+/// `clearance_m` in x (the collector mouth may come this close to the mesh) and by
+/// `post_clearance_m` beyond each post (the body swings round it).
+struct CourtNet {
+  double half_length_m = 10.97 / 2.0 + 0.914;  // centre to post: ITF posts 0.914 m outside
+  double clearance_m = 0.10;
+  double post_clearance_m = 0.50;
+};
+
+struct DrivableCourt {
+  Vec2 area_min_m = Vec2(-18.0, -9.0);  // the fence, an axis-aligned rectangle
+  Vec2 area_max_m = Vec2(18.0, 9.0);
+  std::optional<CourtNet> net = CourtNet{};
+
+  /// A standard court: 36 x 18 m fence centred on the court, the net of a doubles court.
+  static DrivableCourt standard() { return {}; }
+
+  /// Throws InputError naming the first invalid field (the net's keep-out must fit the fence).
+  void validate() const;
+
+  bool in_area(const Vec2& p) const;
+  /// Inside the net's keep-out rectangle (|x| < clearance, |y| < half length + post clearance).
+  bool in_net_zone(const Vec2& p) const;
+  /// Where the robot's collector picks up a ball at `ball`: the ball itself, or, for a ball inside
+  /// the net's keep-out, the nearest point on the keep-out's edge on the ball's side of the net.
+  Vec2 approach_point(const Vec2& ball) const;
+  /// The open segment a-b passes through the net's keep-out.
+  bool blocked(const Vec2& a, const Vec2& b) const;
+};
+
+/// The shortest drivable path from a to b: `via` holds the 0-2 corners it bends at.
+struct DrivablePath {
+  double length_m = 0.0;
+  std::array<Vec2, 2> via{};
+  int via_count = 0;
+};
+
+/// Shortest path between two points of the area outside the net's keep-out.
+DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2& b);
+
+}  // namespace ballsight

@@ -1,0 +1,230 @@
+#include "ballsight/plan/planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/plan/capacity_split.hpp"
+#include "ballsight/plan/exact_path.hpp"
+#include "ballsight/plan/greedy_planners.hpp"
+#include "ballsight/plan/path_search.hpp"
+#include "ballsight/plan/route_geometry.hpp"
+#include "ballsight/plan/travel_model.hpp"
+
+namespace ballsight {
+namespace {
+
+// Iterated local search kicks per ball at effort 1, fresh and re-planned (bench/plan.cpp and
+// `eval plan`: docs/route-planning.md).
+constexpr double kKicksPerBall = 1.0;
+constexpr double kReplanKicksPerBall = 0.1;
+// A ball of the previous route is the same ball now when it moved less than this.
+constexpr double kSameBallM = 0.30;
+
+/// The nodes the searches run on: 0 the robot, 1..k the balls' visit points, then the return
+/// point and the unload point when there are any.
+struct Nodes {
+  std::vector<Vec2> points;
+  std::vector<int> ball_of;  // node -> ball index, -1 for the others
+  int balls_end = 1;         // ball nodes are 1 .. balls_end - 1
+  int return_node = -1;
+  int unload_node = -1;
+};
+
+Nodes make_nodes(const PlanningProblem& problem, const std::vector<int>& balls) {
+  Nodes nodes;
+  nodes.points.push_back(problem.robot.position);
+  nodes.ball_of.push_back(-1);
+  for (const int b : balls) {
+    const Vec2& p = problem.balls[static_cast<std::size_t>(b)];
+    nodes.points.push_back(problem.court ? problem.court->approach_point(p) : p);
+    nodes.ball_of.push_back(b);
+  }
+  nodes.balls_end = static_cast<int>(nodes.points.size());
+  if (problem.return_to && !problem.capacity) {
+    nodes.return_node = static_cast<int>(nodes.points.size());
+    nodes.points.push_back(*problem.return_to);
+    nodes.ball_of.push_back(-1);
+  }
+  if (problem.capacity) {
+    nodes.unload_node = static_cast<int>(nodes.points.size());
+    nodes.points.push_back(problem.capacity->unload_m);
+    nodes.ball_of.push_back(-1);
+  }
+  return nodes;
+}
+
+/// Greedy start: from the robot, always the cheapest next node.
+std::vector<int> nearest_neighbour_path(const TravelModel& model, const Nodes& nodes) {
+  std::vector<int> path{0};
+  std::vector<int> left;
+  for (int i = 1; i < nodes.balls_end; ++i) left.push_back(i);
+  while (!left.empty()) {
+    const int prev = path.size() > 1 ? path[path.size() - 2] : kHeading;
+    const int at = path.back();
+    const auto best = std::min_element(left.begin(), left.end(), [&](int a, int b) {
+      return model.turn(prev, at, a) + model.leg(at, a) <
+             model.turn(prev, at, b) + model.leg(at, b);
+    });
+    path.push_back(*best);
+    left.erase(best);
+  }
+  if (nodes.return_node >= 0) path.push_back(nodes.return_node);
+  return path;
+}
+
+/// The ball node nearest `target` within kSameBallM that is not `used`, or -1.
+int same_ball(const TravelModel& model, const Nodes& nodes, const Vec2& target,
+              const std::vector<bool>& used) {
+  int best = -1;
+  double best_d = kSameBallM;
+  for (int i = 1; i < nodes.balls_end; ++i) {
+    const double d = (model.node(i) - target).norm();
+    if (!used[static_cast<std::size_t>(i)] && d < best_d) {
+      best = i;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+/// The previous route's balls found again (in its order), the new ones inserted where they cost
+/// least; `dirty` gets the nodes next to every change.
+std::vector<int> warm_start(const TravelModel& model, const Nodes& nodes, const Route& previous,
+                            std::vector<int>& dirty) {
+  std::vector<bool> used(static_cast<std::size_t>(model.size()), false);
+  std::vector<int> path{0};
+  for (const Vec2& target : previous.targets_m) {
+    const int best = same_ball(model, nodes, target, used);
+    if (best < 0) {
+      dirty.push_back(path.back());  // a ball gone: its neighbours may do better now
+      continue;
+    }
+    used[static_cast<std::size_t>(best)] = true;
+    path.push_back(best);
+  }
+  if (nodes.return_node >= 0) path.push_back(nodes.return_node);
+  const std::size_t open_end = path.size() - (nodes.return_node >= 0 ? 1 : 0);
+  for (int i = 1; i < nodes.balls_end; ++i) {
+    if (used[static_cast<std::size_t>(i)]) continue;
+    std::size_t best_at = open_end;
+    double best_cost = path.size() == open_end ? model.leg(path.back(), i)
+                                               : std::numeric_limits<double>::infinity();
+    for (std::size_t k = 1; k < path.size(); ++k) {
+      const double c =
+          model.leg(path[k - 1], i) + model.leg(i, path[k]) - model.leg(path[k - 1], path[k]);
+      if (c < best_cost) {
+        best_cost = c;
+        best_at = k;
+      }
+    }
+    path.insert(path.begin() + static_cast<std::ptrdiff_t>(best_at), i);
+    dirty.push_back(i);
+  }
+  if (path.size() > 1) dirty.push_back(path[1]);
+  return path;
+}
+
+/// Keeps the route's next target `target` unless the free route saves more than `margin`.
+void keep_target(PathSearch<TravelModel>& search, const TravelModel& model, int target,
+                 double margin, std::vector<int>& path) {
+  if (path.size() < 2 || path[1] == target) return;
+  std::vector<int> kept = path;
+  std::erase(kept, target);
+  kept.insert(kept.begin() + 1, target);
+  Improvement how;
+  how.fixed_prefix = 2;
+  how.dirty = {target, kept[2]};
+  const double kept_cost = search.improve(kept, how);
+  if (path_cost(model, path) + margin >= kept_cost) path = std::move(kept);
+}
+
+std::vector<RouteStop> searched_stops(const PlanningProblem& problem, const std::vector<int>& balls,
+                                      const PlannerOptions& options) {
+  const Nodes nodes = make_nodes(problem, balls);
+  const TravelModel model(nodes.points, problem.robot.heading_rad, problem.court, problem.limits,
+                          options.cost);
+  std::vector<int> path;
+  if (options.kind == PlannerKind::exact) {
+    require(!problem.capacity, "exact planner", "plans without a basket capacity only");
+    path = exact_path(model, nodes.return_node >= 0);
+  } else {
+    PathSearchOptions search_options;
+    search_options.fixed_end = nodes.return_node >= 0;
+    search_options.seed = options.seed;
+    PathSearch<TravelModel> search(model, search_options);
+    const double n = static_cast<double>(balls.size());
+    Improvement how;
+    if (options.previous) {
+      how.kicks = static_cast<int>(std::lround(options.effort * kReplanKicksPerBall * n));
+      path = warm_start(model, nodes, *options.previous, how.dirty);
+      search.improve(path, how);
+      // The target the robot is driving to, if it is still there.
+      if (!options.previous->targets_m.empty()) {
+        const std::vector<bool> none(static_cast<std::size_t>(model.size()), false);
+        const int target = same_ball(model, nodes, options.previous->targets_m[0], none);
+        if (target >= 0) keep_target(search, model, target, options.target_switch_margin_s, path);
+      }
+    } else {
+      path = nearest_neighbour_path(model, nodes);
+      how.kicks = static_cast<int>(std::lround(options.effort * kKicksPerBall * n));
+      search.improve(path, how);
+    }
+    if (problem.capacity) {
+      path = split_into_trips(model, path, problem.capacity->balls, nodes.unload_node);
+    }
+  }
+  std::vector<RouteStop> stops;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    if (path[i] == nodes.return_node) continue;  // measure_route drives there
+    stops.push_back({model.node(path[i]), nodes.ball_of[static_cast<std::size_t>(path[i])]});
+  }
+  return stops;
+}
+
+double objective(const Route& route, CostKind cost) {
+  return cost == CostKind::time ? route.time_s : route.length_m;
+}
+
+}  // namespace
+
+Route plan(const PlanningProblem& problem, const PlannerOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  problem.validate();
+  options.validate();
+  Route route;
+  route.planner = std::string(planner_name(options.kind));
+  std::vector<int> reachable;
+  for (int i = 0; i < static_cast<int>(problem.balls.size()); ++i) {
+    const bool in_reach =
+        !problem.court || problem.court->in_area(problem.balls[static_cast<std::size_t>(i)]);
+    (in_reach ? reachable : route.unreachable).push_back(i);
+  }
+  switch (options.kind) {
+    case PlannerKind::priority:
+      measure_route(problem, priority_stops(problem, reachable, options.priority), route);
+      break;
+    case PlannerKind::nearest:
+      measure_route(problem, nearest_stops(problem, reachable, options.cost), route);
+      break;
+    case PlannerKind::ballsight:
+    case PlannerKind::exact: {
+      const std::vector<RouteStop> stops = searched_stops(problem, reachable, options);
+      measure_route(problem, stops, route);
+      if (options.kind == PlannerKind::ballsight && options.sweep) {
+        Route pulled = route;
+        measure_route(problem, pull_visits(problem, stops), pulled);
+        if (objective(pulled, options.cost) < objective(route, options.cost))
+          route = std::move(pulled);
+      }
+      break;
+    }
+  }
+  route.plan_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return route;
+}
+
+}  // namespace ballsight

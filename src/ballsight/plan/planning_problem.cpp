@@ -1,0 +1,111 @@
+#include "ballsight/plan/planning_problem.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/core/text_format.hpp"
+
+namespace ballsight {
+namespace {
+
+constexpr std::array<std::pair<PlannerKind, std::string_view>, 4> kNames{{
+    {PlannerKind::priority, "priority"},
+    {PlannerKind::nearest, "nearest"},
+    {PlannerKind::ballsight, "ballsight"},
+    {PlannerKind::exact, "exact"},
+}};
+
+std::string point_text(const Vec2& p) {
+  std::string text = "(";
+  text += fixed(p.x(), 3);
+  text += ", ";
+  text += fixed(p.y(), 3);
+  text += ")";
+  return text;
+}
+
+}  // namespace
+
+void RobotLimits::validate() const {
+  require(std::isfinite(max_speed_mps) && max_speed_mps > 0.0, "max_speed_mps", "must be positive");
+  require(std::isfinite(turn_rate_dps) && turn_rate_dps > 0.0, "turn_rate_dps", "must be positive");
+}
+
+void PlanningProblem::validate() const {
+  limits.validate();
+  if (court) court->validate();
+  require(robot.position.allFinite() && std::isfinite(robot.heading_rad), "robot pose",
+          "must be finite");
+  require(collector_width_m > 0.0 && ball_radius_m > 0.0 && sweep_margin_m >= 0.0, "collector",
+          "width and ball radius must be positive, the margin not negative");
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    require(balls[i].allFinite(), "balls[" + std::to_string(i) + "]", "coordinates must be finite");
+  }
+  if (court) {
+    require(court->in_area(robot.position), "robot pose",
+            point_text(robot.position) + " is outside the drivable area");
+    require(!court->in_net_zone(robot.position), "robot pose",
+            point_text(robot.position) + " is inside the net");
+  }
+  // Two balls closer than a radius (touching balls are two radii apart): one ball twice.
+  std::vector<std::size_t> by_x(balls.size());
+  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](auto a, auto b) { return balls[a].x() < balls[b].x(); });
+  const double too_close = ball_radius_m;
+  for (std::size_t s = 0; s < by_x.size(); ++s) {
+    for (std::size_t t = s + 1;
+         t < by_x.size() && balls[by_x[t]].x() - balls[by_x[s]].x() < too_close; ++t) {
+      const auto [a, b] = std::minmax(by_x[s], by_x[t]);
+      require((balls[a] - balls[b]).norm() >= too_close,
+              "balls[" + std::to_string(a) + "] and balls[" + std::to_string(b) + "]",
+              "duplicate ball at " + point_text(balls[a]));
+    }
+  }
+  if (capacity) {
+    require(capacity->balls >= 1, "capacity", "must be at least 1 ball");
+    require(capacity->unload_m.allFinite(), "unload point", "must be finite");
+    if (court) {
+      require(court->in_area(capacity->unload_m) && !court->in_net_zone(capacity->unload_m),
+              "unload point", point_text(capacity->unload_m) + " is not drivable");
+    }
+  }
+  if (return_to) {
+    require(return_to->allFinite(), "return point", "must be finite");
+    if (court) {
+      require(court->in_area(*return_to) && !court->in_net_zone(*return_to), "return point",
+              point_text(*return_to) + " is not drivable");
+    }
+  }
+}
+
+double PlanningProblem::sweep_radius_m() const {
+  return std::max(0.0, collector_width_m / 2.0 - ball_radius_m - sweep_margin_m);
+}
+
+std::string_view planner_name(PlannerKind kind) {
+  for (const auto& [k, name] : kNames) {
+    if (k == kind) return name;
+  }
+  return "?";
+}
+
+std::optional<PlannerKind> planner_from_name(std::string_view name) {
+  for (const auto& [k, n] : kNames) {
+    if (n == name) return k;
+  }
+  return std::nullopt;
+}
+
+void PlannerOptions::validate() const {
+  require(std::isfinite(effort) && effort >= 0.0 && effort <= 10000.0, "effort",
+          "must be in [0, 10000]");
+  require(std::isfinite(target_switch_margin_s) && target_switch_margin_s >= 0.0,
+          "target_switch_margin_s", "must not be negative");
+  require(std::isfinite(priority.per_cm) && std::isfinite(priority.per_deg), "priority weights",
+          "must be finite");
+}
+
+}  // namespace ballsight

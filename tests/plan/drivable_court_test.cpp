@@ -1,0 +1,80 @@
+#include "ballsight/plan/drivable_court.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+namespace {
+
+const DrivableCourt kCourt = DrivableCourt::standard();
+const double kEnd = 10.97 / 2.0 + 0.914 + 0.5;  // keep-out's end beyond the post
+
+TEST(DrivableCourt, StraightWhereTheNetIsNotInTheWay) {
+  const DrivablePath p = shortest_path(kCourt, Vec2(-5, 2), Vec2(-1, -3));
+  EXPECT_EQ(p.via_count, 0);
+  EXPECT_NEAR(p.length_m, (Vec2(-5, 2) - Vec2(-1, -3)).norm(), 1e-12);
+  // Past the posts, straight over the net line.
+  EXPECT_EQ(shortest_path(kCourt, Vec2(-3, 8), Vec2(3, 8)).via_count, 0);
+}
+
+TEST(DrivableCourt, AcrossTheNetGoesRoundTheNearerPost) {
+  const Vec2 a(-4, 5), b(4, 5);
+  const DrivablePath p = shortest_path(kCourt, a, b);
+  ASSERT_EQ(p.via_count, 2);
+  EXPECT_NEAR(p.via[0].y(), kEnd, 1e-12);
+  EXPECT_NEAR(p.via[0].x(), -0.1, 1e-12);
+  EXPECT_NEAR(p.via[1].x(), 0.1, 1e-12);
+  const double expected = (Vec2(-0.1, kEnd) - a).norm() + 0.2 + (b - Vec2(0.1, kEnd)).norm();
+  EXPECT_NEAR(p.length_m, expected, 1e-12);
+  // And round the other post when that one is nearer.
+  EXPECT_LT(shortest_path(kCourt, Vec2(-4, -5), Vec2(4, -5)).via[0].y(), 0.0);
+}
+
+TEST(DrivableCourt, PathsAreSymmetricAndNeverShorterThanTheStraightLine) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> x(-18, 18), y(-9, 9);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec2 a(x(rng), y(rng)), b(x(rng), y(rng));
+    if (kCourt.in_net_zone(a) || kCourt.in_net_zone(b)) continue;
+    const DrivablePath ab = shortest_path(kCourt, a, b), ba = shortest_path(kCourt, b, a);
+    SCOPED_TRACE(testing::Message() << "seed 7 trial " << trial);
+    EXPECT_NEAR(ab.length_m, ba.length_m, 1e-9);
+    EXPECT_GE(ab.length_m, (b - a).norm() - 1e-9);
+    // Every piece of the path is clear of the net and inside the fence.
+    Vec2 from = a;
+    for (int i = 0; i < ab.via_count; ++i) {
+      EXPECT_FALSE(kCourt.blocked(from, ab.via[static_cast<std::size_t>(i)]));
+      EXPECT_TRUE(kCourt.in_area(ab.via[static_cast<std::size_t>(i)]));
+      from = ab.via[static_cast<std::size_t>(i)];
+    }
+    EXPECT_FALSE(kCourt.blocked(from, b));
+  }
+}
+
+TEST(DrivableCourt, BallAgainstTheNetIsApproachedFromItsSide) {
+  EXPECT_TRUE(kCourt.in_net_zone(Vec2(0.04, 2.0)));
+  EXPECT_EQ(kCourt.approach_point(Vec2(0.04, 2.0)), Vec2(0.1, 2.0));
+  EXPECT_EQ(kCourt.approach_point(Vec2(-0.04, 2.0)), Vec2(-0.1, 2.0));
+  EXPECT_EQ(kCourt.approach_point(Vec2(3, 2)), Vec2(3, 2));
+}
+
+TEST(DrivableCourt, ValidateNamesTheProblem) {
+  DrivableCourt small = kCourt;
+  small.area_min_m = Vec2(-18, -6);
+  small.area_max_m = Vec2(18, 6);
+  EXPECT_THROW(small.validate(), InputError);
+  DrivableCourt bad = kCourt;
+  bad.net->clearance_m = -1;
+  try {
+    bad.validate();
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("net.clearance_m"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace ballsight
