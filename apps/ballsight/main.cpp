@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   eval->require_subcommand(1);
   ballsight::app::add_eval_commands(*eval);
   ballsight::app::add_eval_court_command(*eval);
+  ballsight::app::add_eval_plan_command(*eval);
   ballsight::app::add_demo_command(app);
 
   CLI::App* calibrate = app.add_subcommand("calibrate", "Camera calibration from chessboards");
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
   court->require_subcommand(1);
   ballsight::app::add_court_calibrate_command(*court);
   ballsight::app::add_court_run_command(*court);
+  ballsight::app::add_plan_command(app);
 
   try {
     app.parse(argc, argv);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 
@@ -30,29 +31,7 @@ constexpr std::array<ColumnSpec, 4> kColumns = {{
 }};
 constexpr std::size_t kTheta = 0, kRadius = 1, kDistance = 2, kBearing = 3;
 
-struct Field {
-  std::string_view text;  // trimmed
-  std::size_t column;     // 1-based character column where the field starts
-};
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t");
-  return s.substr(first, last - first + 1);
-}
-
-std::vector<Field> split_fields(std::string_view line) {
-  std::vector<Field> fields;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = line.find(',', start);
-    const std::size_t end = comma == std::string_view::npos ? line.size() : comma;
-    fields.push_back({trim(line.substr(start, end - start)), start + 1});
-    if (comma == std::string_view::npos) return fields;
-    start = comma + 1;
-  }
-}
+using Field = CsvField;
 
 class Located {
  public:
@@ -75,7 +54,7 @@ std::string expected_header() {
 std::vector<std::size_t> parse_header(std::string_view line, const Located& at) {
   std::vector<std::size_t> ids;
   std::array<bool, kColumns.size()> seen{};
-  for (const Field& field : split_fields(line)) {
+  for (const Field& field : split_csv_fields(line)) {
     std::size_t id = 0;
     while (id < kColumns.size() && kColumns[id].name != field.text) ++id;
     if (id == kColumns.size()) {
@@ -115,7 +94,7 @@ double parse_value(const Field& field, const ColumnSpec& spec, const Located& at
 
 PolarSample parse_row(std::string_view line, const std::vector<std::size_t>& ids,
                       const Located& at) {
-  const std::vector<Field> fields = split_fields(line);
+  const std::vector<Field> fields = split_csv_fields(line);
   if (fields.size() > ids.size()) {
     at.fail(fields[ids.size()].column, "extra column " + std::to_string(ids.size() + 1) +
                                            ": the header has " + std::to_string(ids.size()) +
@@ -166,7 +145,7 @@ std::vector<PolarSample> parse_polar_samples_csv(std::string_view text, const st
     start = end + 1;
     ++line_number;
     if (line.ends_with('\r')) line.remove_suffix(1);
-    if (trim(line).empty()) continue;
+    if (trim_blanks(line).empty()) continue;
     const Located at(source, line_number);
     if (!ids) {
       ids = parse_header(line, at);

@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ballsight/eval/chart.hpp"
+#include "ballsight/eval/court_map.hpp"
 
 namespace ballsight {
 
@@ -53,29 +54,11 @@ std::string mistake_letter(BallMistake::Kind kind) {
   return std::string(1, static_cast<char>(std::toupper(mistake_kind_name(kind).front())));
 }
 
-// Draws the court area, cameras, truth and layers into `image` with field point (x, y) at pixel
-// offset + scale * (x - x0, y1 - y): field x to the right, y up.
-struct MapView {
-  Vec2 top_left_m;  // field coordinates of the view's top-left corner (x min, y max)
-  double pixels_per_m = 40.0;
-  cv::Point2d offset;
-
-  cv::Point2d operator()(const Vec2& p) const {
-    return offset + cv::Point2d((p.x() - top_left_m.x()) * pixels_per_m,
-                                (top_left_m.y() - p.y()) * pixels_per_m);
-  }
-};
-
+// Draws the court area, cameras, truth and layers into `image`.
 void draw_map(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& court,
               const std::vector<Vec3>& cameras, const std::vector<TruthBall>& truth,
               const Pose2D& robot_truth, const std::vector<WorldLayer>& layers) {
-  const auto fill_rect = [&](const sim::GroundRect& r, const cv::Vec3b& bgr) {
-    cv::rectangle(image, px({r.x_min, r.y_max}), px({r.x_max, r.y_min}),
-                  cv::Scalar(bgr[0], bgr[1], bgr[2]), cv::FILLED);
-  };
-  fill_rect(court.surround_rect(), court.surround_bgr);
-  fill_rect(court.court_rect(), court.court_bgr);
-  for (const sim::GroundRect& line : court.line_rects()) fill_rect(line, court.line_bgr);
+  draw_court_floor(image, px, court);
   for (const Vec3& c : cameras)
     cv::drawMarker(image, px(c.head<2>()), cv::Scalar(40, 40, 40), cv::MARKER_TRIANGLE_UP, 14, 2);
   const double scale = px.pixels_per_m / 40.0;  // marks grow with the zoom

@@ -86,8 +86,15 @@ Vec2 DrivableCourt::approach_point(const Vec2& ball) const {
 
 bool DrivableCourt::blocked(const Vec2& a, const Vec2& b) const {
   if (!net) return false;
-  // Liang-Barsky clip of the segment against the open keep-out rectangle.
   const Vec2 half(net->clearance_m, net->half_length_m + net->post_clearance_m);
+  // Both ends on one side of the keep-out: clear (most pairs of a court; no clipping needed).
+  for (int axis = 0; axis < 2; ++axis) {
+    if ((a[axis] >= half[axis] && b[axis] >= half[axis]) ||
+        (a[axis] <= -half[axis] && b[axis] <= -half[axis])) {
+      return false;
+    }
+  }
+  // Liang-Barsky clip of the segment against the open keep-out rectangle.
   const Vec2 d = b - a;
   double t_in = 0.0, t_out = 1.0;
   for (int axis = 0; axis < 2; ++axis) {

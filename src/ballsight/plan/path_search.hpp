@@ -23,7 +23,7 @@ namespace ballsight {
 
 struct PathSearchOptions {
   bool fixed_end = false;  // the last node stays: a point to return to
-  int neighbours = 10;     // candidate list length per node
+  int neighbours = 16;     // candidate list length per node (10 loses 1-2 % on clusters)
   int kick_span = 30;      // longest stretch a kick moves
   std::uint64_t seed = 1;
 };

@@ -16,9 +16,10 @@
 namespace ballsight {
 namespace {
 
-// Iterated local search kicks per ball at effort 1, fresh and re-planned (bench/plan.cpp and
-// `eval plan`: docs/route-planning.md).
+// Iterated local search kicks per ball at effort 1 (at least kMinKicks), fresh and re-planned
+// (bench/plan.cpp and `eval plan`: docs/route-planning.md).
 constexpr double kKicksPerBall = 1.0;
+constexpr double kMinKicks = 100.0;
 constexpr double kReplanKicksPerBall = 0.1;
 // A ball of the previous route is the same ball now when it moved less than this.
 constexpr double kSameBallM = 0.30;
@@ -169,7 +170,8 @@ std::vector<RouteStop> searched_stops(const PlanningProblem& problem, const std:
       }
     } else {
       path = nearest_neighbour_path(model, nodes);
-      how.kicks = static_cast<int>(std::lround(options.effort * kKicksPerBall * n));
+      how.kicks =
+          static_cast<int>(std::lround(options.effort * std::max(kMinKicks, kKicksPerBall * n)));
       search.improve(path, how);
     }
     if (problem.capacity) {

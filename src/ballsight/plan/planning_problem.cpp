@@ -39,8 +39,8 @@ void PlanningProblem::validate() const {
   if (court) court->validate();
   require(robot.position.allFinite() && std::isfinite(robot.heading_rad), "robot pose",
           "must be finite");
-  require(collector_width_m > 0.0 && ball_radius_m > 0.0 && sweep_margin_m >= 0.0, "collector",
-          "width and ball radius must be positive, the margin not negative");
+  require(collector_width_m >= 0.0 && ball_radius_m > 0.0 && sweep_margin_m >= 0.0, "collector",
+          "ball radius must be positive, width and margin not negative");
   for (std::size_t i = 0; i < balls.size(); ++i) {
     require(balls[i].allFinite(), "balls[" + std::to_string(i) + "]", "coordinates must be finite");
   }

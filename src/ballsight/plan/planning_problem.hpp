@@ -37,7 +37,7 @@ struct PlanningProblem {
   std::vector<Vec2> balls;             // field frame
   std::optional<DrivableCourt> court;  // nullopt: an unbounded plane without a net
   RobotLimits limits;
-  double collector_width_m = 0.70;  // the report's collector (section 7.8)
+  double collector_width_m = 0.70;  // the report's collector (section 7.8); 0: visit every centre
   double ball_radius_m = 0.0335;
   double sweep_margin_m = 0.05;  // kept between a ball and the collector's edge
   std::optional<Capacity> capacity;

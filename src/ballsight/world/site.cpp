@@ -38,6 +38,13 @@ void read_length(YamlMap& map, const std::string& key, double& out) {
   }
 }
 
+void read_non_negative(YamlMap& map, const std::string& key, double& out) {
+  if (const auto v = map.find(key)) {
+    out = v->number();
+    if (!(out >= 0.0)) v->fail("must not be negative, got " + v->node().Scalar());
+  }
+}
+
 void read_rgb(YamlMap& map, const std::string& key, Rgb& out) {
   if (const auto v = map.find(key)) {
     const std::vector<int> c = v->integers(3, 0, 255);
@@ -52,9 +59,19 @@ SiteCourt read_court(YamlMap map) {
   read_length(map, "width_m", court.width_m);
   read_length(map, "area_length_m", court.area_length_m);
   read_length(map, "area_width_m", court.area_width_m);
+  read_length(map, "net_posts_outside_m", court.net_posts_outside_m);
+  read_non_negative(map, "net_clearance_m", court.net_clearance_m);
+  read_non_negative(map, "net_post_clearance_m", court.net_post_clearance_m);
   map.finish();
   if (court.area_length_m < court.length_m || court.area_width_m < court.width_m) {
     map.value().fail("area_length_m x area_width_m must contain the court");
+  }
+  const double beyond_post =
+      court.width_m / 2.0 + court.net_posts_outside_m + court.net_post_clearance_m;
+  if (court.area_width_m / 2.0 <= beyond_post ||
+      court.area_length_m / 2.0 <= court.net_clearance_m) {
+    map.value().fail("area_width_m must leave room to drive round the net posts (more than " +
+                     std::to_string(2.0 * beyond_post) + " m)");
   }
   return court;
 }
@@ -74,6 +91,9 @@ SiteRobot read_robot(YamlMap map) {
   read_length(map, "marker_radius_m", robot.marker_radius_m);
   read_length(map, "marker_height_m", robot.marker_height_m);
   read_length(map, "collector_width_m", robot.collector_width_m);
+  read_non_negative(map, "collector_x_m", robot.collector_x_m);
+  read_length(map, "max_speed_mps", robot.max_speed_mps);
+  read_length(map, "turn_rate_dps", robot.turn_rate_dps);
   map.finish();
   return robot;
 }

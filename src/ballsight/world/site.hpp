@@ -62,14 +62,22 @@ struct SiteColours {
 struct SiteCourt {
   double length_m = 23.77;  // doubles court, outer edges of the lines
   double width_m = 10.97;
-  double area_length_m = 36.0;  // the surface around it where balls may lie (run-off included)
-  double area_width_m = 18.0;
+  double area_length_m = 36.0;  // the fenced surface around it (run-off included): where balls
+  double area_width_m = 18.0;   // may lie and the robot may drive
+  /// The net across the court on x = 0, between posts this far outside the doubles sidelines
+  /// (ITF: 0.914 m); the robot drives round it.
+  double net_posts_outside_m = 0.914;
+  double net_clearance_m = 0.10;       // closest the collector comes to the net's mesh
+  double net_post_clearance_m = 0.50;  // room the robot keeps beyond each post
 };
 
 struct SiteRobot {
   double marker_radius_m = 0.045;
   double marker_height_m = 0.345;   // marker centres above the floor
   double collector_width_m = 0.70;  // the report's collector (section 7.8)
+  double collector_x_m = 0.30;      // collector mouth ahead of the robot's reference point
+  double max_speed_mps = 1.0;       // driving speed of a small differential-drive collector
+  double turn_rate_dps = 90.0;      // turning on the spot
 };
 
 struct Site {

@@ -1,0 +1,17 @@
+#include "ballsight/eval/court_map.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+namespace ballsight {
+
+void draw_court_floor(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& court) {
+  const auto fill_rect = [&](const sim::GroundRect& r, const cv::Vec3b& bgr) {
+    cv::rectangle(image, px({r.x_min, r.y_max}), px({r.x_max, r.y_min}),
+                  cv::Scalar(bgr[0], bgr[1], bgr[2]), cv::FILLED);
+  };
+  fill_rect(court.surround_rect(), court.surround_bgr);
+  fill_rect(court.court_rect(), court.court_bgr);
+  for (const sim::GroundRect& line : court.line_rects()) fill_rect(line, court.line_bgr);
+}
+
+}  // namespace ballsight

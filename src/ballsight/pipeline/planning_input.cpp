@@ -1,0 +1,112 @@
+#include "ballsight/pipeline/planning_input.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "ballsight/core/angle.hpp"
+#include "ballsight/core/csv_fields.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/core/file_io.hpp"
+
+namespace ballsight {
+namespace {
+
+double json_number(const nlohmann::json& object, const char* key, const std::string& where) {
+  require(object.is_object(), where, "expected an object");
+  const auto it = object.find(key);
+  require(it != object.end(), where, std::string("key '") + key + "' missing");
+  require(it->is_number() && std::isfinite(it->get<double>()), where + "." + key,
+          "expected a finite number");
+  return it->get<double>();
+}
+
+}  // namespace
+
+DrivableCourt drivable_court(const SiteCourt& court) {
+  DrivableCourt out;
+  out.area_max_m = Vec2(court.area_length_m / 2.0, court.area_width_m / 2.0);
+  out.area_min_m = -out.area_max_m;
+  out.net = CourtNet{court.width_m / 2.0 + court.net_posts_outside_m, court.net_clearance_m,
+                     court.net_post_clearance_m};
+  return out;
+}
+
+PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
+                                      std::vector<Vec2> balls) {
+  PlanningProblem problem;
+  const Vec2 forward(std::cos(robot.heading_rad), std::sin(robot.heading_rad));
+  problem.robot = {robot.position + site.robot.collector_x_m * forward, robot.heading_rad};
+  problem.balls = std::move(balls);
+  problem.court = drivable_court(site.court);
+  problem.limits = {site.robot.max_speed_mps, site.robot.turn_rate_dps};
+  problem.collector_width_m = site.robot.collector_width_m;
+  problem.ball_radius_m = site.ball_radius_m;
+  return problem;
+}
+
+WorldBalls parse_world_balls(std::string_view text, const std::string& source) {
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  require(!j.is_discarded(), source, "not valid JSON");
+  require(j.is_object(), source, "expected a world model object (court run --json)");
+  const auto balls = j.find("balls");
+  require(balls != j.end() && balls->is_array(), source, "key 'balls' (a list) missing");
+  WorldBalls out;
+  for (std::size_t i = 0; i < balls->size(); ++i) {
+    const std::string where = source + ": balls[" + std::to_string(i) + "]";
+    out.balls.emplace_back(json_number((*balls)[i], "x_m", where),
+                           json_number((*balls)[i], "y_m", where));
+  }
+  if (const auto robot = j.find("robot"); robot != j.end() && !robot->is_null()) {
+    const std::string where = source + ": robot";
+    out.robot = Pose2D{Vec2(json_number(*robot, "x_m", where), json_number(*robot, "y_m", where)),
+                       rad_from_deg(json_number(*robot, "heading_deg", where))};
+  }
+  return out;
+}
+
+WorldBalls read_world_balls(const std::filesystem::path& file) {
+  return parse_world_balls(read_file(file), file.string());
+}
+
+std::vector<Vec2> parse_ball_csv(std::string_view text, const std::string& source) {
+  std::vector<Vec2> balls;
+  std::size_t line_number = 0;
+  bool header = false;
+  while (!text.empty()) {
+    const std::size_t end = text.find('\n');
+    const std::string_view line = text.substr(0, end);
+    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+    ++line_number;
+    const std::string at = source + ":" + std::to_string(line_number);
+    if (trim_blanks(line).empty()) continue;
+    const std::vector<CsvField> fields = split_csv_fields(line);
+    if (!header) {
+      require(fields.size() == 2 && fields[0].text == "x_m" && fields[1].text == "y_m", at,
+              "expected the header x_m,y_m");
+      header = true;
+      continue;
+    }
+    require(fields.size() == 2, at,
+            "expected two values x_m,y_m, got " + std::to_string(fields.size()));
+    double xy[2];
+    for (int k = 0; k < 2; ++k) {
+      const std::string_view t = fields[static_cast<std::size_t>(k)].text;
+      const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), xy[k]);
+      require(ec == std::errc() && ptr == t.data() + t.size() && std::isfinite(xy[k]),
+              at + ":" + std::to_string(fields[static_cast<std::size_t>(k)].column),
+              std::string(k == 0 ? "x_m" : "y_m") + ": expected a finite number, got '" +
+                  std::string(t) + "'");
+    }
+    balls.emplace_back(xy[0], xy[1]);
+  }
+  require(header, source, "empty: expected the header x_m,y_m");
+  return balls;
+}
+
+std::vector<Vec2> read_ball_csv(const std::filesystem::path& file) {
+  return parse_ball_csv(read_file(file), file.string());
+}
+
+}  // namespace ballsight

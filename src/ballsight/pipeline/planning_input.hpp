@@ -1,0 +1,40 @@
+#pragma once
+// What the route planner is given on a real site: the drivable court from the site file, the
+// balls from a world model (`court run --json`) or a CSV file, and the robot's collector mouth
+// placed from the robot's pose.
+
+#include <filesystem>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+#include "ballsight/plan/planning_problem.hpp"
+#include "ballsight/world/site.hpp"
+
+namespace ballsight {
+
+/// The fenced area (centred on the court) and the net of a site.
+DrivableCourt drivable_court(const SiteCourt& court);
+
+/// A problem on the site: its court, the robot's limits and collector; `robot` is the pose of the
+/// robot's reference point (the collector mouth is `robot.collector_x_m` ahead of it).
+PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
+                                      std::vector<Vec2> balls);
+
+/// One frame set's world model as `court run --json` prints it.
+struct WorldBalls {
+  std::vector<Vec2> balls;
+  std::optional<Pose2D> robot;  // null when the cameras did not see it
+};
+
+/// Parses a world model's JSON; `source` names it in messages ("<source>: balls[2].x_m: ...").
+WorldBalls parse_world_balls(std::string_view text, const std::string& source);
+WorldBalls read_world_balls(const std::filesystem::path& file);
+
+/// Balls from CSV text with the header `x_m,y_m`, one ball a line ("<source>:<line>:<column>:
+/// ..." for a bad value).
+std::vector<Vec2> parse_ball_csv(std::string_view text, const std::string& source);
+std::vector<Vec2> read_ball_csv(const std::filesystem::path& file);
+
+}  // namespace ballsight
