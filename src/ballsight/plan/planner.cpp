@@ -24,6 +24,11 @@ constexpr double kReplanKicksPerBall = 0.1;
 // A ball of the previous route is the same ball now when it moved less than this.
 constexpr double kSameBallM = 0.30;
 
+int fresh_kicks(const PlannerOptions& options, std::size_t balls) {
+  return static_cast<int>(std::lround(
+      options.effort * std::max(kMinKicks, kKicksPerBall * static_cast<double>(balls))));
+}
+
 /// The nodes the searches run on: 0 the robot, 1..k the balls' visit points, then the return
 /// point and the unload point when there are any.
 struct Nodes {
@@ -55,25 +60,6 @@ Nodes make_nodes(const PlanningProblem& problem, const std::vector<int>& balls) 
     nodes.ball_of.push_back(-1);
   }
   return nodes;
-}
-
-/// Greedy start: from the robot, always the cheapest next node.
-std::vector<int> nearest_neighbour_path(const TravelModel& model, const Nodes& nodes) {
-  std::vector<int> path{0};
-  std::vector<int> left;
-  for (int i = 1; i < nodes.balls_end; ++i) left.push_back(i);
-  while (!left.empty()) {
-    const int prev = path.size() > 1 ? path[path.size() - 2] : kHeading;
-    const int at = path.back();
-    const auto best = std::min_element(left.begin(), left.end(), [&](int a, int b) {
-      return model.turn(prev, at, a) + model.leg(at, a) <
-             model.turn(prev, at, b) + model.leg(at, b);
-    });
-    path.push_back(*best);
-    left.erase(best);
-  }
-  if (nodes.return_node >= 0) path.push_back(nodes.return_node);
-  return path;
 }
 
 /// The ball node nearest `target` within kSameBallM that is not `used`, or -1.
@@ -156,10 +142,10 @@ std::vector<RouteStop> searched_stops(const PlanningProblem& problem, const std:
     search_options.fixed_end = nodes.return_node >= 0;
     search_options.seed = options.seed;
     PathSearch<TravelModel> search(model, search_options);
-    const double n = static_cast<double>(balls.size());
     Improvement how;
     if (options.previous) {
-      how.kicks = static_cast<int>(std::lround(options.effort * kReplanKicksPerBall * n));
+      how.kicks = static_cast<int>(
+          std::lround(options.effort * kReplanKicksPerBall * static_cast<double>(balls.size())));
       path = warm_start(model, nodes, *options.previous, how.dirty);
       search.improve(path, how);
       // The target the robot is driving to, if it is still there.
@@ -169,9 +155,9 @@ std::vector<RouteStop> searched_stops(const PlanningProblem& problem, const std:
         if (target >= 0) keep_target(search, model, target, options.target_switch_margin_s, path);
       }
     } else {
-      path = nearest_neighbour_path(model, nodes);
-      how.kicks =
-          static_cast<int>(std::lround(options.effort * std::max(kMinKicks, kKicksPerBall * n)));
+      path = nearest_neighbour_path(model, nodes.balls_end);
+      if (nodes.return_node >= 0) path.push_back(nodes.return_node);
+      how.kicks = fresh_kicks(options, balls.size());
       search.improve(path, how);
     }
     if (problem.capacity) {
@@ -227,6 +213,30 @@ Route plan(const PlanningProblem& problem, const PlannerOptions& options) {
   route.plan_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   return route;
+}
+
+std::vector<int> shortest_tour(const std::vector<std::vector<double>>& cost,
+                               const PlannerOptions& options) {
+  options.validate();
+  const std::size_t n = cost.size();
+  if (n < 2) return n == 1 ? std::vector<int>{0} : std::vector<int>{};
+  // The return to node 0 is a copy of it as the path's fixed end.
+  std::vector<std::vector<double>> with_end = cost;
+  for (std::size_t i = 0; i < n; ++i) with_end[i].push_back(cost[i][0]);
+  with_end.push_back(with_end[0]);
+  with_end[n][n] = 0.0;
+  const MatrixModel model(std::move(with_end));
+  PathSearchOptions search_options;
+  search_options.fixed_end = true;
+  search_options.seed = options.seed;
+  PathSearch<MatrixModel> search(model, search_options);
+  std::vector<int> path = nearest_neighbour_path(model, static_cast<int>(n));
+  path.push_back(static_cast<int>(n));
+  Improvement how;
+  how.kicks = fresh_kicks(options, n - 1);
+  search.improve(path, how);
+  path.pop_back();
+  return path;
 }
 
 }  // namespace ballsight

@@ -16,4 +16,9 @@ namespace ballsight {
 /// Plans the route; throws InputError for an invalid problem or options (what and where).
 Route plan(const PlanningProblem& problem, const PlannerOptions& options);
 
+/// ballsight's search as a plain shortest-tour solver over a symmetric cost matrix: the closed
+/// tour from node 0 through every node (node 0 first, once), at `options.effort` and seed.
+std::vector<int> shortest_tour(const std::vector<std::vector<double>>& cost,
+                               const PlannerOptions& options);
+
 }  // namespace ballsight
