@@ -17,11 +17,13 @@ struct EvalCourtArgs {
   CourtEvalOptions options;
   bool json = false;
   std::string plot_dir;
+  bool no_net = false;
 };
 
 void run_eval_court(const EvalCourtArgs& args) {
   CourtEvalOptions options = args.options;
   if (!args.plot_dir.empty()) options.plot_dir = args.plot_dir;
+  options.court.net.enabled = !args.no_net;
   const CourtEvalReport report = run_court_eval(options);
   if (args.json) {
     std::cout << court_eval_json(report).dump(2) << "\n";
@@ -43,6 +45,8 @@ void add_eval_court_command(CLI::App& eval) {
   add_seed_option(*cmd, args->options.seed, "Random seed: same seed, same figures");
   cmd->add_option("--scenes", args->options.scenes, "Number of scenes [1, 1000]")
       ->capture_default_str();
+  cmd->add_flag("--no-net", args->no_net,
+                "Scenes on a court without a net (the simulator of before the net)");
   cmd->add_flag("--json", args->json,
                 "JSON: {\"methods\": {\"seed\": {...}, \"ballsight\": {...}}, ...}");
   CLI::Option* plot_dir =

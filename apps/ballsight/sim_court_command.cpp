@@ -19,6 +19,7 @@ struct SimCourtArgs {
   std::optional<int> balls;
   std::optional<double> brightness;
   bool no_shadow = false;
+  bool no_net = false;
 };
 
 void run_sim_court(const SimCourtArgs& args) {
@@ -26,6 +27,7 @@ void run_sim_court(const SimCourtArgs& args) {
   options.scenario.ball_count = args.balls;
   options.scenario.brightness_gain = args.brightness;
   options.scenario.shadow = !args.no_shadow;
+  options.court.net.enabled = !args.no_net;
   const auto files = sim::write_court_dataset(options, args.out_dir);
   std::cout << "wrote " << files.size() << " files to " << args.out_dir << "\n";
 }
@@ -55,6 +57,7 @@ void add_sim_court_command(CLI::App& sim) {
   cmd->add_option("--brightness", args->brightness,
                   "Brightness gain (0, 4] (default: random 0.8-1.2 per scene)");
   cmd->add_flag("--no-shadow", args->no_shadow, "No shadow band across the court");
+  cmd->add_flag("--no-net", args->no_net, "No net across the court (the simulator of before)");
   cmd->callback([args] { run_sim_court(*args); });
 }
 

@@ -53,7 +53,13 @@ TEST(CourtDataset, TruthJsonReprojectsWithOpenCV) {
   EXPECT_EQ(kinds["robot_front_marker"], 1);
   EXPECT_EQ(kinds["robot_back_marker"], 1);
   // The documented intrinsics and camera_from_field put every object's centre where the JSON says.
-  int checked = 0;
+  const auto& net = truth["court"]["net"];
+  EXPECT_EQ(net["post_positions_m"], nlohmann::json::parse("[[0.0, -6.399], [0.0, 6.399]]"));
+  EXPECT_EQ(net["post_height_m"], 1.07);
+  EXPECT_EQ(net["centre_height_m"], 0.914);
+  EXPECT_EQ(net["post_radius_m"], 0.04);
+  EXPECT_EQ(net["band_depth_m"], 0.06);
+  int checked = 0, hidden_by_net = 0;
   for (size_t c = 0; c < 4; ++c) {
     const auto& cam = truth["cameras"][c];
     const cv::Matx33d k(cam["fx"], 0, cam["cx"], 0, cam["fy"], cam["cy"], 0, 0, 1);
@@ -75,12 +81,31 @@ TEST(CourtDataset, TruthJsonReprojectsWithOpenCV) {
       EXPECT_NEAR(projected[0].y, view["center_px"][1].get<double>(), 1e-6);
       EXPECT_EQ(view["visible"].get<bool>(),
                 view["in_image"].get<bool>() && view["visible_fraction"].get<double>() >= 0.5);
+      hidden_by_net += view["hidden_by_net"].get<bool>();
+      if (view["hidden_by_net"].get<bool>()) {
+        EXPECT_LE(view["visible_fraction"].get<double>(), 0.5);
+        EXPECT_LE(p[0] * centre[0], 0.0) << "hidden by the net from a camera on its side";
+      }
       ++checked;
     }
   }
   EXPECT_GT(checked, 100);
+  EXPECT_GT(hidden_by_net, 0);
   const auto boards = nlohmann::json::parse(read_file(dir.path() / "chessboards.json"));
   EXPECT_EQ(boards["cameras"][0]["views"][0]["corners_px"].size(), 54u);
+}
+
+TEST(CourtDataset, ACourtWithoutANetSaysSo) {
+  const TempDir dir;
+  auto options = small_dataset(5);
+  options.chessboard_views = 0;
+  options.court.net.enabled = false;
+  write_court_dataset(options, dir.path());
+  const auto truth = nlohmann::json::parse(read_file(dir.path() / "court_0000.json"));
+  EXPECT_TRUE(truth["court"]["net"].is_null());
+  for (const auto& object : truth["objects"]) {
+    for (const auto& view : object["views"]) EXPECT_FALSE(view["hidden_by_net"].get<bool>());
+  }
 }
 
 TEST(CourtDataset, SameSeedSameBytesDifferentSeedDifferentScene) {

@@ -20,12 +20,14 @@ int pixels_showing(const CourtRender& render, int index) {
 TEST(CourtOcclusion, BallRightBehindTheRobotIsHiddenFromThatCameraOnly) {
   const testing::CourtFixture& court = shared_court();
   CourtScene scene;
-  scene.robot.pose = {{2.0, 1.0}, 0.3};
+  // On camera 0's side of the net and far enough from it that the cameras on the other side see
+  // the box and the ball over the net; turned so that no camera sees one marker behind the other.
+  scene.robot.pose = {{8.0, 1.0}, 1.2};
   scene.effects.noise_sigma = 0.0;
   // On camera 0's line of sight through the middle of the box, where it comes down to ball
   // height behind the box.
   const Vec3 eye = court.rig.cameras[0].center_in_field();
-  const Vec3 through(2.0, 1.0, 0.27);
+  const Vec3 through(8.0, 1.0, 0.27);
   const Vec3 d = through - eye;
   const double t = (kTennisBallRadiusM - eye.z()) / d.z();
   const Vec3 ball = eye + t * d;
@@ -56,8 +58,9 @@ TEST(CourtOcclusion, TouchingBallsHideEachOtherOnlyPartly) {
   CourtScene scene;
   scene.robot.pose = {{-8.0, -3.0}, 0.0};
   const Vec3 eye = shared_court().rig.cameras[1].center_in_field();
-  // Two touching balls in a row along camera 1's viewing direction, far away.
-  const Vec3 front(-3.0, 2.0, kTennisBallRadiusM);
+  // Two touching balls in a row along camera 1's viewing direction, far away on its side of the
+  // net.
+  const Vec3 front(3.0, 2.0, kTennisBallRadiusM);
   Vec3 away = front - eye;
   away.z() = 0.0;
   const Vec3 back = front + away.normalized() * (2 * kTennisBallRadiusM + 0.002);

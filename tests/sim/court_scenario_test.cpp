@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/sim/tennis_net.hpp"
 #include "sim/court_test_support.hpp"
 
 namespace ballsight::sim {
@@ -68,6 +69,46 @@ TEST(CourtScenario, BallsOnTheGroundWithoutOverlapSomeTouching) {
     }
     EXPECT_GE(beside_robot, 3);
   }
+}
+
+/// Tennis balls of `scene` whose footprint reaches into the net's (posts included), and whether
+/// the robot's footprint does.
+std::pair<int, bool> in_the_net(const CourtScene& scene) {
+  const FloorBox net = TennisNet::of(TennisCourtSpec{}).value().bounds();
+  int balls = 0;
+  for (const SceneSphere* s : of_kind(scene, ObjectKind::tennis_ball)) {
+    const Vec2 p = s->center_in_field.head<2>();
+    balls += std::abs(p.x()) < net.half_size.x() + s->radius_m &&
+             std::abs(p.y()) < net.half_size.y() + s->radius_m;
+  }
+  const RobotBox& r = scene.robot;
+  bool robot = false;
+  for (const Vec2& corner : {Vec2(1, 1), Vec2(1, -1), Vec2(-1, 1), Vec2(-1, -1)}) {
+    const Vec2 p = r.pose.field_from_robot() *
+                   Vec2(corner.x() * r.length_m / 2.0, corner.y() * r.width_m / 2.0);
+    robot = robot || p.x() * r.pose.position.x() <= 0.0 || std::abs(p.x()) < net.half_size.x();
+  }
+  return {balls, robot};
+}
+
+TEST(CourtScenario, BallsAndTheRobotKeepClearOfTheNet) {
+  TennisCourtSpec no_net;
+  no_net.net.enabled = false;
+  CourtScenarioOptions options;
+  options.ball_count = CourtScenarioOptions::kMaxBalls;
+  int balls_without_net = 0, robots_without_net = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto [balls, robot] = in_the_net(make_court_scene(TennisCourtSpec{}, options, seed));
+    EXPECT_EQ(balls, 0);
+    EXPECT_FALSE(robot);
+    const auto [free_balls, free_robot] = in_the_net(make_court_scene(no_net, options, seed));
+    balls_without_net += free_balls;
+    robots_without_net += free_robot;
+  }
+  // Without the net, balls and the robot do land on the net line: the net keeps them off.
+  EXPECT_GT(balls_without_net, 10);
+  EXPECT_GE(robots_without_net, 1);
 }
 
 TEST(CourtScenario, BallCountLightingAndNoiseFollowTheOptions) {

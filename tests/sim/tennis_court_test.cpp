@@ -31,7 +31,7 @@ TEST(TennisCourt, LinesFollowTheItfLayout) {
   EXPECT_EQ(at(8.0, 0.0), surface) << "no centre line behind the service line";
   EXPECT_EQ(at(-11.80, 0.0), line) << "centre mark";
   EXPECT_EQ(at(-11.70, 0.0), surface) << "centre mark is 10 cm long";
-  EXPECT_EQ(at(0.0, 0.0), line) << "no net, centre line continues";
+  EXPECT_EQ(at(0.0, 0.0), line) << "the centre service line runs on under the net";
   EXPECT_EQ(at(15.0, 0.0), as_float(court.surround_bgr));
   EXPECT_EQ(at(0.0, 8.9), as_float(court.surround_bgr));
   EXPECT_EQ(at(18.5, 0.0), as_float(court.ground_bgr));

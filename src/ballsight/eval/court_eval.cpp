@@ -22,6 +22,7 @@ namespace ballsight {
 void CourtEvalOptions::validate() const {
   require(scenes >= 1 && scenes <= kMaxScenes, "scenes",
           "must be in [1, " + std::to_string(kMaxScenes) + "], got " + std::to_string(scenes));
+  court.validate();
   rig.validate();
   scenario.validate();
   require(chessboard_views >= 4 && chessboard_views <= 99, "chessboard_views",
@@ -113,7 +114,8 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
   options.validate();
   CourtEvalReport report;
   report.options = options;
-  const sim::CourtRig rig = sim::make_court_rig({}, options.rig, court_eval_rig_seed(options.seed));
+  const sim::CourtRig rig =
+      sim::make_court_rig(options.court, options.rig, court_eval_rig_seed(options.seed));
 
   // Each method calibrates its cameras from the same rendered images.
   const CalibrationImages calibration_images =

@@ -15,12 +15,14 @@
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
+#include "ballsight/sim/tennis_court.hpp"
 
 namespace ballsight {
 
 struct CourtEvalOptions {
   std::uint64_t seed = 1;
   int scenes = 10;
+  sim::TennisCourtSpec court;  // with its net unless court.net.enabled is false
   sim::CourtRigOptions rig;
   sim::CourtScenarioOptions scenario;  // 20-60 balls, clusters, balls by the robot, shadow, noise
   int chessboard_views = 15;           // per camera, for the intrinsics

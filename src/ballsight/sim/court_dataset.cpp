@@ -57,6 +57,7 @@ void CourtDatasetOptions::validate() const {
   require(chessboard_views >= 0 && chessboard_views <= kMaxChessboardViews, "chessboards",
           "must be in [0, " + std::to_string(kMaxChessboardViews) + "], got " +
               std::to_string(chessboard_views));
+  court.validate();
   rig.validate();
   scenario.validate();
   board.validate();
@@ -67,7 +68,7 @@ std::vector<std::string> write_court_dataset(const CourtDatasetOptions& options,
                                              const std::filesystem::path& out_dir) {
   options.validate();
   DatasetWriter writer(out_dir);
-  const TennisCourtSpec court;
+  const TennisCourtSpec& court = options.court;
   const CourtRig rig = make_court_rig(court, options.rig, derive_seed(options.seed, kRigStream));
   if (options.scenes > 0) {
     std::vector<CourtRenderer> renderers;

@@ -12,6 +12,7 @@
 #include "ballsight/sim/chessboard_poses.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
+#include "ballsight/sim/tennis_court.hpp"
 
 namespace ballsight::sim {
 
@@ -19,6 +20,7 @@ struct CourtDatasetOptions {
   std::uint64_t seed = 1;
   int scenes = 1;
   int chessboard_views = 0;  // per camera
+  TennisCourtSpec court;     // with its net unless court.net.enabled is false
   CourtRigOptions rig;
   CourtScenarioOptions scenario;
   ChessboardSpec board;

@@ -1,6 +1,7 @@
 #include "ballsight/sim/court_scenario.hpp"
 
 #include <cmath>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -8,16 +9,36 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/sim/seeding.hpp"
+#include "ballsight/sim/tennis_net.hpp"
 
 namespace ballsight::sim {
 namespace {
 
 constexpr double kBallGapM = 0.002;  // between touching balls: no interpenetration
 
-/// Free space on the ground: balls already placed and the robot's footprint.
+/// Distance on the floor from `xy` to the footprint of `box` (0 inside it).
+double footprint_distance(const FloorBox& box, const Vec2& xy) {
+  const Vec2 p = box.pose.field_from_robot().inverse() * xy;
+  const Vec2 outside(std::max(std::abs(p.x()) - box.half_size.x(), 0.0),
+                     std::max(std::abs(p.y()) - box.half_size.y(), 0.0));
+  return outside.norm();
+}
+
+FloorBox footprint(const RobotBox& robot) {
+  return {robot.pose, Vec2(robot.length_m / 2.0, robot.width_m / 2.0), robot.height_m};
+}
+
+/// The net's footprint (posts included), or nothing when the court has no net.
+std::optional<FloorBox> net_footprint(const TennisCourtSpec& court) {
+  const std::optional<TennisNet> net = TennisNet::of(court);
+  return net ? std::optional<FloorBox>(net->bounds()) : std::nullopt;
+}
+
+/// Free space on the ground: balls already placed, the robot's footprint and the net's.
 class Placement {
  public:
-  explicit Placement(const RobotBox& robot) : robot_(robot) {}
+  Placement(const RobotBox& robot, const std::optional<FloorBox>& net)
+      : robot_(footprint(robot)), net_(net) {}
 
   void add(const SceneSphere& s) { taken_.push_back(s); }
 
@@ -27,18 +48,13 @@ class Placement {
         return false;
       }
     }
-    return distance_to_robot(xy) >= radius + kBallGapM;
-  }
-
-  double distance_to_robot(const Vec2& xy) const {
-    const Vec2 p = robot_.pose.field_from_robot().inverse() * xy;
-    const Vec2 outside(std::max(std::abs(p.x()) - robot_.length_m / 2.0, 0.0),
-                       std::max(std::abs(p.y()) - robot_.width_m / 2.0, 0.0));
-    return outside.norm();
+    if (net_ && footprint_distance(*net_, xy) < radius + kBallGapM) return false;
+    return footprint_distance(robot_, xy) >= radius + kBallGapM;
   }
 
  private:
-  const RobotBox& robot_;
+  FloorBox robot_;
+  std::optional<FloorBox> net_;
   std::vector<SceneSphere> taken_;
 };
 
@@ -112,20 +128,22 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
   CourtScene scene;
   const std::vector<Vec3> references = reference_ball_positions(court);
 
-  // The robot somewhere on the court, clear of the reference balls.
+  // The robot somewhere on the court, clear of the reference balls and of the net (its centre at
+  // least its half-diagonal from the net's footprint, whatever its heading).
   const GroundRect on_court = court.court_rect();
-  const auto clear_of_references = [&](const RobotBox& robot) {
-    const Placement probe(robot);
+  const std::optional<FloorBox> net = net_footprint(court);
+  const auto clear = [&](const RobotBox& robot) {
     for (const Vec3& p : references) {
-      if (probe.distance_to_robot(p.head<2>()) < 0.4) return false;
+      if (footprint_distance(footprint(robot), p.head<2>()) < 0.4) return false;
     }
-    return true;
+    const double half_diagonal = std::hypot(robot.length_m, robot.width_m) / 2.0;
+    return !net || footprint_distance(*net, robot.pose.position) >= half_diagonal + kBallGapM;
   };
   do {
     scene.robot.pose = {uniform_in(rng, on_court, 1.0), uniform(rng, -kPi, kPi)};
-  } while (!clear_of_references(scene.robot));  // a few draws: the references are sparse
+  } while (!clear(scene.robot));  // a few draws: the references and the net are small
 
-  Placement placement(scene.robot);
+  Placement placement(scene.robot, net);
   for (size_t i = 0; i < references.size(); ++i) {
     scene.balls.push_back({ObjectKind::reference_ball, static_cast<int>(i), references[i],
                            kReferenceBallRadiusM, kReferenceBallBgr});

@@ -9,6 +9,7 @@ namespace ballsight::sim {
 SphereViewTruth sphere_view_truth(const CourtCamera& camera, const SceneSphere& sphere,
                                   const ObjectCoverage& coverage) {
   constexpr double kVisibleFraction = 0.5;
+  constexpr double kNetFraction = 0.5;
   constexpr int kOutlineSamples = 96;
   SphereViewTruth view;
   const Vec3 c = camera.camera_from_field * sphere.center_in_field;
@@ -19,6 +20,7 @@ SphereViewTruth sphere_view_truth(const CourtCamera& camera, const SceneSphere& 
   view.in_image = view.center_px && camera.camera.in_image(*view.center_px);
   view.visible_fraction = coverage.visible_fraction();
   view.visible = view.in_image && view.visible_fraction >= kVisibleFraction;
+  view.hidden_by_net = view.in_image && coverage.net_fraction() >= kNetFraction;
   return view;
 }
 

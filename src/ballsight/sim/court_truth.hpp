@@ -1,7 +1,7 @@
 #pragma once
 // Ground truth of a rendered court scene, per object and camera: where the object's centre
 // projects, where the centroid of its outline is (analytic, independent of the renderer), whether
-// it is in the image and how much of it the renderer showed unoccluded.
+// it is in the image, how much of it the renderer showed unoccluded and whether the net hides it.
 
 #include <optional>
 #include <vector>
@@ -19,6 +19,7 @@ struct SphereViewTruth {
   bool in_image = false;                       // the centre projects inside the image
   double visible_fraction = 0.0;               // ObjectCoverage::visible_fraction()
   bool visible = false;                        // in_image and visible_fraction >= 0.5
+  bool hidden_by_net = false;                  // in_image and ObjectCoverage::net_fraction() >= 0.5
 };
 
 struct SphereTruth {

@@ -1,9 +1,22 @@
 #include "ballsight/sim/court_truth_json.hpp"
 
 #include "ballsight/sim/json_io.hpp"
+#include "ballsight/sim/tennis_net.hpp"
 
 namespace ballsight::sim {
 namespace {
+
+Json net_json(const TennisCourtSpec& c) {
+  const std::optional<TennisNet> net = TennisNet::of(c);
+  if (!net) return nullptr;
+  Json posts = Json::array();
+  for (const Vec2& p : net->post_positions()) posts.push_back(json_vec2(p));
+  return {{"post_positions_m", posts},
+          {"post_radius_m", c.net.post_radius_m},
+          {"post_height_m", c.net.post_height_m},
+          {"centre_height_m", c.net.centre_height_m},
+          {"band_depth_m", c.net.band_depth_m}};
+}
 
 Json court_json(const TennisCourtSpec& c) {
   return {{"length_m", c.length_m},
@@ -12,7 +25,8 @@ Json court_json(const TennisCourtSpec& c) {
           {"service_line_from_net_m", c.service_line_from_net_m},
           {"line_width_m", c.line_width_m},
           {"surround_length_m", c.surround_length_m},
-          {"surround_width_m", c.surround_width_m}};
+          {"surround_width_m", c.surround_width_m},
+          {"net", net_json(c)}};
 }
 
 Json lighting_json(const Lighting& l, const ImageEffects& e) {
@@ -50,7 +64,8 @@ Json object_json(const SphereTruth& t) {
                      {"silhouette_centroid_px", json_optional_vec2(v.silhouette_centroid_px)},
                      {"in_image", v.in_image},
                      {"visible_fraction", v.visible_fraction},
-                     {"visible", v.visible}});
+                     {"visible", v.visible},
+                     {"hidden_by_net", v.hidden_by_net}});
   }
   return {{"kind", object_kind_name(t.sphere.kind)},
           {"id", t.sphere.id},

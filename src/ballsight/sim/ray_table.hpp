@@ -27,6 +27,12 @@ class RayTable {
   /// Unit ray through the sub-pixel point (x, y), pixel centres at integers; bilinear between the
   /// four nearest pixel rays (extrapolated linearly beyond the outermost pixel centres).
   Vec3 interpolate(double x, double y) const;
+  /// Ray of sample (sx, sy) of an n x n grid over pixel (x, y), at offsets (s + 0.5) / n - 0.5
+  /// from the pixel centre; the middle sample of an odd grid is the pixel's own ray.
+  Vec3 sample(int x, int y, int sx, int sy, int n) const {
+    if (2 * sx + 1 == n && 2 * sy + 1 == n) return at(x, y);
+    return interpolate(x + (sx + 0.5) / n - 0.5, y + (sy + 0.5) / n - 0.5);
+  }
 
  private:
   int width_ = 0;

@@ -47,6 +47,20 @@ void TennisCourtSpec::validate() const {
           "court.surround_length_m", "must be at least the court length");
   require(std::isfinite(surround_width_m) && surround_width_m >= doubles_width_m,
           "court.surround_width_m", "must be at least the doubles width");
+  require(positive(net.post_radius_m) && net.post_radius_m <= 0.075, "court.net.post_radius_m",
+          "must be in (0, 0.075] m");
+  require(
+      std::isfinite(net.post_outside_doubles_m) && net.post_outside_doubles_m > net.post_radius_m,
+      "court.net.post_outside_doubles_m", "must exceed the post radius (posts off the court)");
+  require(doubles_width_m / 2.0 + net.post_outside_doubles_m + net.post_radius_m <=
+              surround_width_m / 2.0,
+          "court.net.post_outside_doubles_m", "puts the posts outside the run-off area");
+  require(positive(net.post_height_m) && net.post_height_m < 3.0, "court.net.post_height_m",
+          "must be in (0, 3) m");
+  require(positive(net.centre_height_m) && net.centre_height_m <= net.post_height_m,
+          "court.net.centre_height_m", "must be in (0, post_height_m]");
+  require(positive(net.band_depth_m) && net.band_depth_m < net.centre_height_m,
+          "court.net.band_depth_m", "must be in (0, centre_height_m)");
 }
 
 GroundRect TennisCourtSpec::court_rect() const {

@@ -1,7 +1,7 @@
 #pragma once
 // A tennis court as the floor of the court simulator: the ITF line layout on a hard court, a
-// differently coloured run-off area around it and neutral ground beyond. There is no net: it would
-// hide balls, and the simulated court is a practice court during ball collection.
+// differently coloured run-off area around it and neutral ground beyond, and the net across it
+// (geometry and ray test in tennis_net.hpp).
 //
 // Field frame: origin at the court centre (where the net line crosses the centre line), x along
 // the length, y across, z up, metres. Court dimensions are to the outer edges of the lines (ITF
@@ -23,6 +23,23 @@ struct GroundRect {
   }
 };
 
+/// The net on the net line x = 0, between two round posts outside the doubles sidelines: 1.07 m
+/// high at the posts, 0.914 m at the centre strap, a white band 5-6.35 cm deep along the top cord,
+/// round posts at most 15 cm across. Its mesh is dense and dark: the simulator renders it opaque.
+// ITF Rules of Tennis, rule 1 "The Court": the net, the posts and the band.
+struct NetSpec {
+  bool enabled = true;                    // false: a court without a net (the simulator of before)
+  double post_outside_doubles_m = 0.914;  // post centre from the doubles sideline's outer edge
+  double post_height_m = 1.07;            // the posts, and the top cord where it meets them
+  double centre_height_m = 0.914;         // the top cord at the centre strap
+  double post_radius_m = 0.04;
+  double band_depth_m = 0.06;  // white band along the top cord
+
+  cv::Vec3b mesh_bgr{40, 45, 40};     // dark net (BGR albedo)
+  cv::Vec3b band_bgr{238, 240, 240};  // white band
+  cv::Vec3b post_bgr{45, 70, 40};     // dark green posts
+};
+
 struct TennisCourtSpec {
   double length_m = 23.77;                // baseline to baseline
   double doubles_width_m = 10.97;         // between the doubles sidelines
@@ -37,6 +54,7 @@ struct TennisCourtSpec {
   cv::Vec3b surround_bgr{80, 92, 52};   // darker teal-green run-off
   cv::Vec3b ground_bgr{128, 134, 138};  // neutral ground beyond the run-off
   cv::Vec3b line_bgr{238, 240, 240};    // white lines
+  NetSpec net;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
