@@ -39,5 +39,7 @@ void add_eval_court_command(CLI::App& eval);
 void add_plan_command(CLI::App& app);
 /// `eval plan` (eval_plan_command.cpp), registered on the `eval` group.
 void add_eval_plan_command(CLI::App& eval);
+/// `eval tsplib` (eval_tsplib_command.cpp), registered on the `eval` group.
+void add_eval_tsplib_command(CLI::App& eval);
 
 }  // namespace ballsight::app

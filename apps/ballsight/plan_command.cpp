@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "ballsight/camera/image_file.hpp"
@@ -22,7 +23,7 @@ namespace {
 struct PlanArgs {
   std::string site, world, balls_csv, robot, planner = "ballsight", cost = "time";
   std::string return_to, unload, plot;
-  int capacity = 0;
+  std::optional<int> capacity;
   double max_speed_mps = 0.0, turn_rate_dps = 0.0;  // 0: the site's (or the defaults)
   PlannerOptions options;
   bool no_sweep = false;
@@ -64,12 +65,12 @@ PlanningProblem make_problem(const PlanArgs& args) {
   if (args.max_speed_mps != 0.0) problem.limits.max_speed_mps = args.max_speed_mps;
   if (args.turn_rate_dps != 0.0) problem.limits.turn_rate_dps = args.turn_rate_dps;
   if (!args.return_to.empty()) problem.return_to = parse_point(args.return_to, "--return-to");
-  require(args.capacity == 0 || !args.unload.empty(), "--capacity", "needs --unload X,Y");
-  require(args.unload.empty() || args.capacity != 0, "--unload", "needs --capacity K");
-  if (!args.unload.empty()) {
-    require(args.capacity >= 1, "--capacity",
-            "must be at least 1 ball, got " + std::to_string(args.capacity));
-    problem.capacity = Capacity{args.capacity, parse_point(args.unload, "--unload")};
+  require(!args.capacity || !args.unload.empty(), "--capacity", "needs --unload X,Y");
+  require(args.unload.empty() || args.capacity, "--unload", "needs --capacity K");
+  if (args.capacity) {
+    require(*args.capacity >= 1, "--capacity",
+            "must be at least 1 ball, got " + std::to_string(*args.capacity));
+    problem.capacity = Capacity{*args.capacity, parse_point(args.unload, "--unload")};
   }
   return problem;
 }

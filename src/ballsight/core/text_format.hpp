@@ -13,4 +13,14 @@ inline std::string fixed(double value, int decimals) {
   return text;
 }
 
+/// "(x, y)" with `decimals` digits after the point.
+inline std::string fixed_pair(double x, double y, int decimals) {
+  std::string text = "(";  // appended piece by piece: GCC 12 warns wrongly on "(" + std::string
+  text += fixed(x, decimals);
+  text += ", ";
+  text += fixed(y, decimals);
+  text += ")";
+  return text;
+}
+
 }  // namespace ballsight

@@ -9,6 +9,7 @@
 #include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/text_format.hpp"
 
 namespace ballsight {
 namespace {
@@ -28,18 +29,24 @@ DrivableCourt drivable_court(const SiteCourt& court) {
   DrivableCourt out;
   out.area_max_m = Vec2(court.area_length_m / 2.0, court.area_width_m / 2.0);
   out.area_min_m = -out.area_max_m;
-  out.net = CourtNet{court.width_m / 2.0 + court.net_posts_outside_m, court.net_clearance_m,
-                     court.net_post_clearance_m};
+  if (court.net) {
+    out.net = CourtNet{court.width_m / 2.0 + court.net_posts_outside_m, court.net_clearance_m,
+                       court.net_post_clearance_m};
+  } else {
+    out.net.reset();
+  }
   return out;
 }
 
 PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
                                       std::vector<Vec2> balls) {
   PlanningProblem problem;
+  problem.court = drivable_court(site.court);
+  require(!problem.court->in_net_zone(robot.position), "robot pose",
+          fixed_pair(robot.position.x(), robot.position.y(), 3) + " is inside the net");
   const Vec2 forward(std::cos(robot.heading_rad), std::sin(robot.heading_rad));
   problem.robot = {robot.position + site.robot.collector_x_m * forward, robot.heading_rad};
   problem.balls = std::move(balls);
-  problem.court = drivable_court(site.court);
   problem.limits = {site.robot.max_speed_mps, site.robot.turn_rate_dps};
   problem.collector_width_m = site.robot.collector_width_m;
   problem.ball_radius_m = site.ball_radius_m;

@@ -36,6 +36,11 @@ BallsightPipelineOptions ballsight_options_for_site(const Site& site) {
   options.world.robot.marker_height_m = site.robot.marker_height_m;
   options.world.collector_width_m = site.robot.collector_width_m;
   options.world.area = site_area(site);
+  if (site.court.net) {
+    options.world.support.net =
+        NetPanel{site.court.width_m / 2.0 + site.court.net_posts_outside_m,
+                 site.court.net_height_posts_m, site.court.net_height_centre_m};
+  }
   return options;
 }
 

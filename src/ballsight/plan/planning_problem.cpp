@@ -19,12 +19,7 @@ constexpr std::array<std::pair<PlannerKind, std::string_view>, 4> kNames{{
 }};
 
 std::string point_text(const Vec2& p) {
-  std::string text = "(";
-  text += fixed(p.x(), 3);
-  text += ", ";
-  text += fixed(p.y(), 3);
-  text += ")";
-  return text;
+  return fixed_pair(p.x(), p.y(), 3);
 }
 
 }  // namespace

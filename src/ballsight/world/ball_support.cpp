@@ -11,6 +11,7 @@ namespace ballsight {
 void BallSupportOptions::validate() const {
   require(min_radius_px >= 0.0, "ball support min_radius_px", "must be non-negative");
   require(robot_margin_m >= 0.0, "ball support robot_margin_m", "must be non-negative");
+  if (net) net->validate();
   require(same_place_radii >= 0.0 && min_same_place_px >= 0.0, "ball support",
           "same_place_radii and min_same_place_px must be non-negative");
 }
@@ -43,6 +44,7 @@ MissReason explain_miss(const FieldCamera& camera, const Vec3& center_in_field, 
         intersect_floor_box(eye, (center_in_field - eye) / distance, body);
     if (hit && hit->t < distance) return MissReason::behind_robot;
   }
+  if (options.net && options.net->hides(eye, center_in_field)) return MissReason::behind_net;
   const double same_place = std::max(options.min_same_place_px, options.same_place_radii * r);
   // A detection right there, or a blob (of several touching balls) reaching over it.
   for (const PixelDetection& d : detections)

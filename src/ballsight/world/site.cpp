@@ -59,7 +59,10 @@ SiteCourt read_court(YamlMap map) {
   read_length(map, "width_m", court.width_m);
   read_length(map, "area_length_m", court.area_length_m);
   read_length(map, "area_width_m", court.area_width_m);
+  if (const auto v = map.find("net")) court.net = v->flag();
   read_length(map, "net_posts_outside_m", court.net_posts_outside_m);
+  read_length(map, "net_height_posts_m", court.net_height_posts_m);
+  read_length(map, "net_height_centre_m", court.net_height_centre_m);
   read_non_negative(map, "net_clearance_m", court.net_clearance_m);
   read_non_negative(map, "net_post_clearance_m", court.net_post_clearance_m);
   map.finish();
@@ -68,8 +71,8 @@ SiteCourt read_court(YamlMap map) {
   }
   const double beyond_post =
       court.width_m / 2.0 + court.net_posts_outside_m + court.net_post_clearance_m;
-  if (court.area_width_m / 2.0 <= beyond_post ||
-      court.area_length_m / 2.0 <= court.net_clearance_m) {
+  if (court.net && (court.area_width_m / 2.0 <= beyond_post ||
+                    court.area_length_m / 2.0 <= court.net_clearance_m)) {
     map.value().fail("area_width_m must leave room to drive round the net posts (more than " +
                      std::to_string(2.0 * beyond_post) + " m)");
   }

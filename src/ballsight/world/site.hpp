@@ -65,8 +65,12 @@ struct SiteCourt {
   double area_length_m = 36.0;  // the fenced surface around it (run-off included): where balls
   double area_width_m = 18.0;   // may lie and the robot may drive
   /// The net across the court on x = 0, between posts this far outside the doubles sidelines
-  /// (ITF: 0.914 m); the robot drives round it.
+  /// (ITF: 0.914 m), 1.07 m high at the posts and 0.914 m at the centre: it hides balls from the
+  /// cameras across it, and the robot drives round it. `net = false`: a court without one.
+  bool net = true;
   double net_posts_outside_m = 0.914;
+  double net_height_posts_m = 1.07;
+  double net_height_centre_m = 0.914;
   double net_clearance_m = 0.10;       // closest the collector comes to the net's mesh
   double net_post_clearance_m = 0.50;  // room the robot keeps beyond each post
 };

@@ -31,6 +31,13 @@ int YamlValue::integer() const {
   return value;
 }
 
+bool YamlValue::flag() const {
+  bool value = false;
+  if (!node_.IsScalar() || !YAML::convert<bool>::decode(node_, value))
+    fail("expected true or false");
+  return value;
+}
+
 std::string YamlValue::text() const {
   if (!node_.IsScalar() || node_.Scalar().empty()) fail("expected a string");
   return node_.Scalar();

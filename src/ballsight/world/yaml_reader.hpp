@@ -34,6 +34,7 @@ class YamlValue {
 
   double number() const;
   int integer() const;
+  bool flag() const;         // true or false
   std::string text() const;  // a non-empty string
   /// A list of exactly `count` numbers.
   std::vector<double> numbers(std::size_t count) const;
