@@ -1,6 +1,6 @@
 #pragma once
 // Top-down maps of the field: where a field point lands in the picture, and the court's floor
-// (run-off, court, lines) drawn from the simulator's court.
+// (run-off, court, lines, net) drawn from the simulator's court.
 
 #include <opencv2/core.hpp>
 
@@ -21,7 +21,7 @@ struct MapView {
   }
 };
 
-/// The run-off area, the court and its lines.
+/// The run-off area, the court, its lines and its net.
 void draw_court_floor(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& court);
 
 }  // namespace ballsight

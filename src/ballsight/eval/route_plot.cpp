@@ -10,7 +10,7 @@
 namespace ballsight {
 namespace {
 
-const cv::Scalar kBall(45, 230, 225), kBallEdge(20, 60, 60), kNet(40, 40, 40);
+const cv::Scalar kBall(45, 230, 225), kBallEdge(20, 60, 60);
 
 /// Field rectangle to show: the fence with a margin, or the points' bounding box.
 std::pair<Vec2, Vec2> view_bounds(const PlanningProblem& problem,
@@ -48,18 +48,14 @@ cv::Mat draw_route_map(const PlanningProblem& problem, const std::vector<RouteLa
   const MapView px{Vec2(lo.x(), hi.y()), pixels_per_m, {0.0, static_cast<double>(top)}};
   if (problem.court) {
     sim::TennisCourtSpec court;
+    court.net.enabled = problem.court->net.has_value();
     draw_court_floor(image, px, court);
     cv::rectangle(image, px(problem.court->area_min_m), px(problem.court->area_max_m),
                   cv::Scalar(60, 60, 60), 2);
-    if (const auto& net = problem.court->net) {
+    if (const auto& net = problem.court->net) {  // the keep-out round the net drawn above
       const double y_end = net->half_length_m + net->post_clearance_m;
       cv::rectangle(image, px({-net->clearance_m, y_end}), px({net->clearance_m, -y_end}),
                     cv::Scalar(120, 120, 120), 1, cv::LINE_AA);
-      cv::line(image, px({0.0, -net->half_length_m}), px({0.0, net->half_length_m}), kNet, 3,
-               cv::LINE_AA);
-      for (const double y : {-net->half_length_m, net->half_length_m}) {
-        cv::circle(image, px({0.0, y}), 4, kNet, cv::FILLED, cv::LINE_AA);
-      }
     }
   }
   const int ball_px =
