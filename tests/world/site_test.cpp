@@ -159,5 +159,27 @@ TEST(Site, CorruptYamlAndMissingFile) {
   }
 }
 
+TEST(Site, TheNetAndTheRobotsLimits) {
+  const Site defaults = parse_site(kMinimal, "site.yml");
+  EXPECT_TRUE(defaults.court.net);
+  EXPECT_DOUBLE_EQ(defaults.court.net_posts_outside_m, 0.914);
+  EXPECT_DOUBLE_EQ(defaults.robot.max_speed_mps, 1.0);
+  EXPECT_DOUBLE_EQ(defaults.robot.collector_x_m, 0.30);
+  const Site site = parse_site(std::string(kMinimal) +
+                                   "court:\n  net: false\nrobot:\n  max_speed_mps: 0.6\n"
+                                   "  turn_rate_dps: 45\n  collector_x_m: 0.25\n",
+                               "site.yml");
+  EXPECT_FALSE(site.court.net);
+  EXPECT_DOUBLE_EQ(site.robot.max_speed_mps, 0.6);
+  EXPECT_DOUBLE_EQ(site.robot.turn_rate_dps, 45.0);
+  EXPECT_DOUBLE_EQ(site.robot.collector_x_m, 0.25);
+  expect_error(std::string(kMinimal) + "court:\n  net: maybe\n",
+               "site.yml:19: key 'court.net' expected true or false");
+  // A fence too narrow to drive round the posts (10.97 / 2 + 0.914 + 0.5 m from the centre).
+  expect_error(std::string(kMinimal) + "court:\n  area_width_m: 13\n",
+               "site.yml:19: key 'court' area_width_m must leave room to drive round the net "
+               "posts (more than 13.80 m)");
+}
+
 }  // namespace
 }  // namespace ballsight

@@ -4,6 +4,7 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/text_format.hpp"
 #include "ballsight/world/yaml_reader.hpp"
 
 namespace ballsight {
@@ -74,7 +75,7 @@ SiteCourt read_court(YamlMap map) {
   if (court.net && (court.area_width_m / 2.0 <= beyond_post ||
                     court.area_length_m / 2.0 <= court.net_clearance_m)) {
     map.value().fail("area_width_m must leave room to drive round the net posts (more than " +
-                     std::to_string(2.0 * beyond_post) + " m)");
+                     fixed(2.0 * beyond_post, 2) + " m)");
   }
   return court;
 }
