@@ -9,6 +9,7 @@
 #include "ballsight/eval/route_plot.hpp"
 #include "ballsight/plan/exact_path.hpp"
 #include "ballsight/plan/planner.hpp"
+#include "ballsight/world/collection_sites.hpp"
 
 namespace ballsight::eval {
 namespace {
@@ -73,6 +74,22 @@ std::vector<Outcome> evaluate(const PlanningProblem& problem, const PlanEvalOpti
     write_png_atomic(*options.plot_dir / (plot_name + ".png"),
                      draw_route_map(problem, layers, plot_name));
   }
+  // The ways of letting the 70 cm collector take several balls at once, measured: ballsight's
+  // sweeping (above), every ball's centre visited, or the world model's collection sites
+  // (section 7.8 of the report) visited at their centres.
+  PlannerOptions centres;
+  centres.seed = seed;
+  centres.sweep = false;
+  const Route every = plan(problem, centres);
+  outcomes.push_back({"ballsight_centres", every.time_s, every.length_m, every.plan_ms, {}, {}});
+  PlanningProblem sites = problem;
+  sites.balls.clear();
+  for (const CollectionSite& site : collection_sites(problem.balls, problem.collector_width_m)) {
+    sites.balls.push_back(site.center_m);
+  }
+  const Route by_site = plan(sites, centres);
+  outcomes.push_back(
+      {"ballsight_sites", by_site.time_s, by_site.length_m, by_site.plan_ms, {}, {}});
   return outcomes;
 }
 
@@ -168,8 +185,9 @@ std::string plan_eval_text(const PlanEvalReport& report) {
   for (const auto& [n, ours] : report.by_n.at("ballsight")) {
     std::snprintf(line, sizeof line, "\nn = %d (%d trials per layout)\n", n, plan_eval_trials(n));
     out += line;
-    out += "  planner      time mean  time max  length mean  gap to optimum  plan ms\n";
-    for (const char* name : {"priority", "nearest", "ballsight"}) {
+    out += "  planner             time mean  time max  length mean  gap to optimum  plan ms\n";
+    for (const char* name :
+         {"priority", "nearest", "ballsight", "ballsight_centres", "ballsight_sites"}) {
       const PlannerFigures& f = report.by_n.at(name).at(n);
       std::string gap = "-";
       if (f.gap_to_optimal_pct.count > 0) {
@@ -177,7 +195,7 @@ std::string plan_eval_text(const PlanEvalReport& report) {
                       f.gap_to_optimal_pct.max);
         gap = line;
       }
-      std::snprintf(line, sizeof line, "  %-10s %9.1f s %8.1f s %10.1f m  %-16s %7.2f\n", name,
+      std::snprintf(line, sizeof line, "  %-17s %9.1f s %8.1f s %10.1f m  %-16s %7.2f\n", name,
                     f.time_s.mean, f.time_s.max, f.length_m.mean, gap.c_str(), f.plan_ms.mean);
       out += line;
     }

@@ -42,8 +42,9 @@ struct PlannerFigures {
   Spread gap_to_long_run_pct;  // n = 50, 100 (ballsight)
 };
 
-/// Figures of each planner ("priority", "nearest", "ballsight") per n, over every layout, and
-/// per layout.
+/// Figures of each planner ("priority", "nearest", "ballsight", and ballsight visiting every
+/// ball's centre, "ballsight_centres", or the world model's collection sites, "ballsight_sites")
+/// per n, over every layout, and per layout.
 struct PlanEvalReport {
   PlanEvalOptions options;
   std::map<std::string, std::map<int, PlannerFigures>> by_n;
