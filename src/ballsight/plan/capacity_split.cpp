@@ -5,7 +5,7 @@
 namespace ballsight {
 
 std::vector<int> split_into_trips(const TravelModel& model, const std::vector<int>& path,
-                                  int capacity, int unload) {
+                                  const std::vector<int>& load, int capacity, int unload) {
   const int n = static_cast<int>(path.size()) - 1;  // balls path[1 .. n]
   const auto o = [&](int t) { return path[static_cast<std::size_t>(t)]; };
   // Legs and turns along the giant path: legs[t] sums o1->o2 .. o(t-1)->ot, turns[t] the turns
@@ -34,7 +34,8 @@ std::vector<int> split_into_trips(const TravelModel& model, const std::vector<in
   std::vector<int> start(static_cast<std::size_t>(n + 1), 1);
   best[0] = 0.0;
   for (int j = 1; j <= n; ++j) {
-    for (int i = j; i >= 1 && j - i < capacity; --i) {
+    int balls = 0;
+    for (int i = j; i >= 1 && (balls += load[static_cast<std::size_t>(o(i))]) <= capacity; --i) {
       const double c = best[static_cast<std::size_t>(i - 1)] + trip(i, j);
       if (c < best[static_cast<std::size_t>(j)]) {
         best[static_cast<std::size_t>(j)] = c;

@@ -10,9 +10,10 @@
 
 namespace ballsight {
 
-/// Cuts `path` (node 0 first, then the balls) into trips of at most `capacity` balls; returns the
-/// path with `unload` inserted after each trip, the last one included.
+/// Cuts `path` (node 0 first, then the places with balls) into trips of at most `capacity` balls,
+/// `load[node]` balls picked up at each node (each at most `capacity`); returns the path with
+/// `unload` inserted after each trip, the last one included.
 std::vector<int> split_into_trips(const TravelModel& model, const std::vector<int>& path,
-                                  int capacity, int unload);
+                                  const std::vector<int>& load, int capacity, int unload);
 
 }  // namespace ballsight

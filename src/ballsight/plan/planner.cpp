@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/plan/ball_groups.hpp"
 #include "ballsight/plan/capacity_split.hpp"
 #include "ballsight/plan/exact_path.hpp"
 #include "ballsight/plan/greedy_planners.hpp"
@@ -29,35 +30,62 @@ int fresh_kicks(const PlannerOptions& options, std::size_t balls) {
       options.effort * std::max(kMinKicks, kKicksPerBall * static_cast<double>(balls))));
 }
 
-/// The nodes the searches run on: 0 the robot, 1..k the balls' visit points, then the return
-/// point and the unload point when there are any.
+/// The nodes the searches run on: 0 the robot, 1..k the places where groups of balls are picked
+/// up (single balls unless sweeping), then the return point and the unload point if any.
 struct Nodes {
   std::vector<Vec2> points;
-  std::vector<int> ball_of;  // node -> ball index, -1 for the others
-  int balls_end = 1;         // ball nodes are 1 .. balls_end - 1
+  std::vector<BallGroup> groups;  // node i (1 <= i < balls_end) picks up groups[i - 1]
+  std::vector<int> load;          // balls picked up at each node
+  int balls_end = 1;
   int return_node = -1;
   int unload_node = -1;
 };
 
-Nodes make_nodes(const PlanningProblem& problem, const std::vector<int>& balls) {
+Nodes make_nodes(const PlanningProblem& problem, const std::vector<int>& balls, bool group) {
   Nodes nodes;
   nodes.points.push_back(problem.robot.position);
-  nodes.ball_of.push_back(-1);
+  // Balls against the net are picked up from their side one by one; a group of balls never
+  // outgrows the basket.
+  std::vector<int> free, at_net;
   for (const int b : balls) {
-    const Vec2& p = problem.balls[static_cast<std::size_t>(b)];
-    nodes.points.push_back(problem.court ? problem.court->approach_point(p) : p);
-    nodes.ball_of.push_back(b);
+    const bool net =
+        problem.court && problem.court->in_net_zone(problem.balls[static_cast<std::size_t>(b)]);
+    (net ? at_net : free).push_back(b);
+  }
+  const double radius = group ? problem.sweep_radius_m() : 0.0;
+  nodes.groups = group_balls(problem.balls, free, radius);
+  for (const int b : at_net)
+    nodes.groups.push_back({problem.balls[static_cast<std::size_t>(b)], 0.0, {b}});
+  if (problem.capacity) {
+    std::vector<BallGroup> split;
+    for (BallGroup& g : nodes.groups) {
+      for (std::size_t k = 0; k < g.balls.size();
+           k += static_cast<std::size_t>(problem.capacity->balls)) {
+        const auto end =
+            std::min(g.balls.size(), k + static_cast<std::size_t>(problem.capacity->balls));
+        split.push_back({g.centre_m,
+                         g.radius_m,
+                         {g.balls.begin() + static_cast<std::ptrdiff_t>(k),
+                          g.balls.begin() + static_cast<std::ptrdiff_t>(end)}});
+      }
+    }
+    nodes.groups = std::move(split);
+  }
+  nodes.load.push_back(0);
+  for (const BallGroup& g : nodes.groups) {
+    nodes.points.push_back(problem.court ? problem.court->approach_point(g.centre_m) : g.centre_m);
+    nodes.load.push_back(static_cast<int>(g.balls.size()));
   }
   nodes.balls_end = static_cast<int>(nodes.points.size());
   if (problem.return_to && !problem.capacity) {
     nodes.return_node = static_cast<int>(nodes.points.size());
     nodes.points.push_back(*problem.return_to);
-    nodes.ball_of.push_back(-1);
+    nodes.load.push_back(0);
   }
   if (problem.capacity) {
     nodes.unload_node = static_cast<int>(nodes.points.size());
     nodes.points.push_back(problem.capacity->unload_m);
-    nodes.ball_of.push_back(-1);
+    nodes.load.push_back(0);
   }
   return nodes;
 }
@@ -128,9 +156,10 @@ void keep_target(PathSearch<TravelModel>& search, const TravelModel& model, int 
   if (path_cost(model, path) + margin >= kept_cost) path = std::move(kept);
 }
 
-std::vector<RouteStop> searched_stops(const PlanningProblem& problem, const std::vector<int>& balls,
-                                      const PlannerOptions& options) {
-  const Nodes nodes = make_nodes(problem, balls);
+std::vector<Visit> searched_visits(const PlanningProblem& problem, const std::vector<int>& balls,
+                                   const PlannerOptions& options) {
+  const bool sweep = options.sweep && options.kind == PlannerKind::ballsight;
+  const Nodes nodes = make_nodes(problem, balls, sweep);
   const TravelModel model(nodes.points, problem.robot.heading_rad, problem.court, problem.limits,
                           options.cost);
   std::vector<int> path;
@@ -161,15 +190,23 @@ std::vector<RouteStop> searched_stops(const PlanningProblem& problem, const std:
       search.improve(path, how);
     }
     if (problem.capacity) {
-      path = split_into_trips(model, path, problem.capacity->balls, nodes.unload_node);
+      path = split_into_trips(model, path, nodes.load, problem.capacity->balls, nodes.unload_node);
     }
   }
-  std::vector<RouteStop> stops;
+  std::vector<Visit> visits;
   for (std::size_t i = 1; i < path.size(); ++i) {
-    if (path[i] == nodes.return_node) continue;  // measure_route drives there
-    stops.push_back({model.node(path[i]), nodes.ball_of[static_cast<std::size_t>(path[i])]});
+    const int node = path[i];
+    if (node == nodes.return_node) continue;  // measure_route drives there
+    if (node == nodes.unload_node) {
+      visits.push_back({model.node(node), model.node(node), 0.0, {}});
+      continue;
+    }
+    const BallGroup& g = nodes.groups[static_cast<std::size_t>(node - 1)];
+    const bool at_net = model.node(node) != g.centre_m;
+    const double reach = sweep && !at_net ? problem.sweep_radius_m() - g.radius_m : 0.0;
+    visits.push_back({model.node(node), model.node(node), reach, g.balls});
   }
-  return stops;
+  return visits;
 }
 
 double objective(const Route& route, CostKind cost) {
@@ -199,13 +236,14 @@ Route plan(const PlanningProblem& problem, const PlannerOptions& options) {
       break;
     case PlannerKind::ballsight:
     case PlannerKind::exact: {
-      const std::vector<RouteStop> stops = searched_stops(problem, reachable, options);
-      measure_route(problem, stops, route);
+      const std::vector<Visit> visits = searched_visits(problem, reachable, options);
+      measure_route(problem, stops_of(visits), route);
       if (options.kind == PlannerKind::ballsight && options.sweep) {
         Route pulled = route;
-        measure_route(problem, pull_visits(problem, stops), pulled);
-        if (objective(pulled, options.cost) < objective(route, options.cost))
+        measure_route(problem, stops_of(pull_visits(problem, visits)), pulled);
+        if (objective(pulled, options.cost) < objective(route, options.cost)) {
           route = std::move(pulled);
+        }
       }
       break;
     }

@@ -106,38 +106,42 @@ std::vector<RouteStop> swept_on_the_way(const PlanningProblem& problem, const Ve
   return out;
 }
 
-std::vector<RouteStop> pull_visits(const PlanningProblem& problem, std::vector<RouteStop> stops) {
-  const double r = problem.sweep_radius_m();
-  if (r <= 0.0) return stops;
+std::vector<RouteStop> stops_of(const std::vector<Visit>& visits) {
+  std::vector<RouteStop> stops;
+  for (const Visit& v : visits) {
+    if (v.balls.empty()) stops.push_back({v.point_m, -1});
+    for (const int b : v.balls) stops.push_back({v.point_m, b});
+  }
+  return stops;
+}
+
+std::vector<Visit> pull_visits(const PlanningProblem& problem, std::vector<Visit> visits) {
   constexpr int kPasses = 4;
   for (int pass = 0; pass < kPasses; ++pass) {
-    for (std::size_t i = 0; i < stops.size(); ++i) {
-      if (stops[i].ball < 0) continue;
-      const Vec2& ball = problem.balls[static_cast<std::size_t>(stops[i].ball)];
-      if (!drivable(problem, ball)) continue;  // against the net: stays at its approach point
-      // The neighbouring points the path runs between: the previous stop (or the start) and the
-      // next stop (or the return point), or the detour corners between.
-      const Vec2 prev = i == 0 ? problem.robot.position : stops[i - 1].point_m;
-      const Drive in = drive(problem, {prev, 0.0}, stops[i].point_m);
-      const Vec2 a = in.points_m.size() > 1 ? in.points_m[in.points_m.size() - 2] : prev;
-      // The last stop of an open route stays: pulled back, its ball would lie ahead of the mouth.
+    for (std::size_t i = 0; i < visits.size(); ++i) {
+      Visit& v = visits[i];
+      if (v.balls.empty() || v.reach_m <= 0.0) continue;
+      // The neighbouring points the path runs between: the previous visit (or the start) and the
+      // next visit (or the return point), or the detour corners between.
       std::optional<Vec2> next;
-      if (i + 1 < stops.size()) {
-        next = stops[i + 1].point_m;
+      if (i + 1 < visits.size()) {
+        next = visits[i + 1].point_m;
       } else if (problem.return_to) {
         next = *problem.return_to;
       } else {
-        continue;
+        continue;  // the last visit of an open route
       }
-      const Drive out = drive(problem, {stops[i].point_m, 0.0}, *next);
-      const Vec2 c = out.points_m.front();
-      const Vec2 q = closest_on_segment(a, c, ball).first;
-      const double off = (q - ball).norm();
-      const Vec2 target = off <= r ? q : ball + (q - ball) * (r / off);
-      if (drivable(problem, target)) stops[i].point_m = target;
+      const Vec2 prev = i == 0 ? problem.robot.position : visits[i - 1].point_m;
+      const Drive in = drive(problem, {prev, 0.0}, v.point_m);
+      const Vec2 a = in.points_m.size() > 1 ? in.points_m[in.points_m.size() - 2] : prev;
+      const Vec2 c = drive(problem, {v.point_m, 0.0}, *next).points_m.front();
+      const Vec2 q = closest_on_segment(a, c, v.centre_m).first;
+      const double off = (q - v.centre_m).norm();
+      const Vec2 target = off <= v.reach_m ? q : v.centre_m + (q - v.centre_m) * (v.reach_m / off);
+      if (drivable(problem, target)) v.point_m = target;
     }
   }
-  return stops;
+  return visits;
 }
 
 }  // namespace ballsight
