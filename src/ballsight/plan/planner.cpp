@@ -17,17 +17,22 @@
 namespace ballsight {
 namespace {
 
-// Iterated local search kicks per ball at effort 1 (at least kMinKicks), fresh and re-planned
-// (bench/plan.cpp and `eval plan`: docs/route-planning.md).
+// Iterated local search kicks per ball at effort 1 (at least kMinKicks), fresh and re-planned.
+// A kick priced without turns (distance cost) costs about half: five per ball there took random
+// 130- and 250-point tours from 2.2 and 1.3 % above a run at effort 100 to equal (bench/plan.cpp,
+// `eval plan`, `eval tsplib`: docs/route-planning.md).
 constexpr double kKicksPerBall = 1.0;
+constexpr double kKicksPerBallWithoutTurns = 5.0;
 constexpr double kMinKicks = 100.0;
 constexpr double kReplanKicksPerBall = 0.1;
 // A ball of the previous route is the same ball now when it moved less than this.
 constexpr double kSameBallM = 0.30;
 
 int fresh_kicks(const PlannerOptions& options, std::size_t balls) {
-  return static_cast<int>(std::lround(
-      options.effort * std::max(kMinKicks, kKicksPerBall * static_cast<double>(balls))));
+  const double per_ball =
+      options.cost == CostKind::time ? kKicksPerBall : kKicksPerBallWithoutTurns;
+  return static_cast<int>(
+      std::lround(options.effort * std::max(kMinKicks, per_ball * static_cast<double>(balls))));
 }
 
 /// The nodes the searches run on: 0 the robot, 1..k the places where groups of balls are picked
@@ -271,7 +276,9 @@ std::vector<int> shortest_tour(const std::vector<std::vector<double>>& cost,
   std::vector<int> path = nearest_neighbour_path(model, static_cast<int>(n));
   path.push_back(static_cast<int>(n));
   Improvement how;
-  how.kicks = fresh_kicks(options, n - 1);
+  PlannerOptions without_turns = options;
+  without_turns.cost = CostKind::distance;
+  how.kicks = fresh_kicks(without_turns, n - 1);
   search.improve(path, how);
   path.pop_back();
   return path;
