@@ -15,6 +15,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/eval/court_eval.hpp"
 #include "ballsight/eval/omni_auto_calibration.hpp"
+#include "ballsight/eval/plan_eval.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
 #include "ballsight/sim/court_dataset.hpp"
 #include "ballsight/sim/omni_dataset.hpp"
@@ -246,6 +247,17 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir) {
       " simulated scene(s) of their own, scored against the truth in " +
       fixed(seconds_since(eval_start), 1) + " s (docs/court-eval.md):<pre>" +
       scores_only(court_eval_text(court_report)) + "</pre>";
+  ensure_directory(out_dir / "plan");
+  const std::vector<Figure> plan_figs{
+      {"plan/route-practice-50.png",
+       "the report's rule (red), nearest neighbour (blue) and ballsight (green) on the court"}};
+  const std::string plan_intro =
+      "The order in which the robot collects 50 balls left after practice (along the baselines "
+      "and at the foot of the net), round the net, turning costed (1 m/s, 90 deg/s), the 70 cm "
+      "collector taking the balls it passes (docs/route-planning.md):<pre>" +
+      eval::plan_comparison(eval::BallLayout::practice, 50, options.seed,
+                            out_dir / plan_figs[0].image) +
+      "</pre>";
   const std::string title = "ballsight demo (seed " + std::to_string(options.seed) + ")";
 
   std::ostringstream html;
@@ -258,14 +270,16 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir) {
        << html_section("Omnidirectional rig", omni_intro, omni_figs)
        << html_section("Court rig", court_intro, court_figs)
        << html_section("Court: calibration, detection and world model", eval_intro, eval_figs)
-       << "</body></html>\n";
+       << html_section("Court: collection route", plan_intro, plan_figs) << "</body></html>\n";
   const std::string markdown =
       "# " + title + "\n\n" + markdown_section("Omnidirectional rig", omni_intro, omni_figs) +
       markdown_section("Court rig", court_intro, court_figs) +
-      markdown_section("Court: calibration, detection and world model", eval_intro, eval_figs);
+      markdown_section("Court: calibration, detection and world model", eval_intro, eval_figs) +
+      markdown_section("Court: collection route", plan_intro, plan_figs);
 
-  DemoResult result{out_dir / "report.html", out_dir / "report.md",
-                    static_cast<int>(omni_figs.size() + court_figs.size() + eval_figs.size())};
+  DemoResult result{
+      out_dir / "report.html", out_dir / "report.md",
+      static_cast<int>(omni_figs.size() + court_figs.size() + eval_figs.size() + plan_figs.size())};
   write_file_atomic(result.report_html, html.str());
   write_file_atomic(result.report_markdown, markdown);
   return result;

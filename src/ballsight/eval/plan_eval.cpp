@@ -6,6 +6,7 @@
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/route_plot.hpp"
 #include "ballsight/plan/exact_path.hpp"
 #include "ballsight/plan/planner.hpp"
@@ -37,6 +38,22 @@ void add(PlannerFigures& f, const Outcome& o) {
   if (o.gap_to_long_run_pct) f.gap_to_long_run_pct.add(*o.gap_to_long_run_pct);
 }
 
+/// The compared planners' routes on one problem, labelled and coloured for a map.
+std::vector<RouteLayer> compared_routes(const PlanningProblem& problem, std::uint64_t seed) {
+  std::vector<RouteLayer> layers;
+  for (const PlannerKind kind : kCompared) {
+    PlannerOptions planner;
+    planner.kind = kind;
+    planner.seed = seed;
+    Route route = plan(problem, planner);
+    char label[96];
+    std::snprintf(label, sizeof label, "%s: %.1f s, %.1f m", route.planner.c_str(), route.time_s,
+                  route.length_m);
+    layers.push_back({label, kColours[layers.size()], std::move(route)});
+  }
+  return layers;
+}
+
 /// One problem planned by every planner (and the references); pictured when `plot_name` is set.
 std::vector<Outcome> evaluate(const PlanningProblem& problem, const PlanEvalOptions& options,
                               std::uint64_t seed, const std::string& plot_name) {
@@ -48,12 +65,13 @@ std::vector<Outcome> evaluate(const PlanningProblem& problem, const PlanEvalOpti
     optimum = plan(problem, exact).time_s;
   }
   std::vector<Outcome> outcomes;
-  std::vector<RouteLayer> layers;
-  for (const PlannerKind kind : kCompared) {
+  const std::vector<RouteLayer> layers = compared_routes(problem, seed);
+  for (std::size_t k = 0; k < layers.size(); ++k) {
+    const PlannerKind kind = kCompared[k];
+    const Route& route = layers[k].route;
     PlannerOptions planner;
     planner.kind = kind;
     planner.seed = seed;
-    const Route route = plan(problem, planner);
     Outcome o{route.planner, route.time_s, route.length_m, route.plan_ms, {}, {}};
     if (optimum) {
       planner.sweep = false;  // the exact optimum visits every ball at its centre
@@ -65,10 +83,6 @@ std::vector<Outcome> evaluate(const PlanningProblem& problem, const PlanEvalOpti
       o.gap_to_long_run_pct = gap_pct(route.time_s, plan(problem, planner).time_s);
     }
     outcomes.push_back(o);
-    char label[96];
-    std::snprintf(label, sizeof label, "%s: %.1f s, %.1f m", route.planner.c_str(), route.time_s,
-                  route.length_m);
-    layers.push_back({label, kColours[layers.size()], route});
   }
   if (!plot_name.empty() && options.plot_dir) {
     write_png_atomic(*options.plot_dir / (plot_name + ".png"),
@@ -113,6 +127,20 @@ nlohmann::json by_n_json(const std::map<int, PlannerFigures>& by_n) {
 }
 
 }  // namespace
+
+std::string plan_comparison(BallLayout layout, int n, std::uint64_t seed,
+                            const std::filesystem::path& png) {
+  const PlanningProblem problem = court_planning_problem(layout, n, seed);
+  const std::vector<RouteLayer> layers = compared_routes(problem, seed);
+  const std::string title =
+      std::to_string(n) + " balls, layout " + std::string(layout_name(layout));
+  write_png_atomic(png, draw_route_map(problem, layers, title));
+  std::string out;
+  for (const RouteLayer& layer : layers) {
+    out += layer.label + " (planned in " + fixed(layer.route.plan_ms, 2) + " ms)\n";
+  }
+  return out;
+}
 
 void Spread::add(double value) {
   mean = (mean * count + value) / (count + 1);

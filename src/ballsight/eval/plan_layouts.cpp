@@ -5,11 +5,12 @@
 #include <random>
 
 #include "ballsight/core/angle.hpp"
+#include "ballsight/core/enum_names.hpp"
 
 namespace ballsight::eval {
 namespace {
 
-constexpr std::array<std::pair<BallLayout, std::string_view>, 3> kNames{{
+constexpr EnumNames<BallLayout, 3> kNames{{
     {BallLayout::uniform, "uniform"},
     {BallLayout::practice, "practice"},
     {BallLayout::net, "net"},
@@ -50,17 +51,11 @@ Vec2 draw_ball(BallLayout layout, std::mt19937_64& rng) {
 }  // namespace
 
 std::string_view layout_name(BallLayout layout) {
-  for (const auto& [l, name] : kNames) {
-    if (l == layout) return name;
-  }
-  return "?";
+  return enum_name(kNames, layout);
 }
 
 std::optional<BallLayout> layout_from_name(std::string_view name) {
-  for (const auto& [l, n] : kNames) {
-    if (n == name) return l;
-  }
-  return std::nullopt;
+  return enum_named(kNames, name);
 }
 
 PlanningProblem court_planning_problem(BallLayout layout, int n, std::uint64_t seed) {

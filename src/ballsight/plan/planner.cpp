@@ -49,18 +49,26 @@ struct Nodes {
 Nodes make_nodes(const PlanningProblem& problem, const std::vector<int>& balls, bool group) {
   Nodes nodes;
   nodes.points.push_back(problem.robot.position);
-  // Balls against the net are picked up from their side one by one; a group of balls never
-  // outgrows the basket.
-  std::vector<int> free, at_net;
+  // Groups never reach across the net; balls against it are picked up from their side one by
+  // one; a group never outgrows the basket.
+  std::vector<int> side[2], at_net;
   for (const int b : balls) {
-    const bool net =
-        problem.court && problem.court->in_net_zone(problem.balls[static_cast<std::size_t>(b)]);
-    (net ? at_net : free).push_back(b);
+    const Vec2& p = problem.balls[static_cast<std::size_t>(b)];
+    if (problem.court && problem.court->in_net_zone(p)) {
+      at_net.push_back(b);
+    } else {
+      side[p.x() >= 0.0 ? 1 : 0].push_back(b);
+    }
   }
   const double radius = group ? problem.sweep_radius_m() : 0.0;
-  nodes.groups = group_balls(problem.balls, free, radius);
-  for (const int b : at_net)
+  for (const std::vector<int>& one_side : side) {
+    for (BallGroup& g : group_balls(problem.balls, one_side, radius)) {
+      nodes.groups.push_back(std::move(g));
+    }
+  }
+  for (const int b : at_net) {
     nodes.groups.push_back({problem.balls[static_cast<std::size_t>(b)], 0.0, {b}});
+  }
   if (problem.capacity) {
     std::vector<BallGroup> split;
     for (BallGroup& g : nodes.groups) {
@@ -156,7 +164,8 @@ void keep_target(PathSearch<TravelModel>& search, const TravelModel& model, int 
   kept.insert(kept.begin() + 1, target);
   Improvement how;
   how.fixed_prefix = 2;
-  how.dirty = {target, kept[2]};
+  how.dirty = {target};
+  if (kept.size() > 2) how.dirty.push_back(kept[2]);
   const double kept_cost = search.improve(kept, how);
   if (path_cost(model, path) + margin >= kept_cost) path = std::move(kept);
 }

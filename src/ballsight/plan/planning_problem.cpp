@@ -5,13 +5,14 @@
 #include <cmath>
 #include <string>
 
+#include "ballsight/core/enum_names.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/text_format.hpp"
 
 namespace ballsight {
 namespace {
 
-constexpr std::array<std::pair<PlannerKind, std::string_view>, 4> kNames{{
+constexpr EnumNames<PlannerKind, 4> kNames{{
     {PlannerKind::priority, "priority"},
     {PlannerKind::nearest, "nearest"},
     {PlannerKind::ballsight, "ballsight"},
@@ -81,17 +82,11 @@ double PlanningProblem::sweep_radius_m() const {
 }
 
 std::string_view planner_name(PlannerKind kind) {
-  for (const auto& [k, name] : kNames) {
-    if (k == kind) return name;
-  }
-  return "?";
+  return enum_name(kNames, kind);
 }
 
 std::optional<PlannerKind> planner_from_name(std::string_view name) {
-  for (const auto& [k, n] : kNames) {
-    if (n == name) return k;
-  }
-  return std::nullopt;
+  return enum_named(kNames, name);
 }
 
 void PlannerOptions::validate() const {
