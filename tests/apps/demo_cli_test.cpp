@@ -24,8 +24,9 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
     const std::string relative = fs::relative(entry.path(), out).string();
     EXPECT_NE(html.find("src=\"" + relative + "\""), std::string::npos) << relative;
   }
-  // Two omni frames, four court views, and the court evaluation's four views and field map.
-  EXPECT_EQ(images, 2 + 4 + 5);
+  // Two omni frames, four court views, the court evaluation's four views and field map, and the
+  // collection route.
+  EXPECT_EQ(images, 2 + 4 + 5 + 1);
   const std::string markdown = read_file(out / "report.md");
   EXPECT_NE(markdown.find("calibration markers"), std::string::npos);
   // The omni run time: calibrated from the markers found, the ball placed and scored.
@@ -35,6 +36,16 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
   // The court evaluation: both methods scored.
   EXPECT_NE(markdown.find("\nballsight "), std::string::npos) << markdown;
   EXPECT_EQ(markdown.find("wrote "), std::string::npos) << markdown;
+  // The route: the three planners, ballsight's the fastest.
+  const std::size_t route = markdown.find("## Court: collection route");
+  ASSERT_NE(route, std::string::npos) << markdown;
+  const auto seconds = [&](const std::string& planner) {
+    const std::size_t at = markdown.find(planner + ": ", route);
+    EXPECT_NE(at, std::string::npos) << planner;
+    return at == std::string::npos ? 0.0 : std::stod(markdown.substr(at + planner.size() + 2));
+  };
+  EXPECT_LT(seconds("ballsight"), seconds("nearest"));
+  EXPECT_LT(seconds("nearest"), seconds("priority"));
 }
 
 TEST(DemoCli, BadOptionsFailWithOneLine) {
