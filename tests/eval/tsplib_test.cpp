@@ -23,7 +23,34 @@ TEST(Tsplib, ParsesEveryWeightFormatTheSameWay) {
   const std::string euc =
       "NAME: t\nTYPE: TSP\nDIMENSION: 3\nEDGE_WEIGHT_TYPE: EUC_2D\n"
       "NODE_COORD_SECTION\n1 0 0\n2 1 0\n3 0 2.2\nEOF\n";
-  EXPECT_EQ(parse_tsplib(full, "full").cost, parse_tsplib(lower, "lower").cost);
+  const auto with = [](const std::string& format, const std::string& weights) {
+    return "NAME: t\nTYPE: TSP\nDIMENSION: 3\nEDGE_WEIGHT_TYPE: EXPLICIT\nEDGE_WEIGHT_FORMAT: " +
+           format + "\nEDGE_WEIGHT_SECTION\n" + weights + "\nEOF\n";
+  };
+  const auto expected = parse_tsplib(full, "full").cost;
+  EXPECT_EQ(expected, parse_tsplib(lower, "lower").cost);
+  EXPECT_EQ(expected, parse_tsplib(with("UPPER_ROW", "1 2 3"), "upper").cost);
+  EXPECT_EQ(expected, parse_tsplib(with("LOWER_ROW", "1 2 3"), "lower_row").cost);
+  EXPECT_EQ(expected, parse_tsplib(with("UPPER_DIAG_ROW", "0 1 2 0 3 0"), "upper_diag").cost);
+  EXPECT_THROW(parse_tsplib(with("UPPER_ROW", "1 2"), "short"), InputError);
+  EXPECT_THROW(parse_tsplib("NAME: t\nTYPE: TSP\nDIMENSION: 200000\nEDGE_WEIGHT_TYPE: "
+                            "EUC_2D\nNODE_COORD_SECTION\n1 0 0\nEOF\n",
+                            "huge"),
+               InputError);
+  // CEIL_2D rounds up, ATT is the pseudo-Euclidean distance of TSPLIB 95 (att48).
+  const std::string coords = "NODE_COORD_SECTION\n1 0 0\n2 1 0\n3 0 2.2\nEOF\n";
+  EXPECT_EQ(
+      parse_tsplib("TYPE: TSP\nDIMENSION: 3\nEDGE_WEIGHT_TYPE: CEIL_2D\n" + coords, "c").cost[1][2],
+      3.0);  // ceil(2.42)
+  EXPECT_EQ(
+      parse_tsplib("TYPE: TSP\nDIMENSION: 3\nEDGE_WEIGHT_TYPE: ATT\n" + coords, "att").cost[0][2],
+      1.0);  // sqrt(4.84 / 10) = 0.696, nint 1
+  // GEO: two of ulysses16's cities, 1 and 2 (38.24 20.42; 39.57 26.15): 509 km in TSPLIB units.
+  EXPECT_EQ(parse_tsplib("TYPE: TSP\nDIMENSION: 3\nEDGE_WEIGHT_TYPE: GEO\nNODE_COORD_SECTION\n"
+                         "1 38.24 20.42\n2 39.57 26.15\n3 40.56 25.32\nEOF\n",
+                         "geo")
+                .cost[0][1],
+            509.0);
   EXPECT_EQ(parse_tsplib(euc, "euc").cost[1][2], 2.0);  // nint(sqrt(1 + 4.84)) = 2
   EXPECT_THROW(parse_tsplib("NAME: t\nTYPE: ATSP\nDIMENSION: 3\n", "atsp"), InputError);
 }

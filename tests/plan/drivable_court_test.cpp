@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "ballsight/core/error.hpp"
@@ -33,14 +34,25 @@ TEST(DrivableCourt, AcrossTheNetGoesRoundTheNearerPost) {
   EXPECT_LT(shortest_path(kCourt, Vec2(-4, -5), Vec2(4, -5)).via[0].y(), 0.0);
 }
 
+TEST(DrivableCourt, BetweenTheStripsBeyondBothPostsAlongTheNet) {
+  // Both ends level with the net, beyond opposite posts: the way runs down one side of the net.
+  const DrivablePath p = shortest_path(kCourt, Vec2(0, 8), Vec2(0, -8));
+  ASSERT_EQ(p.via_count, 2);
+  EXPECT_NEAR(p.length_m, 2.0 * std::hypot(0.1, 8.0 - kEnd) + 2.0 * kEnd, 1e-9);
+  EXPECT_NEAR(std::abs(p.via[0].x()), 0.1, 1e-12);
+  EXPECT_EQ(p.via[0].x(), p.via[1].x());
+}
+
 TEST(DrivableCourt, PathsAreSymmetricAndNeverShorterThanTheStraightLine) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> x(-18, 18), y(-9, 9);
   for (int trial = 0; trial < 2000; ++trial) {
-    const Vec2 a(x(rng), y(rng)), b(x(rng), y(rng));
+    // Every other pair level with the net's keep-out, where the paths are hardest.
+    const Vec2 a(trial % 2 ? x(rng) : 0.3 * x(rng) / 18.0, y(rng)), b(x(rng), y(rng));
     if (kCourt.in_net_zone(a) || kCourt.in_net_zone(b)) continue;
     const DrivablePath ab = shortest_path(kCourt, a, b), ba = shortest_path(kCourt, b, a);
     SCOPED_TRACE(testing::Message() << "seed 7 trial " << trial);
+    ASSERT_TRUE(std::isfinite(ab.length_m));
     EXPECT_NEAR(ab.length_m, ba.length_m, 1e-9);
     EXPECT_GE(ab.length_m, (b - a).norm() - 1e-9);
     // Every piece of the path is clear of the net and inside the fence.

@@ -77,5 +77,31 @@ TEST(PathSearch, ReachesTheExactOptimumOnSmallProblems) {
   EXPECT_LT(worst_gap, 0.02);
 }
 
+TEST(PathSearch, FixedEndAndFixedTargetStayAndTheCostIsTracked) {
+  const PlanningProblem problem = test::random_court_problem(30, 9);
+  std::vector<Vec2> nodes{problem.robot.position};
+  nodes.insert(nodes.end(), problem.balls.begin(), problem.balls.end());
+  nodes.push_back(Vec2(17, 8));  // a return point, node 31
+  const TravelModel model(nodes, problem.robot.heading_rad, problem.court, problem.limits,
+                          CostKind::time);
+  PathSearchOptions options;
+  options.fixed_end = true;
+  PathSearch<TravelModel> search(model, options);
+  std::vector<int> path(32);
+  std::iota(path.begin(), path.end(), 0);
+  std::swap(path[1], path[7]);  // node 7 is to stay the first target
+  Improvement how;
+  how.fixed_prefix = 2;
+  how.kicks = 200;
+  const double found = search.improve(path, how);
+  EXPECT_NEAR(found, path_cost(model, path), 1e-6);
+  EXPECT_EQ(path[0], 0);
+  EXPECT_EQ(path[1], 7);
+  EXPECT_EQ(path.back(), 31);
+  std::vector<int> sorted = path;
+  std::sort(sorted.begin(), sorted.end());
+  for (int i = 0; i < 32; ++i) EXPECT_EQ(sorted[static_cast<std::size_t>(i)], i);
+}
+
 }  // namespace
 }  // namespace ballsight

@@ -178,5 +178,25 @@ TEST(Planner, ReplanningKeepsTheTargetAndTheOrder) {
   EXPECT_LT(again.time_s, fresh.time_s * 1.02);
 }
 
+TEST(Planner, HysteresisKeepsANearlyAsGoodTargetAndDropsAWorseOne) {
+  // From the origin facing +x: A is the best first ball, B nearly as good (B-first costs a few
+  // tenths of a second more), E far behind.
+  PlanningProblem problem;
+  const Vec2 a(3, 1), b(3, -1.2), c(6, 1), d(6, -1), e(-10, 0);
+  problem.balls = {a, b, c, d, e};
+  const Route fresh = plan(problem, {});
+  ASSERT_EQ(fresh.order[0], 0);  // A
+  Route driving;                 // the robot was sent to B first
+  driving.targets_m = {b, d, c, a, e};
+  PlannerOptions replan;
+  replan.previous = &driving;
+  EXPECT_EQ(plan(problem, replan).order[0], 1);  // B kept: switching saves less than 1 s
+  replan.target_switch_margin_s = 0.01;
+  EXPECT_EQ(plan(problem, replan).order[0], 0);  // a smaller margin: switch to A
+  driving.targets_m = {e, a, b, c, d};
+  replan.target_switch_margin_s = 1.0;
+  EXPECT_EQ(plan(problem, replan).order[0], 0);  // E first costs far more than 1 s: switch
+}
+
 }  // namespace
 }  // namespace ballsight

@@ -35,7 +35,8 @@ TEST(PriorityPlanner, Figure82PrioritiesComeOutWithTheDerivedWeights) {
                                          {{13.7095, 194.551}, 85.8113},
                                          {{93.2487, 235.516}, 87.0631}};
   expect_printed(robot, printed);
-  // The planner takes the ball the report ranked first (index 2), not the nearest (index 1).
+  // The planner takes the ball the report ranked first (its "Index 2", our ball 0), not the
+  // nearest (its "Index 1", our ball 1).
   PlanningProblem problem;
   problem.robot = robot;
   for (const PrintedBall& b : printed) problem.balls.push_back(b.position_cm / 100.0);

@@ -151,7 +151,7 @@ void Spread::add(double value) {
 void PlanEvalOptions::validate() const {
   require(!sizes.empty() && !layouts.empty(), "eval plan", "needs at least one size and layout");
   for (const int n : sizes) {
-    require(n >= 0 && n <= 2000, "eval plan sizes", "each in [0, 2000], got " + std::to_string(n));
+    require(n >= 1 && n <= 2000, "eval plan sizes", "each in [1, 2000], got " + std::to_string(n));
   }
   require(long_run_effort > 0.0, "eval plan long_run_effort", "must be positive");
 }

@@ -37,8 +37,8 @@ std::pair<Vec2, Vec2> view_bounds(const PlanningProblem& problem,
 cv::Mat draw_route_map(const PlanningProblem& problem, const std::vector<RouteLayer>& layers,
                        const std::string& title, double pixels_per_m) {
   auto [lo, hi] = view_bounds(problem, layers);
-  // A plain point problem keeps the picture about 1200 px wide whatever its units.
-  if (!problem.court) pixels_per_m = 1200.0 / std::max(hi.x() - lo.x(), 1e-9);
+  // A plain point problem keeps the picture's longer side about 1200 px whatever its units.
+  if (!problem.court) pixels_per_m = 1200.0 / std::max((hi - lo).maxCoeff(), 1e-9);
   std::vector<LegendEntry> legend;
   for (const RouteLayer& layer : layers) legend.push_back({layer.label, layer.colour});
   const int top = 36 + 22 * static_cast<int>(legend.size());

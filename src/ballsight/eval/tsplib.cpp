@@ -1,5 +1,6 @@
 #include "ballsight/eval/tsplib.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -39,17 +40,15 @@ double coordinate_distance(const std::string& type, const double* a, const doubl
   const double lat_b = geo_radians(b[0]), lon_b = geo_radians(b[1]);
   const double q1 = std::cos(lon_a - lon_b), q2 = std::cos(lat_a - lat_b),
                q3 = std::cos(lat_a + lat_b);
-  return std::trunc(6378.388 * std::acos(0.5 * ((1.0 + q1) * q2 - (1.0 - q1) * q3)) + 1.0);
+  const double cosine = std::clamp(0.5 * ((1.0 + q1) * q2 - (1.0 - q1) * q3), -1.0, 1.0);
+  return std::trunc(6378.388 * std::acos(cosine) + 1.0);
 }
 
-/// Fills `cost` from the explicit weights in `format`, read row by row.
+/// Fills `cost` from the explicit weights in `format` (their count checked), read row by row.
 void fill_explicit(const std::string& format, const std::vector<double>& w, std::size_t n,
-                   std::vector<std::vector<double>>& cost, const std::string& where) {
+                   std::vector<std::vector<double>>& cost) {
   std::size_t k = 0;
-  const auto next = [&] {
-    require(k < w.size(), where, "EDGE_WEIGHT_SECTION ends early");
-    return w[k++];
-  };
+  const auto next = [&] { return w[k++]; };
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t from = 0, to = n;  // columns of row i in the file
     if (format == "UPPER_ROW") from = i + 1;
@@ -81,7 +80,8 @@ TsplibInstance parse_tsplib(std::string_view text, const std::string& source) {
       continue;
     }
     const auto colon = t.find(':');
-    if (section.empty() || (colon != std::string::npos && std::isalpha(t[0]))) {
+    if (section.empty() ||
+        (colon != std::string::npos && std::isalpha(static_cast<unsigned char>(t[0])))) {
       require(colon != std::string::npos, at, "expected 'KEY : value'");
       spec[trimmed(t.substr(0, colon))] = trimmed(t.substr(colon + 1));
       section.clear();
@@ -102,22 +102,28 @@ TsplibInstance parse_tsplib(std::string_view text, const std::string& source) {
   out.name = spec["NAME"];
   if (out.name.size() > 4 && out.name.ends_with(".tsp")) out.name.resize(out.name.size() - 4);
   const int n = std::atoi(spec["DIMENSION"].c_str());
-  require(n >= 3, source, "DIMENSION must be at least 3");
+  require(n >= 3 && n <= 10000, source, "DIMENSION must be in [3, 10000]");
   const auto size = static_cast<std::size_t>(n);
-  out.cost.assign(size, std::vector<double>(size, 0.0));
   const std::string type = spec["EDGE_WEIGHT_TYPE"];
+  require(type == "EXPLICIT" || coords.size() == size, source,
+          "NODE_COORD_SECTION needs " + std::to_string(n) + " nodes, got " +
+              std::to_string(coords.size()));
+  out.cost.assign(size, std::vector<double>(size, 0.0));
   if (type == "EXPLICIT") {
     const std::string format = spec["EDGE_WEIGHT_FORMAT"];
     require(format == "FULL_MATRIX" || format == "UPPER_ROW" || format == "LOWER_ROW" ||
                 format == "UPPER_DIAG_ROW" || format == "LOWER_DIAG_ROW",
             source, "EDGE_WEIGHT_FORMAT '" + format + "' is not supported");
-    fill_explicit(format, weights, size, out.cost, source);
+    const std::size_t diagonal = format.find("DIAG") != std::string::npos ? size : 0;
+    const std::size_t expected =
+        format == "FULL_MATRIX" ? size * size : size * (size - 1) / 2 + diagonal;
+    require(weights.size() == expected, source,
+            "EDGE_WEIGHT_SECTION needs " + std::to_string(expected) + " weights, got " +
+                std::to_string(weights.size()));
+    fill_explicit(format, weights, size, out.cost);
   } else {
     require(type == "EUC_2D" || type == "CEIL_2D" || type == "GEO" || type == "ATT", source,
             "EDGE_WEIGHT_TYPE '" + type + "' is not supported");
-    require(coords.size() == size, source,
-            "NODE_COORD_SECTION needs " + std::to_string(n) + " nodes, got " +
-                std::to_string(coords.size()));
     for (std::size_t i = 0; i < size; ++i) {
       for (std::size_t j = i + 1; j < size; ++j) {
         out.cost[i][j] = out.cost[j][i] =

@@ -1,6 +1,7 @@
 #include "ballsight/plan/capacity_split.hpp"
 
 #include <limits>
+#include <vector>
 
 namespace ballsight {
 
@@ -43,12 +44,14 @@ std::vector<int> split_into_trips(const TravelModel& model, const std::vector<in
       }
     }
   }
-  std::vector<int> ends;
-  for (int j = n; j >= 1; j = start[static_cast<std::size_t>(j)] - 1) ends.push_back(j);
+  std::vector<bool> trip_ends(static_cast<std::size_t>(n + 1), false);
+  for (int j = n; j >= 1; j = start[static_cast<std::size_t>(j)] - 1) {
+    trip_ends[static_cast<std::size_t>(j)] = true;
+  }
   std::vector<int> out{path[0]};
   for (int t = 1; t <= n; ++t) {
     out.push_back(o(t));
-    if (std::find(ends.begin(), ends.end(), t) != ends.end()) out.push_back(unload);
+    if (trip_ends[static_cast<std::size_t>(t)]) out.push_back(unload);
   }
   return out;
 }

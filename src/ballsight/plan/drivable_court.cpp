@@ -1,5 +1,8 @@
 #include "ballsight/plan/drivable_court.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cassert>
 #include <cmath>
 #include <string>
 
@@ -19,34 +22,50 @@ double side_of(const Vec2& p) {
 }
 
 /// Shortest path with a before b in lexicographic order, so that a path and its reverse bend at
-/// the same corners.
+/// the same corners: Dijkstra over a, b and the keep-out's four corners, joined where the segment
+/// between them is clear (the shortest path round a convex obstacle bends only at its corners).
 DrivablePath canonical_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {
   DrivablePath best;
   best.length_m = (b - a).norm();
   if (!court.blocked(a, b)) return best;
   const double c = court.net->clearance_m;
   const double y_end = court.net->half_length_m + court.net->post_clearance_m;
-  best.length_m = INFINITY;
-  for (const double end : {1.0, -1.0}) {
-    DrivablePath path;
-    path.via = {Vec2(side_of(a) * c, end * y_end), Vec2(side_of(b) * c, end * y_end)};
-    path.via_count = path.via[0] == path.via[1] ? 1 : 2;
-    if (path.via_count == 2 && !court.blocked(a, path.via[1])) {
-      path.via[0] = path.via[1];
-      path.via_count = 1;
-    } else if (path.via_count == 2 && !court.blocked(path.via[0], b)) {
-      path.via_count = 1;
+  const std::array<Vec2, 6> node{
+      a, Vec2(c, y_end), Vec2(-c, y_end), Vec2(-c, -y_end), Vec2(c, -y_end), b};
+  constexpr std::size_t kB = 5;
+  std::array<double, 6> dist;
+  dist.fill(INFINITY);
+  std::array<int, 6> prev;
+  prev.fill(-1);
+  std::array<bool, 6> done{};
+  dist[0] = 0.0;
+  for (std::size_t round = 0; round < node.size(); ++round) {
+    std::size_t u = node.size();
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      if (!done[i] && (u == node.size() || dist[i] < dist[u])) u = i;
     }
-    Vec2 from = a;
-    bool clear = true;
-    for (int i = 0; i < path.via_count; ++i) {
-      clear = clear && !court.blocked(from, path.via[static_cast<std::size_t>(i)]);
-      path.length_m += (path.via[static_cast<std::size_t>(i)] - from).norm();
-      from = path.via[static_cast<std::size_t>(i)];
+    if (u == node.size() || dist[u] == INFINITY || u == kB) break;
+    done[u] = true;
+    for (std::size_t v = 0; v < node.size(); ++v) {
+      if (done[v] || court.blocked(node[u], node[v])) continue;
+      const double d = dist[u] + (node[v] - node[u]).norm();
+      if (d < dist[v] - kEps) {
+        dist[v] = d;
+        prev[v] = static_cast<int>(u);
+      }
     }
-    clear = clear && !court.blocked(from, b);
-    path.length_m += (b - from).norm();
-    if (clear && path.length_m < best.length_m - kEps) best = path;
+  }
+  // Inside a convex fence round a rectangle there is always a way; assert it was found.
+  assert(dist[kB] < INFINITY);
+  best.length_m = dist[kB];
+  std::array<Vec2, 4> reversed{};
+  int count = 0;
+  for (int v = prev[kB]; v > 0; v = prev[static_cast<std::size_t>(v)]) {
+    reversed[static_cast<std::size_t>(count++)] = node[static_cast<std::size_t>(v)];
+  }
+  best.via_count = count;
+  for (int i = 0; i < count; ++i) {
+    best.via[static_cast<std::size_t>(i)] = reversed[static_cast<std::size_t>(count - 1 - i)];
   }
   return best;
 }
@@ -114,7 +133,7 @@ bool DrivableCourt::blocked(const Vec2& a, const Vec2& b) const {
 DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {
   if (!lexicographic_less(b, a)) return canonical_path(court, a, b);
   DrivablePath path = canonical_path(court, b, a);
-  if (path.via_count == 2) std::swap(path.via[0], path.via[1]);
+  std::reverse(path.via.begin(), path.via.begin() + path.via_count);
   return path;
 }
 

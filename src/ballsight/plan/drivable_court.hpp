@@ -42,10 +42,11 @@ struct DrivableCourt {
   bool blocked(const Vec2& a, const Vec2& b) const;
 };
 
-/// The shortest drivable path from a to b: `via` holds the 0-2 corners it bends at.
+/// The shortest drivable path from a to b: `via` holds the corners it bends at (at most 2 on a
+/// shortest path; room for all four).
 struct DrivablePath {
   double length_m = 0.0;
-  std::array<Vec2, 2> via{};
+  std::array<Vec2, 4> via{};
   int via_count = 0;
 };
 

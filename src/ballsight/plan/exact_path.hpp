@@ -4,6 +4,7 @@
 // node before it), since a turn's cost depends on the two legs that meet. O(2^n n^3) time for n
 // free nodes: about 7 million steps at n = 12.
 
+#include <cassert>
 #include <limits>
 #include <vector>
 
@@ -76,6 +77,7 @@ std::vector<int> exact_path(const Model& model, bool fixed_end) {
       }
     }
   }
+  require(best < kInf, "exact planner", "no drivable order (a leg without a path)");
   // Walk back: find the state that led to (mask, last, prev).
   std::vector<int> reversed{node(best_last)};
   std::size_t mask = full;
@@ -92,6 +94,7 @@ std::vector<int> exact_path(const Model& model, bool fixed_end) {
           model.turn(prev_node(pp), node(p), node(last)) + model.leg(node(p), node(last));
       if (std::abs(c + step - target) <= 1e-9 * std::max(1.0, std::abs(target))) found = pp;
     }
+    assert(found >= 0);
     reversed.push_back(node(p));
     mask = before;
     last = p;

@@ -264,8 +264,6 @@ class PathSearch {
 
   /// Tries the moves that join `a` to a neighbour; applies the first that saves. Returns the
   /// saving (negative) or 0.
-  /// Tries the moves that join `a` to a neighbour; applies the first that saves. Returns the
-  /// saving (negative) or 0.
   double try_node(int a) {
     constexpr double kGain = -1e-9;
     // Neighbour lists with the gain criterion: a move that joins a to c removes a leg at a, and

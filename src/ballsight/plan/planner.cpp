@@ -57,7 +57,7 @@ Nodes make_nodes(const PlanningProblem& problem, const std::vector<int>& balls, 
     if (problem.court && problem.court->in_net_zone(p)) {
       at_net.push_back(b);
     } else {
-      side[p.x() >= 0.0 ? 1 : 0].push_back(b);
+      side[problem.court && problem.court->net && p.x() < 0.0 ? 0 : 1].push_back(b);
     }
   }
   const double radius = group ? problem.sweep_radius_m() : 0.0;
@@ -119,13 +119,14 @@ int same_ball(const TravelModel& model, const Nodes& nodes, const Vec2& target,
 }
 
 /// The previous route's balls found again (in its order), the new ones inserted where they cost
-/// least; `dirty` gets the nodes next to every change.
+/// least; `dirty` gets the nodes next to every change, `target` the first ball found again (the
+/// one the robot is driving to), -1 if none.
 std::vector<int> warm_start(const TravelModel& model, const Nodes& nodes, const Route& previous,
-                            std::vector<int>& dirty) {
+                            std::vector<int>& dirty, int& target) {
   std::vector<bool> used(static_cast<std::size_t>(model.size()), false);
   std::vector<int> path{0};
-  for (const Vec2& target : previous.targets_m) {
-    const int best = same_ball(model, nodes, target, used);
+  for (const Vec2& ball : previous.targets_m) {
+    const int best = same_ball(model, nodes, ball, used);
     if (best < 0) {
       dirty.push_back(path.back());  // a ball gone: its neighbours may do better now
       continue;
@@ -133,6 +134,7 @@ std::vector<int> warm_start(const TravelModel& model, const Nodes& nodes, const 
     used[static_cast<std::size_t>(best)] = true;
     path.push_back(best);
   }
+  target = path.size() > 1 ? path[1] : -1;
   if (nodes.return_node >= 0) path.push_back(nodes.return_node);
   const std::size_t open_end = path.size() - (nodes.return_node >= 0 ? 1 : 0);
   for (int i = 1; i < nodes.balls_end; ++i) {
@@ -160,12 +162,14 @@ void keep_target(PathSearch<TravelModel>& search, const TravelModel& model, int 
                  double margin, std::vector<int>& path) {
   if (path.size() < 2 || path[1] == target) return;
   std::vector<int> kept = path;
-  std::erase(kept, target);
-  kept.insert(kept.begin() + 1, target);
+  const auto at = std::find(kept.begin(), kept.end(), target);
+  if (at == kept.end()) return;
   Improvement how;
   how.fixed_prefix = 2;
-  how.dirty = {target};
-  if (kept.size() > 2) how.dirty.push_back(kept[2]);
+  how.dirty = {kept[1], *(at - 1)};  // the old first and the target's old neighbours
+  if (at + 1 != kept.end()) how.dirty.push_back(*(at + 1));
+  kept.erase(at);
+  kept.insert(kept.begin() + 1, target);
   const double kept_cost = search.improve(kept, how);
   if (path_cost(model, path) + margin >= kept_cost) path = std::move(kept);
 }
@@ -189,14 +193,10 @@ std::vector<Visit> searched_visits(const PlanningProblem& problem, const std::ve
     if (options.previous) {
       how.kicks = static_cast<int>(
           std::lround(options.effort * kReplanKicksPerBall * static_cast<double>(balls.size())));
-      path = warm_start(model, nodes, *options.previous, how.dirty);
+      int target = -1;
+      path = warm_start(model, nodes, *options.previous, how.dirty, target);
       search.improve(path, how);
-      // The target the robot is driving to, if it is still there.
-      if (!options.previous->targets_m.empty()) {
-        const std::vector<bool> none(static_cast<std::size_t>(model.size()), false);
-        const int target = same_ball(model, nodes, options.previous->targets_m[0], none);
-        if (target >= 0) keep_target(search, model, target, options.target_switch_margin_s, path);
-      }
+      if (target >= 0) keep_target(search, model, target, options.target_switch_margin_s, path);
     } else {
       path = nearest_neighbour_path(model, nodes.balls_end);
       if (nodes.return_node >= 0) path.push_back(nodes.return_node);

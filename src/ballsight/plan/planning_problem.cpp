@@ -37,8 +37,15 @@ void PlanningProblem::validate() const {
           "must be finite");
   require(collector_width_m >= 0.0 && ball_radius_m > 0.0 && sweep_margin_m >= 0.0, "collector",
           "ball radius must be positive, width and margin not negative");
+  require(balls.size() <= kMaxBalls, "balls",
+          "at most " + std::to_string(kMaxBalls) + ", got " + std::to_string(balls.size()));
+  const auto sane = [](const Vec2& p) {
+    return p.allFinite() && p.cwiseAbs().maxCoeff() <= kMaxCoordinateM;
+  };
+  require(sane(robot.position), "robot pose", "coordinates must be finite and within 1e6 m");
   for (std::size_t i = 0; i < balls.size(); ++i) {
-    require(balls[i].allFinite(), "balls[" + std::to_string(i) + "]", "coordinates must be finite");
+    require(sane(balls[i]), "balls[" + std::to_string(i) + "]",
+            "coordinates must be finite and within 1e6 m");
   }
   if (court) {
     require(court->in_area(robot.position), "robot pose",

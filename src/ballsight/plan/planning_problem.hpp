@@ -31,6 +31,9 @@ struct Capacity {
   Vec2 unload_m = Vec2::Zero();
 };
 
+inline constexpr std::size_t kMaxBalls = 2000;  // a court holds a few hundred
+inline constexpr double kMaxCoordinateM = 1e6;  // far beyond any field, far below overflow
+
 struct PlanningProblem {
   /// The pose of the robot's collector mouth (its front), where every distance is measured from.
   Pose2D robot;
@@ -43,9 +46,9 @@ struct PlanningProblem {
   std::optional<Capacity> capacity;
   std::optional<Vec2> return_to;  // an open route (no return) when absent
 
-  /// Throws InputError naming what is wrong: a NaN coordinate, two balls at one place, the robot
-  /// inside the net or outside the area, a capacity below 1. Balls outside the area are not an
-  /// error: the route reports them unreachable.
+  /// Throws InputError naming what is wrong: a NaN or huge coordinate, more than kMaxBalls balls,
+  /// two balls at one place, the robot inside the net or outside the area, a capacity below 1.
+  /// Balls outside the area are not an error: the route reports them unreachable.
   void validate() const;
   /// How far from a ball the collector mouth's centre line may pass and still pick it up.
   double sweep_radius_m() const;

@@ -17,6 +17,14 @@ std::pair<Vec2, double> closest_on_segment(const Vec2& a, const Vec2& b, const V
   return {a + t * d, t};
 }
 
+/// The net stands between a and b (each on its own side, level with the net's keep-out).
+bool across_the_net(const PlanningProblem& problem, const Vec2& a, const Vec2& b) {
+  if (!problem.court || !problem.court->net) return false;
+  const CourtNet& net = *problem.court->net;
+  const double y_end = net.half_length_m + net.post_clearance_m;
+  return (a.x() >= 0.0) != (b.x() >= 0.0) && std::abs(b.y()) < y_end && std::abs(a.y()) < y_end;
+}
+
 bool drivable(const PlanningProblem& problem, const Vec2& p) {
   return !problem.court || (problem.court->in_area(p) && !problem.court->in_net_zone(p));
 }
@@ -91,7 +99,8 @@ std::vector<RouteStop> swept_on_the_way(const PlanningProblem& problem, const Ve
     double along = 0.0;
     for (const Vec2& p : drive.points_m) {
       const auto [q, t] = closest_on_segment(a, p, b);
-      if (t > 0.0 && t < 1.0 && (q - b).norm() <= r) {  // passed abeam, inside the mouth
+      // Passed abeam, inside the mouth, and not with the net between.
+      if (t > 0.0 && t < 1.0 && (q - b).norm() <= r && !across_the_net(problem, q, b)) {
         swept.push_back({along + t * (p - a).norm(), {q, ball}});
         break;
       }

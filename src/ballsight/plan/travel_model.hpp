@@ -13,6 +13,7 @@
 // changes costs only at its ends.
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "ballsight/core/angle.hpp"
