@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   ballsight::app::add_court_calibrate_command(*court);
   ballsight::app::add_court_run_command(*court);
   ballsight::app::add_plan_command(app);
+  ballsight::app::add_serve_command(app);
 
   try {
     app.parse(argc, argv);

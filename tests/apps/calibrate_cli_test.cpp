@@ -135,7 +135,7 @@ TEST(CourtCalibrateCli, BadSitesFailWithOneLine) {
   std::string site = read_file(kExampleSite);
   write_file_atomic(temp / "site.yml", site + "colour:\n  ball: [1, 2, 3]\n");
   expect_one_line_error(run_cli({"court", "calibrate", "--site", (temp / "site.yml").string()}),
-                        "site.yml:60: unknown key 'colour'");
+                        "site.yml:65: unknown key 'colour'");
   expect_one_line_error(
       run_cli({"court", "calibrate", "--site", (temp / "site.yml").string(), "--attempts", "0"}),
       "attempts");

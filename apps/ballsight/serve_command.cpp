@@ -1,0 +1,123 @@
+// `ballsight serve --sim`: the navigation service (HTTP API v1, docs/robot-link.md) on the
+// simulated court: frames rendered, run through the court pipeline, planned and published.
+
+#include <signal.h>
+
+#include <atomic>
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/eval/simulated_service.hpp"
+#include "ballsight/net/http_server.hpp"
+#include "commands.hpp"
+#include "option_parsing.hpp"
+
+namespace ballsight::app {
+namespace {
+
+struct ServeArgs {
+  bool sim = false;
+  std::string listen = "127.0.0.1:8080";
+  std::string token_file = "ballsight-token";
+  std::string planner = "ballsight";
+  bool open_reads = false;
+  double duration_s = 0.0;  // 0: until SIGINT or SIGTERM
+  SimulatedServiceOptions service;
+};
+
+void run_serve(const ServeArgs& args) {
+  require(args.sim, "--sim", "needed: this version serves the simulated court");
+  require(args.duration_s >= 0.0, "--duration", "must not be negative");
+  const std::size_t colon = args.listen.rfind(':');
+  require(colon != std::string::npos, "--listen", "expected HOST:PORT, got '" + args.listen + "'");
+  const std::vector<double> port =
+      parse_numbers(args.listen.substr(colon + 1), 1, "--listen", "HOST:PORT");
+  require(port[0] >= 0 && port[0] <= 65535 && port[0] == std::floor(port[0]), "--listen",
+          "port must be an integer in [0, 65535]");
+  SimulatedServiceOptions service_options = args.service;
+  const std::optional<PlannerKind> kind = planner_from_name(args.planner);
+  require(kind && *kind != PlannerKind::exact, "--planner",
+          "expected priority, nearest or ballsight, got '" + args.planner + "'");
+  service_options.planner.kind = *kind;
+
+  // SIGINT and SIGTERM are taken by this thread alone (blocked before any thread starts).
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+
+  HttpServerOptions server_options;
+  server_options.address = args.listen.substr(0, colon);
+  server_options.port = static_cast<unsigned short>(port[0]);
+  server_options.token = read_or_create_token(args.token_file);
+  server_options.open_reads = args.open_reads;
+  SimulatedCourtService service(service_options);
+  NavigationHub hub;
+  const auto started = std::chrono::steady_clock::now();
+  std::unique_ptr<HttpServer> server;
+  ApiContext context{hub, service.camera_names()};
+  context.area = {
+      -0.5 * Vec2(service.site().court.area_length_m, service.site().court.area_width_m),
+      0.5 * Vec2(service.site().court.area_length_m, service.site().court.area_width_m)};
+  context.health = [&] {
+    nlohmann::json h = service.health();
+    h["uptime_s"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    h["connections"] = server ? server->connections() : 0;
+    h["acknowledged_seq"] = hub.acknowledged();
+    return h;
+  };
+  server = std::make_unique<HttpServer>(
+      server_options, [&](const ApiRequest& request) { return handle_api(request, context); });
+  std::cout << "ballsight serve: http://" << server_options.address << ":" << server->port()
+            << "/api/v1/ (token in " << args.token_file << ")" << std::endl;
+  std::atomic<bool> stop{false};
+  std::thread loop([&] { service.run(hub, stop); });
+  const timespec tick{0, 100'000'000};
+  while (true) {
+    if (sigtimedwait(&signals, nullptr, &tick) > 0) break;
+    if (args.duration_s > 0.0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >=
+            args.duration_s) {
+      break;
+    }
+  }
+  stop = true;
+  loop.join();
+  hub.close();  // long-polls answer now
+  server->stop();
+  std::cout << "ballsight serve: stopped after " << service.health()["updates_published"]
+            << " updates" << std::endl;
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& app) {
+  auto args = std::make_shared<ServeArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "serve",
+      "The navigation service: the court pipeline on every frame set, a route for every world "
+      "model, served over HTTP (API v1, docs/robot-link.md) to the robot and any client");
+  cmd->add_flag("--sim", args->sim, "Serve the built-in simulated court (rendered frames)");
+  add_seed_option(*cmd, args->service.seed, "Simulated court: seed of the rig and the scene");
+  cmd->add_option("--listen", args->listen, "HOST:PORT to listen on (port 0: a free one)")
+      ->capture_default_str();
+  cmd->add_option("--token-file", args->token_file,
+                  "Bearer token for writes; created (mode 0600) when missing")
+      ->capture_default_str();
+  cmd->add_flag("--open-reads", args->open_reads, "Reads from other hosts need no token");
+  cmd->add_option("--planner", args->planner, "priority, nearest or ballsight")
+      ->capture_default_str();
+  cmd->add_option("--rate", args->service.max_rate_hz, "Frame sets per second at most")
+      ->capture_default_str();
+  cmd->add_option("--duration", args->duration_s, "Stop after this many seconds (0: on a signal)")
+      ->capture_default_str();
+  cmd->callback([args] { run_serve(*args); });
+}
+
+}  // namespace ballsight::app

@@ -1,0 +1,261 @@
+#include "ballsight/net/api.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <set>
+
+#include "ballsight/core/angle.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/pipeline/route_json.hpp"
+#include "ballsight/pipeline/world_model_json.hpp"
+
+namespace ballsight {
+namespace {
+
+using nlohmann::json;
+
+/// A client's mistake: the status to answer with, what is wrong and where.
+struct ApiError {
+  int status;
+  std::string what;
+  std::string where;
+};
+
+ApiResponse ok(const json& body) {
+  return {200, body.dump()};
+}
+
+[[noreturn]] void fail(int status, const std::string& what, const std::string& where) {
+  throw ApiError{status, what, where};
+}
+
+json parse_body(const std::string& body) {
+  json j = json::parse(body, nullptr, false);
+  if (j.is_discarded()) fail(400, "malformed JSON", "body");
+  if (!j.is_object()) fail(400, "expected a JSON object", "body");
+  return j;
+}
+
+/// Rejects keys outside `allowed` (a typo must not pass silently).
+void only_keys(const json& object, const std::set<std::string>& allowed, const std::string& where) {
+  for (const auto& [key, value] : object.items()) {
+    if (!allowed.count(key)) fail(400, "unknown field '" + key + "'", where);
+  }
+}
+
+double number(const json& object, const char* key, const std::string& where) {
+  const auto it = object.find(key);
+  if (it == object.end()) fail(400, std::string("missing field '") + key + "'", where);
+  if (!it->is_number()) fail(400, "expected a number", where + "." + key);
+  const double v = it->get<double>();
+  if (!std::isfinite(v)) fail(400, "expected a finite number", where + "." + key);
+  return v;
+}
+
+Vec2 field_point(const json& object, const std::string& where, const FieldRect& area) {
+  if (!object.is_object()) fail(400, "expected an object {\"x_m\", \"y_m\"}", where);
+  only_keys(object, {"x_m", "y_m"}, where);
+  const Vec2 p(number(object, "x_m", where), number(object, "y_m", where));
+  if (!area.contains(p)) fail(422, "outside the field area", where);
+  return p;
+}
+
+/// The body {"balls": [{"x_m", "y_m"}, ...]}, every ball inside `area`.
+std::vector<Vec2> ball_list(const ApiRequest& request, const FieldRect& area) {
+  const json body = parse_body(request.body);
+  only_keys(body, {"balls"}, "body");
+  const auto list = body.find("balls");
+  if (list == body.end() || !list->is_array()) fail(400, "expected a list", "body.balls");
+  std::vector<Vec2> balls;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    balls.push_back(field_point((*list)[i], "body.balls[" + std::to_string(i) + "]", area));
+  }
+  return balls;
+}
+
+json point_json(const Vec2& p) {
+  return {{"x_m", p.x()}, {"y_m", p.y()}};
+}
+
+/// "?a=1&b=2" -> the value of `key` as an unsigned integer, or `fallback` when absent.
+std::uint64_t query_number(const std::string& query, const std::string& key,
+                           std::uint64_t fallback) {
+  std::size_t start = 0;
+  while (start < query.size()) {
+    const std::size_t end = std::min(query.find('&', start), query.size());
+    const std::string item = query.substr(start, end - start);
+    const std::size_t eq = item.find('=');
+    if (item.substr(0, eq) == key) {
+      const std::string text = eq == std::string::npos ? "" : item.substr(eq + 1);
+      std::uint64_t v = 0;
+      const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (ec != std::errc() || ptr != text.data() + text.size() || text.empty()) {
+        fail(400, "expected a non-negative integer, got '" + text + "'", "query " + key);
+      }
+      return v;
+    }
+    start = end + 1;
+  }
+  return fallback;
+}
+
+void require_write(const ApiRequest& request) {
+  if (!request.authorized) fail(401, "writes need 'Authorization: Bearer TOKEN'", "headers");
+}
+
+NavigationUpdate latest_or_fail(const NavigationHub& hub) {
+  std::optional<NavigationUpdate> u = hub.latest();
+  if (!u) fail(503, "no update published yet", "service");
+  return std::move(*u);
+}
+
+ApiResponse robot_route(const ApiRequest& request, const ApiContext& c) {
+  if (request.method == "PUT") {
+    require_write(request);
+    const json body = parse_body(request.body);
+    only_keys(body, {"x_m", "y_m", "heading_deg"}, "body");
+    const Vec2 p(number(body, "x_m", "body"), number(body, "y_m", "body"));
+    if (!c.area.contains(p)) fail(422, "outside the field area", "body");
+    c.hub.set_robot({p, rad_from_deg(number(body, "heading_deg", "body"))});
+    return ok({{"ok", true}});
+  }
+  std::optional<Pose2D> pose;
+  std::string source = "cameras";
+  std::int64_t time_ns = 0;
+  if (const auto external = c.hub.robot()) {
+    pose = external->value;
+    source = "external";
+    time_ns = external->set_ns;
+  }
+  const std::optional<NavigationUpdate> u = c.hub.latest();
+  if (u && u->world.robot && (!pose || u->capture_time_ns > time_ns)) {
+    pose = u->world.robot->pose;
+    source = "cameras";
+    time_ns = u->capture_time_ns;
+  }
+  if (!pose) fail(404, "no robot pose yet", "robot");
+  return ok({{"x_m", pose->position.x()},
+             {"y_m", pose->position.y()},
+             {"heading_deg", deg_from_rad(pose->heading_rad)},
+             {"source", source},
+             {"time_ns", time_ns},
+             {"seq", u ? u->seq : 0}});
+}
+
+ApiResponse balls_route(const ApiRequest& request, const ApiContext& c) {
+  if (request.method == "PUT") {
+    require_write(request);
+    c.hub.set_balls(ball_list(request, c.area));
+    return ok({{"ok", true}});
+  }
+  json out = json::array();
+  const std::optional<NavigationUpdate> u = c.hub.latest();
+  const auto external = c.hub.balls();
+  std::string source = "cameras";
+  if (external && (!u || external->set_ns > u->capture_time_ns)) {
+    for (const Vec2& b : external->value) out.push_back(point_json(b));
+    source = "external";
+  } else if (u) {
+    for (const FusedBall& b : u->world.balls) out.push_back(point_json(b.position_m));
+  }
+  return ok({{"balls", out}, {"source", source}, {"seq", u ? u->seq : 0}});
+}
+
+ApiResponse navigation_route(const std::string& query, const ApiContext& c) {
+  if (query.find("after") == std::string::npos) {
+    const std::optional<NavigationUpdate> u = c.hub.latest();
+    return ok({{"latest_seq", u ? u->seq : 0}, {"acknowledged_seq", c.hub.acknowledged()}});
+  }
+  const std::uint64_t after = query_number(query, "after", 0);
+  const auto wait = std::min<std::uint64_t>(query_number(query, "timeout_ms", 0),
+                                            static_cast<std::uint64_t>(c.max_wait.count()));
+  const std::optional<NavigationUpdate> u =
+      c.hub.wait_after(after, std::chrono::milliseconds(static_cast<std::int64_t>(wait)));
+  if (!u) return {204, ""};
+  return ok(navigation_json(*u, c.camera_names));
+}
+
+ApiResponse ack_route(const ApiRequest& request, const ApiContext& c) {
+  require_write(request);
+  const json body = parse_body(request.body);
+  only_keys(body, {"seq"}, "body");
+  const auto seq = body.find("seq");
+  if (seq == body.end() || !seq->is_number_unsigned()) {
+    fail(400, "expected a non-negative integer", "body.seq");
+  }
+  try {
+    c.hub.acknowledge(seq->get<std::uint64_t>());
+  } catch (const InputError& e) {
+    fail(409, e.what(), "body.seq");
+  }
+  return ok({{"acknowledged_seq", c.hub.acknowledged()}});
+}
+
+ApiResponse collected_route(const ApiRequest& request, const ApiContext& c) {
+  require_write(request);
+  const std::vector<Vec2> positions = ball_list(request, c.area);
+  c.hub.add_collected(positions);
+  return ok({{"accepted", positions.size()}});
+}
+
+struct Route_ {
+  const char* path;
+  std::set<std::string> methods;
+};
+
+}  // namespace
+
+nlohmann::json navigation_json(const NavigationUpdate& update,
+                               const std::vector<std::string>& camera_names) {
+  return {{"seq", update.seq},
+          {"capture_time_ns", update.capture_time_ns},
+          {"published_ns", update.published_ns},
+          {"world", world_model_json(update.world, camera_names)},
+          {"route", route_json(update.route)}};
+}
+
+ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
+  const std::size_t q = request.target.find('?');
+  const std::string path = request.target.substr(0, q);
+  const std::string query = q == std::string::npos ? "" : request.target.substr(q + 1);
+  static const std::vector<Route_> kRoutes{
+      {"/api/v1/robot", {"GET", "PUT"}}, {"/api/v1/balls", {"GET", "PUT"}},
+      {"/api/v1/navigation", {"GET"}},   {"/api/v1/navigation/ack", {"POST"}},
+      {"/api/v1/collected", {"POST"}},   {"/api/v1/world", {"GET"}},
+      {"/api/v1/route", {"GET"}},        {"/api/v1/health", {"GET"}},
+      {"/api/v1/openapi.json", {"GET"}},
+  };
+  try {
+    const auto route = std::find_if(kRoutes.begin(), kRoutes.end(),
+                                    [&](const Route_& r) { return path == r.path; });
+    if (route == kRoutes.end()) fail(404, "unknown route", path);
+    if (!route->methods.count(request.method)) {
+      fail(405, "method " + request.method + " not allowed", path);
+    }
+    if (path == "/api/v1/robot") return robot_route(request, c);
+    if (path == "/api/v1/balls") return balls_route(request, c);
+    if (path == "/api/v1/navigation") return navigation_route(query, c);
+    if (path == "/api/v1/navigation/ack") return ack_route(request, c);
+    if (path == "/api/v1/collected") return collected_route(request, c);
+    if (path == "/api/v1/world") {
+      const NavigationUpdate u = latest_or_fail(c.hub);
+      json j = world_model_json(u.world, c.camera_names);
+      j["seq"] = u.seq;
+      j["capture_time_ns"] = u.capture_time_ns;
+      return ok(j);
+    }
+    if (path == "/api/v1/route") {
+      const NavigationUpdate u = latest_or_fail(c.hub);
+      json j = route_json(u.route);
+      j["seq"] = u.seq;
+      return ok(j);
+    }
+    if (path == "/api/v1/health") return ok(c.health ? c.health() : json::object());
+    return ok(openapi_document());
+  } catch (const ApiError& e) {
+    return {e.status, json{{"error", e.what}, {"where", e.where}}.dump()};
+  }
+}
+
+}  // namespace ballsight

@@ -1,0 +1,77 @@
+#pragma once
+// The navigation service's state between the court pipeline (which publishes one update per
+// world model) and its clients (which read, long-poll, acknowledge, and report balls they picked
+// up or positions of their own). The report's four web methods and flag (tennis-ball report,
+// sections 7.9-7.10) become: the latest update with a sequence number, the sequence number the
+// robot acknowledged, and external robot pose and balls a client may set. Thread-safe.
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+#include "ballsight/plan/planning_problem.hpp"
+#include "ballsight/world/world_model.hpp"
+
+namespace ballsight {
+
+/// UTC now, nanoseconds since the epoch.
+std::int64_t utc_now_ns();
+
+/// One published value: what the cameras saw and where the robot should go.
+struct NavigationUpdate {
+  std::uint64_t seq = 0;             // 1, 2, ... in publishing order
+  std::int64_t capture_time_ns = 0;  // UTC, when the frames behind it were captured
+  std::int64_t published_ns = 0;     // UTC, when it was published
+  WorldModel world;
+  Route route;
+};
+
+/// A pose or ball list a client set (PUT), with when it was set.
+template <class T>
+struct External {
+  T value;
+  std::int64_t set_ns = 0;  // UTC
+};
+
+class NavigationHub {
+ public:
+  /// Publishes `update` (its seq and published time are assigned) and wakes every waiter.
+  std::uint64_t publish(NavigationUpdate update);
+  std::optional<NavigationUpdate> latest() const;
+  /// The latest update if newer than `after`, waiting up to `timeout` for one; nullopt when none
+  /// came (or the hub was closed).
+  std::optional<NavigationUpdate> wait_after(std::uint64_t after,
+                                             std::chrono::milliseconds timeout) const;
+
+  /// Marks update `seq` read; throws InputError when it was not published yet.
+  void acknowledge(std::uint64_t seq);
+  std::uint64_t acknowledged() const;
+
+  void set_robot(const Pose2D& pose);
+  std::optional<External<Pose2D>> robot() const;
+  void set_balls(std::vector<Vec2> balls);
+  std::optional<External<std::vector<Vec2>>> balls() const;
+  /// Balls the robot reports collected: the planner leaves them out from now on.
+  void add_collected(const std::vector<Vec2>& positions);
+  std::vector<Vec2> collected() const;
+
+  /// Wakes every waiter for good (the service stops).
+  void close();
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::condition_variable published_;
+  std::optional<NavigationUpdate> latest_;
+  std::uint64_t next_seq_ = 1;
+  std::uint64_t acknowledged_ = 0;
+  std::optional<External<Pose2D>> robot_;
+  std::optional<External<std::vector<Vec2>>> balls_;
+  std::vector<Vec2> collected_;
+  bool closed_ = false;
+};
+
+}  // namespace ballsight

@@ -1,0 +1,83 @@
+// The OpenAPI 3 document of the navigation service's API v1 (api.hpp). A test asks every route
+// listed here and checks it answers as listed (tests/net/api_test.cpp).
+
+#include "ballsight/net/api.hpp"
+
+namespace ballsight {
+
+const nlohmann::json& openapi_document() {
+  static const nlohmann::json document = nlohmann::json::parse(R"json({
+  "openapi": "3.0.3",
+  "info": {"title": "ballsight navigation service", "version": "1",
+           "description": "Where the court cameras see the balls and the robot, and the route the robot should drive (docs/robot-link.md). Writes need 'Authorization: Bearer TOKEN'. Errors: {\"error\", \"where\"}."},
+  "components": {
+    "securitySchemes": {"bearer": {"type": "http", "scheme": "bearer"}},
+    "schemas": {
+      "Error": {"type": "object", "required": ["error", "where"],
+                "properties": {"error": {"type": "string"}, "where": {"type": "string"}}},
+      "Point": {"type": "object", "required": ["x_m", "y_m"], "additionalProperties": false,
+                "properties": {"x_m": {"type": "number"}, "y_m": {"type": "number"}}},
+      "Pose": {"type": "object", "required": ["x_m", "y_m", "heading_deg"], "additionalProperties": false,
+               "properties": {"x_m": {"type": "number"}, "y_m": {"type": "number"}, "heading_deg": {"type": "number"}}},
+      "Balls": {"type": "object", "required": ["balls"], "additionalProperties": false,
+                "properties": {"balls": {"type": "array", "items": {"$ref": "#/components/schemas/Point"}}}},
+      "Ack": {"type": "object", "required": ["seq"], "additionalProperties": false,
+              "properties": {"seq": {"type": "integer", "minimum": 1}}},
+      "Update": {"type": "object", "required": ["seq", "capture_time_ns", "published_ns", "world", "route"],
+                 "properties": {"seq": {"type": "integer"}, "capture_time_ns": {"type": "integer"},
+                                "published_ns": {"type": "integer"}, "world": {"type": "object"},
+                                "route": {"type": "object"}}}
+    }
+  },
+  "paths": {
+    "/api/v1/robot": {
+      "get": {"summary": "The robot's pose: the cameras' or the last one a client set, whichever is newer",
+              "responses": {"200": {"description": "pose"}, "404": {"description": "no pose yet"}}},
+      "put": {"summary": "Set the robot's pose (an external localisation)", "security": [{"bearer": []}],
+              "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Pose"}}}},
+              "responses": {"200": {"description": "set"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "422": {"description": "outside the field"}}}
+    },
+    "/api/v1/balls": {
+      "get": {"summary": "The balls: the cameras' or the last list a client set, whichever is newer",
+              "responses": {"200": {"description": "balls"}}},
+      "put": {"summary": "Publish balls (an external detector)", "security": [{"bearer": []}],
+              "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Balls"}}}},
+              "responses": {"200": {"description": "set"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "422": {"description": "outside the field"}}}
+    },
+    "/api/v1/navigation": {
+      "get": {"summary": "Without 'after': the latest and the acknowledged sequence numbers. With 'after': long-poll for the first update newer than it",
+              "parameters": [{"name": "after", "in": "query", "schema": {"type": "integer", "minimum": 0}},
+                             {"name": "timeout_ms", "in": "query", "schema": {"type": "integer", "minimum": 0, "maximum": 30000}}],
+              "responses": {"200": {"description": "status, or the update", "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Update"}}}},
+                            "204": {"description": "no newer update within timeout_ms"}, "400": {"description": "bad query"}}}
+    },
+    "/api/v1/navigation/ack": {
+      "post": {"summary": "Mark update 'seq' read (the report's flag)", "security": [{"bearer": []}],
+               "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Ack"}}}},
+               "responses": {"200": {"description": "acknowledged"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "409": {"description": "not published"}}}
+    },
+    "/api/v1/collected": {
+      "post": {"summary": "Balls the robot picked up: they leave the plan at once", "security": [{"bearer": []}],
+               "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Balls"}}}},
+               "responses": {"200": {"description": "accepted"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "422": {"description": "outside the field"}}}
+    },
+    "/api/v1/world": {
+      "get": {"summary": "The latest world model: balls, collection sites, robot, cameras",
+              "responses": {"200": {"description": "world model"}, "503": {"description": "no update yet"}}}
+    },
+    "/api/v1/route": {
+      "get": {"summary": "The latest route: order, waypoints, length, time",
+              "responses": {"200": {"description": "route"}, "503": {"description": "no update yet"}}}
+    },
+    "/api/v1/health": {
+      "get": {"summary": "The service: cameras, rates, latency, clients", "responses": {"200": {"description": "health"}}}
+    },
+    "/api/v1/openapi.json": {
+      "get": {"summary": "This document", "responses": {"200": {"description": "OpenAPI 3"}}}
+    }
+  }
+})json");
+  return document;
+}
+
+}  // namespace ballsight

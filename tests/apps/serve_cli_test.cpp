@@ -1,0 +1,119 @@
+// `ballsight serve --sim` end to end: the service on a free loopback port, a client that
+// long-polls the route, reports the first ball collected and sees it leave the plan and the court.
+#include <gtest/gtest.h>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "apps/run_cli.hpp"
+#include "ballsight/core/file_io.hpp"
+#include "temp_dir.hpp"
+
+namespace ballsight::test {
+namespace {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+using nlohmann::json;
+
+struct Reply {
+  int status = 0;
+  json body;
+};
+
+Reply request(unsigned short port, http::verb verb, const std::string& target,
+              const std::string& body = "", const std::string& token = "") {
+  asio::io_context io;
+  asio::ip::tcp::socket socket(io);
+  socket.connect({asio::ip::make_address("127.0.0.1"), port});
+  http::request<http::string_body> req{verb, target, 11};
+  req.set(http::field::host, "127.0.0.1");
+  if (!token.empty()) req.set(http::field::authorization, "Bearer " + token);
+  req.body() = body;
+  req.prepare_payload();
+  http::write(socket, req);
+  beast::flat_buffer buffer;
+  http::response<http::string_body> res;
+  http::read(socket, buffer, res);
+  return {static_cast<int>(res.result_int()),
+          res.body().empty() ? json() : json::parse(res.body())};
+}
+
+TEST(ServeCli, SimulatedCourtRouteAndCollectedBall) {
+  const TempDir temp;
+  const std::string token_file = (temp / "token").string();
+  const std::string command = std::string("'") + BALLSIGHT_CLI +
+                              "' serve --sim --listen 127.0.0.1:0 --rate 5 --duration 12 "
+                              "--token-file '" +
+                              token_file + "'";
+  FILE* out = ::popen(command.c_str(), "r");
+  ASSERT_NE(out, nullptr);
+  char line[256] = {};
+  ASSERT_NE(std::fgets(line, sizeof line, out), nullptr);
+  const std::string first(line);
+  const std::size_t colon = first.find("127.0.0.1:");
+  ASSERT_NE(colon, std::string::npos) << first;
+  const auto port = static_cast<unsigned short>(std::stoi(first.substr(colon + 10)));
+  const std::string token = read_file(token_file).substr(0, 32);
+
+  const Reply u1 = request(port, http::verb::get, "/api/v1/navigation?after=0&timeout_ms=8000");
+  ASSERT_EQ(u1.status, 200);
+  const json& route = u1.body["route"];
+  const json& balls = u1.body["world"]["balls"];
+  ASSERT_GT(balls.size(), 10u);
+  ASSERT_FALSE(route["order"].empty());
+  EXPECT_GE(u1.body["published_ns"].get<std::int64_t>(),
+            u1.body["capture_time_ns"].get<std::int64_t>());
+  const json target = balls[route["order"][0].get<std::size_t>()];
+  const double tx = target["x_m"], ty = target["y_m"];
+
+  EXPECT_EQ(request(port, http::verb::post, "/api/v1/collected",
+                    json{{"balls", {{{"x_m", tx}, {"y_m", ty}}}}}.dump())
+                .status,
+            401);
+  ASSERT_EQ(request(port, http::verb::post, "/api/v1/collected",
+                    json{{"balls", {{{"x_m", tx}, {"y_m", ty}}}}}.dump(), token)
+                .status,
+            200);
+  // Two updates later the ball has left the court (the simulator) and the plan.
+  std::uint64_t seq = u1.body["seq"];
+  json latest;
+  for (int k = 0; k < 2; ++k) {
+    const Reply u = request(port, http::verb::get,
+                            "/api/v1/navigation?after=" + std::to_string(seq) + "&timeout_ms=8000");
+    ASSERT_EQ(u.status, 200);
+    seq = u.body["seq"];
+    latest = u.body;
+  }
+  for (const json& b : latest["world"]["balls"]) {
+    EXPECT_GT(std::hypot(b["x_m"].get<double>() - tx, b["y_m"].get<double>() - ty), 0.1);
+  }
+  for (const json& v : latest["route"]["visits_m"]) {
+    EXPECT_GT(std::hypot(v[0].get<double>() - tx, v[1].get<double>() - ty), 0.1);
+  }
+  EXPECT_EQ(
+      request(port, http::verb::post, "/api/v1/navigation/ack", json{{"seq", seq}}.dump(), token)
+          .status,
+      200);
+  EXPECT_EQ(request(port, http::verb::get, "/api/v1/navigation").body["acknowledged_seq"], seq);
+  const Reply health = request(port, http::verb::get, "/api/v1/health");
+  EXPECT_GT(health.body["updates_published"].get<int>(), 2);
+  std::string rest;
+  while (std::fgets(line, sizeof line, out) != nullptr) rest += line;
+  EXPECT_EQ(::pclose(out), 0);
+  EXPECT_NE(rest.find("stopped after"), std::string::npos) << rest;
+}
+
+TEST(ServeCli, BadOptionsFailWithOneLine) {
+  expect_one_line_error(run_cli({"serve"}), "--sim");
+  expect_one_line_error(run_cli({"serve", "--sim", "--listen", "127.0.0.1"}), "--listen");
+  expect_one_line_error(run_cli({"serve", "--sim", "--listen", "nowhere:80"}), "--listen");
+  expect_one_line_error(run_cli({"serve", "--sim", "--planner", "exact"}), "--planner");
+}
+
+}  // namespace
+}  // namespace ballsight::test

@@ -1,0 +1,140 @@
+#include "ballsight/net/api.hpp"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+namespace ballsight {
+namespace {
+
+using nlohmann::json;
+
+struct Fixture {
+  NavigationHub hub;
+  ApiContext context{hub, {"ne", "se", "sw", "nw"}};
+
+  ApiResponse call(const std::string& method, const std::string& target,
+                   const std::string& body = "", bool authorized = true) {
+    return handle_api({method, target, body, authorized}, context);
+  }
+};
+
+NavigationUpdate update_with_robot(double x) {
+  NavigationUpdate u;
+  u.capture_time_ns = utc_now_ns();
+  RobotPoseEstimate robot;
+  robot.pose = {Vec2(x, 1.0), 0.5};
+  u.world.robot = robot;
+  u.world.balls.push_back({Vec2(3, 4), Eigen::Matrix2d::Zero(), {0}});
+  u.route.planner = "ballsight";
+  u.route.order = {0};
+  return u;
+}
+
+void expect_error(const ApiResponse& r, int status, const std::string& where) {
+  EXPECT_EQ(r.status, status) << r.body;
+  const json j = json::parse(r.body, nullptr, false);
+  ASSERT_TRUE(j.is_object()) << r.body;
+  EXPECT_TRUE(j.contains("error")) << r.body;
+  EXPECT_EQ(j.value("where", ""), where) << r.body;
+}
+
+TEST(Api, TheReportsFourMethodsAndItsFlag) {
+  Fixture f;
+  expect_error(f.call("GET", "/api/v1/robot"), 404, "robot");
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation").body)["latest_seq"], 0);
+  f.hub.publish(update_with_robot(2.0));
+  // Get robot location, get balls (the cameras').
+  const json robot = json::parse(f.call("GET", "/api/v1/robot").body);
+  EXPECT_EQ(robot["x_m"], 2.0);
+  EXPECT_EQ(robot["source"], "cameras");
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/balls").body)["balls"][0]["y_m"], 4.0);
+  // Set robot location and balls (an external localisation or detector): newer, so they win.
+  EXPECT_EQ(f.call("PUT", "/api/v1/robot", R"({"x_m": -3, "y_m": 2, "heading_deg": 90})").status,
+            200);
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/robot").body)["source"], "external");
+  EXPECT_EQ(f.call("PUT", "/api/v1/balls", R"({"balls": [{"x_m": 1, "y_m": 1}]})").status, 200);
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/balls").body)["balls"].size(), 1u);
+  // The flag: the robot acknowledges update 1.
+  EXPECT_EQ(f.call("POST", "/api/v1/navigation/ack", R"({"seq": 1})").status, 200);
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation").body)["acknowledged_seq"], 1);
+  expect_error(f.call("POST", "/api/v1/navigation/ack", R"({"seq": 7})"), 409, "body.seq");
+  // Collected balls are kept for the planner.
+  EXPECT_EQ(f.call("POST", "/api/v1/collected", R"({"balls": [{"x_m": 3, "y_m": 4}]})").status,
+            200);
+  EXPECT_EQ(f.hub.collected(), std::vector<Vec2>{Vec2(3, 4)});
+}
+
+TEST(Api, LongPollAnswersTheFirstNewerUpdateOr204) {
+  Fixture f;
+  f.hub.publish(update_with_robot(1.0));
+  const json now = json::parse(f.call("GET", "/api/v1/navigation?after=0&timeout_ms=10").body);
+  EXPECT_EQ(now["seq"], 1);
+  EXPECT_GT(now["published_ns"].get<std::int64_t>(), 0);
+  EXPECT_EQ(now["route"]["order"], json({0}));
+  EXPECT_EQ(f.call("GET", "/api/v1/navigation?after=1&timeout_ms=20").status, 204);
+  std::thread later([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    f.hub.publish(update_with_robot(2.0));
+  });
+  const auto started = std::chrono::steady_clock::now();
+  const ApiResponse r = f.call("GET", "/api/v1/navigation?after=1&timeout_ms=5000");
+  const double waited =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  later.join();
+  EXPECT_EQ(json::parse(r.body)["seq"], 2);
+  EXPECT_LT(waited, 2.0);  // woken by the publish, not by the timeout
+}
+
+TEST(Api, BadRequestsGetAnErrorNamingWhere) {
+  Fixture f;
+  expect_error(f.call("GET", "/api/v2/robot"), 404, "/api/v2/robot");
+  expect_error(f.call("DELETE", "/api/v1/robot"), 405, "/api/v1/robot");
+  expect_error(f.call("PUT", "/api/v1/robot", R"({"x_m": 1})", false), 401, "headers");
+  expect_error(f.call("PUT", "/api/v1/robot", "{oops"), 400, "body");
+  expect_error(f.call("PUT", "/api/v1/robot", "[1, 2]"), 400, "body");
+  expect_error(f.call("PUT", "/api/v1/robot", R"({"x_m": 1, "y_m": 2})"), 400, "body");
+  expect_error(f.call("PUT", "/api/v1/robot", R"({"x_m": "1", "y_m": 2, "heading_deg": 0})"), 400,
+               "body.x_m");
+  expect_error(f.call("PUT", "/api/v1/robot", R"({"x_m": 1, "y_m": 2, "heading_deg": 0, "z": 1})"),
+               400, "body");
+  expect_error(f.call("PUT", "/api/v1/robot", R"({"x_m": 100, "y_m": 2, "heading_deg": 0})"), 422,
+               "body");
+  expect_error(f.call("PUT", "/api/v1/balls", R"({"balls": [{"x_m": 1, "y_m": NaN}]})"), 400,
+               "body");  // JSON has no NaN: malformed
+  expect_error(f.call("PUT", "/api/v1/balls", R"({"balls": [{"x_m": 1}]})"), 400, "body.balls[0]");
+  expect_error(f.call("POST", "/api/v1/navigation/ack", R"({"seq": -1})"), 400, "body.seq");
+  expect_error(f.call("GET", "/api/v1/navigation?after=x"), 400, "query after");
+  expect_error(f.call("GET", "/api/v1/world"), 503, "service");
+  expect_error(f.call("GET", "/api/v1/route"), 503, "service");
+}
+
+TEST(Api, TheOpenApiDocumentListsExactlyTheRoutesThatAnswer) {
+  Fixture f;
+  f.hub.publish(update_with_robot(1.0));
+  const json& doc = openapi_document();
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/openapi.json").body), doc);
+  int operations = 0;
+  for (const auto& [path, item] : doc["paths"].items()) {
+    for (const auto& [method, operation] : item.items()) {
+      std::string upper = method;
+      for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+      const ApiResponse r = f.call(upper, path, "{}");
+      const std::string status = std::to_string(r.status);
+      EXPECT_TRUE(operation["responses"].contains(status))
+          << upper << " " << path << " answered " << status << " " << r.body;
+      ++operations;
+    }
+    // Every other method is refused.
+    for (const char* method : {"GET", "PUT", "POST", "DELETE", "PATCH"}) {
+      std::string lower = method;
+      for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      if (item.contains(lower)) continue;
+      EXPECT_EQ(f.call(method, path).status, 405) << method << " " << path;
+    }
+  }
+  EXPECT_EQ(operations, 11);
+}
+
+}  // namespace
+}  // namespace ballsight

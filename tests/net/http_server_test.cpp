@@ -1,0 +1,155 @@
+// The navigation service over a real socket: a Beast client on 127.0.0.1, the server on a port
+// it picks, stopped at the end of every test.
+#include "ballsight/net/http_server.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <boost/asio/connect.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <filesystem>
+#include <thread>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+namespace {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+using tcp = asio::ip::tcp;
+
+constexpr const char* kToken = "0123456789abcdef0123";
+
+struct Service {
+  NavigationHub hub;
+  ApiContext context{hub, {"ne"}};
+  HttpServer server;
+
+  explicit Service(HttpServerOptions options = with_token())
+      : server(options, [this](const ApiRequest& r) { return handle_api(r, context); }) {}
+  ~Service() {
+    hub.close();
+    server.stop();
+  }
+  static HttpServerOptions with_token() {
+    HttpServerOptions o;
+    o.port = 0;
+    o.token = kToken;
+    return o;
+  }
+};
+
+/// One connection to the service.
+struct Client {
+  asio::io_context io;
+  tcp::socket socket{io};
+  beast::flat_buffer buffer;
+
+  explicit Client(unsigned short port) {
+    socket.connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), port));
+  }
+  http::response<http::string_body> send(http::verb verb, const std::string& target,
+                                         const std::string& body = "", bool token = false) {
+    http::request<http::string_body> req{verb, target, 11};
+    req.set(http::field::host, "127.0.0.1");
+    if (token) req.set(http::field::authorization, std::string("Bearer ") + kToken);
+    req.body() = body;
+    req.prepare_payload();
+    http::write(socket, req);
+    http::response<http::string_body> res;
+    http::read(socket, buffer, res);
+    return res;
+  }
+};
+
+TEST(HttpServer, RoutesTokenAndKeepAlive) {
+  Service service;
+  Client client(service.server.port());
+  EXPECT_EQ(client.send(http::verb::get, "/api/v1/health").result_int(), 200);
+  const auto no_token =
+      client.send(http::verb::put, "/api/v1/robot", R"({"x_m": 1, "y_m": 2, "heading_deg": 0})");
+  EXPECT_EQ(no_token.result_int(), 401);
+  EXPECT_NE(no_token.body().find("\"where\":\"headers\""), std::string::npos) << no_token.body();
+  // The same connection goes on after a refused request.
+  EXPECT_EQ(
+      client
+          .send(http::verb::put, "/api/v1/robot", R"({"x_m": 1, "y_m": 2, "heading_deg": 0})", true)
+          .result_int(),
+      200);
+  EXPECT_EQ(client.send(http::verb::get, "/api/v1/robot").result_int(), 200);
+  EXPECT_EQ(client.send(http::verb::get, "/nothing").result_int(), 404);
+  EXPECT_EQ(service.server.connections(), 1);
+}
+
+TEST(HttpServer, LongPollWakesOnPublish) {
+  Service service;
+  std::thread publisher([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    service.hub.publish({});
+  });
+  Client client(service.server.port());
+  const auto res = client.send(http::verb::get, "/api/v1/navigation?after=0&timeout_ms=5000");
+  publisher.join();
+  EXPECT_EQ(res.result_int(), 200);
+  EXPECT_NE(res.body().find("\"seq\":1"), std::string::npos) << res.body();
+  EXPECT_EQ(client.send(http::verb::get, "/api/v1/navigation?after=1&timeout_ms=50").result_int(),
+            204);
+}
+
+TEST(HttpServer, OversizedAndMalformedRequestsAreRefused) {
+  Service service;
+  {
+    Client client(service.server.port());
+    const std::string huge(70 * 1024, 'x');
+    EXPECT_EQ(client.send(http::verb::put, "/api/v1/balls", huge, true).result_int(), 413);
+  }
+  {
+    Client client(service.server.port());
+    asio::write(client.socket, asio::buffer(std::string("NOT HTTP\r\n\r\n")));
+    http::response<http::string_body> res;
+    http::read(client.socket, client.buffer, res);
+    EXPECT_EQ(res.result_int(), 400);
+  }
+  // The service is still there.
+  Client client(service.server.port());
+  EXPECT_EQ(client.send(http::verb::get, "/api/v1/health").result_int(), 200);
+}
+
+TEST(HttpServer, TooManyConnectionsGet503AndStopIsPrompt) {
+  HttpServerOptions options = Service::with_token();
+  options.max_connections = 2;
+  auto service = std::make_unique<Service>(options);
+  Client a(service->server.port()), b(service->server.port());
+  EXPECT_EQ(a.send(http::verb::get, "/api/v1/health").result_int(), 200);
+  EXPECT_EQ(b.send(http::verb::get, "/api/v1/health").result_int(), 200);
+  Client c(service->server.port());
+  http::response<http::string_body> res;
+  http::read(c.socket, c.buffer, res);
+  EXPECT_EQ(res.result_int(), 503);
+  const auto started = std::chrono::steady_clock::now();
+  service.reset();  // two idle keep-alive connections open
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 2.0);
+}
+
+TEST(HttpServer, TokenFileIsCreatedPrivateAndReadBack) {
+  const auto file = std::filesystem::temp_directory_path() / "ballsight_http_token_test";
+  std::filesystem::remove(file);
+  const std::string token = read_or_create_token(file);
+  EXPECT_EQ(token.size(), 32u);
+  struct stat st {};
+  ASSERT_EQ(::stat(file.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0600u);
+  EXPECT_EQ(read_or_create_token(file), token);
+  std::filesystem::remove(file);
+  HttpServerOptions bad = Service::with_token();
+  bad.address = "not-an-address";
+  const HttpServer::Handler nothing = [](const ApiRequest&) { return ApiResponse{}; };
+  EXPECT_THROW({ HttpServer server(bad, nothing); }, InputError);
+}
+
+}  // namespace
+}  // namespace ballsight
