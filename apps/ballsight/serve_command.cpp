@@ -73,7 +73,9 @@ void run_serve(const ServeArgs& args) {
     return h;
   };
   server = std::make_unique<HttpServer>(
-      server_options, [&](const ApiRequest& request) { return handle_api(request, context); });
+      server_options, [&](const ApiRequest& request) { return handle_api(request, context); },
+      [&](const ApiRequest& request, const std::function<bool(const std::string&)>& send,
+          const std::atomic<bool>& stopping) { stream_updates(request, context, send, stopping); });
   std::cout << "ballsight serve: http://" << server_options.address << ":" << server->port()
             << "/api/v1/ (token in " << args.token_file << ")" << std::endl;
   std::atomic<bool> stop{false};

@@ -86,6 +86,14 @@ TEST(Api, LongPollAnswersTheFirstNewerUpdateOr204) {
   EXPECT_LT(waited, 2.0);  // woken by the publish, not by the timeout
 }
 
+TEST(Api, LongPollGivesTheFirstUpdateNewerThanAfterNotTheLatest) {
+  Fixture f;
+  for (int k = 0; k < 3; ++k) f.hub.publish(update_with_robot(k));
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=0&timeout_ms=0").body)["seq"], 1);
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=2&timeout_ms=0").body)["seq"], 3);
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation").body)["latest_seq"], 3);
+}
+
 TEST(Api, BadRequestsGetAnErrorNamingWhere) {
   Fixture f;
   expect_error(f.call("GET", "/api/v2/robot"), 404, "/api/v2/robot");
@@ -133,7 +141,7 @@ TEST(Api, TheOpenApiDocumentListsExactlyTheRoutesThatAnswer) {
       EXPECT_EQ(f.call(method, path).status, 405) << method << " " << path;
     }
   }
-  EXPECT_EQ(operations, 11);
+  EXPECT_EQ(operations, 12);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
 #include <filesystem>
 #include <thread>
 
@@ -20,6 +21,7 @@ namespace {
 namespace asio = boost::asio;
 namespace beast = boost::beast;
 namespace http = beast::http;
+namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 
 constexpr const char* kToken = "0123456789abcdef0123";
@@ -30,7 +32,12 @@ struct Service {
   HttpServer server;
 
   explicit Service(HttpServerOptions options = with_token())
-      : server(options, [this](const ApiRequest& r) { return handle_api(r, context); }) {}
+      : server(
+            options, [this](const ApiRequest& r) { return handle_api(r, context); },
+            [this](const ApiRequest& r, const std::function<bool(const std::string&)>& send,
+                   const std::atomic<bool>& stopping) {
+              stream_updates(r, context, send, stopping);
+            }) {}
   ~Service() {
     hub.close();
     server.stop();
@@ -98,6 +105,44 @@ TEST(HttpServer, LongPollWakesOnPublish) {
   EXPECT_NE(res.body().find("\"seq\":1"), std::string::npos) << res.body();
   EXPECT_EQ(client.send(http::verb::get, "/api/v1/navigation?after=1&timeout_ms=50").result_int(),
             204);
+}
+
+TEST(HttpServer, StreamSendsEveryUpdateInOrderAndSlowReadersSkip) {
+  Service service;
+  asio::io_context io;
+  websocket::stream<tcp::socket> ws(io);
+  ws.next_layer().connect(
+      tcp::endpoint(asio::ip::make_address("127.0.0.1"), service.server.port()));
+  ws.handshake("127.0.0.1", "/api/v1/stream?after=0");
+  std::thread publisher([&] {
+    for (int k = 0; k < 20; ++k) {
+      service.hub.publish({});
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  });
+  for (std::uint64_t expected = 1; expected <= 20; ++expected) {
+    beast::flat_buffer buffer;
+    ws.read(buffer);
+    const auto message = nlohmann::json::parse(beast::buffers_to_string(buffer.data()));
+    EXPECT_EQ(message["topic"], "navigation");
+    EXPECT_EQ(message["dropped"], 0);
+    EXPECT_EQ(message["update"]["seq"], expected);
+  }
+  publisher.join();
+  // A reader far behind starts at the oldest update kept and is told how many it missed.
+  for (std::size_t k = 0; k < NavigationHub::kKept + 10; ++k) service.hub.publish({});
+  websocket::stream<tcp::socket> late(io);
+  late.next_layer().connect(
+      tcp::endpoint(asio::ip::make_address("127.0.0.1"), service.server.port()));
+  late.handshake("127.0.0.1", "/api/v1/stream?after=20");
+  beast::flat_buffer buffer;
+  late.read(buffer);
+  const auto first = nlohmann::json::parse(beast::buffers_to_string(buffer.data()));
+  EXPECT_EQ(first["update"]["seq"], 20 + 10 + 1);
+  EXPECT_EQ(first["dropped"], 10);
+  // A plain GET of the stream is told to upgrade.
+  Client client(service.server.port());
+  EXPECT_EQ(client.send(http::verb::get, "/api/v1/stream").result_int(), 426);
 }
 
 TEST(HttpServer, OversizedAndMalformedRequestsAreRefused) {

@@ -206,6 +206,38 @@ struct Route_ {
 
 }  // namespace
 
+bool is_stream_target(const std::string& target) {
+  return target.substr(0, target.find('?')) == "/api/v1/stream";
+}
+
+std::optional<ApiResponse> stream_refusal(const ApiRequest& request) {
+  const std::size_t q = request.target.find('?');
+  try {
+    if (q != std::string::npos) query_number(request.target.substr(q + 1), "after", 0);
+  } catch (const ApiError& e) {
+    return ApiResponse{e.status, json{{"error", e.what}, {"where", e.where}}.dump()};
+  }
+  return std::nullopt;
+}
+
+void stream_updates(const ApiRequest& request, const ApiContext& c,
+                    const std::function<bool(const std::string&)>& send,
+                    const std::atomic<bool>& stopping) {
+  const std::size_t q = request.target.find('?');
+  std::uint64_t after =
+      q == std::string::npos ? 0 : query_number(request.target.substr(q + 1), "after", 0);
+  while (!stopping) {
+    const std::optional<NavigationUpdate> u =
+        c.hub.wait_after(after, std::chrono::milliseconds(200));
+    if (!u) continue;
+    const json message{{"topic", "navigation"},
+                       {"dropped", u->seq - after - 1},
+                       {"update", navigation_json(*u, c.camera_names)}};
+    after = u->seq;
+    if (!send(message.dump())) return;
+  }
+}
+
 nlohmann::json navigation_json(const NavigationUpdate& update,
                                const std::vector<std::string>& camera_names) {
   return {{"seq", update.seq},
@@ -224,7 +256,7 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       {"/api/v1/navigation", {"GET"}},   {"/api/v1/navigation/ack", {"POST"}},
       {"/api/v1/collected", {"POST"}},   {"/api/v1/world", {"GET"}},
       {"/api/v1/route", {"GET"}},        {"/api/v1/health", {"GET"}},
-      {"/api/v1/openapi.json", {"GET"}},
+      {"/api/v1/openapi.json", {"GET"}}, {"/api/v1/stream", {"GET"}},
   };
   try {
     const auto route = std::find_if(kRoutes.begin(), kRoutes.end(),
@@ -252,6 +284,7 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       return ok(j);
     }
     if (path == "/api/v1/health") return ok(c.health ? c.health() : json::object());
+    if (path == "/api/v1/stream") fail(426, "a WebSocket upgrade is needed", "headers");
     return ok(openapi_document());
   } catch (const ApiError& e) {
     return {e.status, json{{"error", e.what}, {"where", e.where}}.dump()};

@@ -4,9 +4,11 @@
 // (http_server.hpp) parses the wire and says whether the request carried the token; everything a
 // client sends is checked here, and every bad request gets a 4xx with {"error", "where"}.
 
+#include <atomic>
 #include <chrono>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,17 @@ struct ApiContext {
 
 /// Answers one request. Never throws for anything a client sends.
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& context);
+
+/// The WebSocket stream at /api/v1/stream[?after=SEQ]: every navigation update newer than SEQ in
+/// order, one text message each, {"topic": "navigation", "dropped": N, "update": {...}} (N: updates
+/// skipped because this client fell more than NavigationHub::kKept behind), until `send` fails
+/// (the client left) or `stopping` is set.
+void stream_updates(const ApiRequest& request, const ApiContext& context,
+                    const std::function<bool(const std::string&)>& send,
+                    const std::atomic<bool>& stopping);
+/// Whether `target` is the stream, and why it must be refused before the upgrade (nullopt: fine).
+bool is_stream_target(const std::string& target);
+std::optional<ApiResponse> stream_refusal(const ApiRequest& request);
 
 /// The OpenAPI 3 document of API v1.
 const nlohmann::json& openapi_document();

@@ -7,6 +7,7 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
 #include <fstream>
 #include <list>
 #include <mutex>
@@ -22,6 +23,7 @@ namespace {
 namespace asio = boost::asio;
 namespace beast = boost::beast;
 namespace http = beast::http;
+namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 
 /// Equal strings, compared in time that does not depend on where they differ.
@@ -62,6 +64,7 @@ void HttpServerOptions::validate() const {
 struct HttpServer::Impl {
   HttpServerOptions options;
   Handler handler;
+  StreamHandler stream;
   asio::io_context io;
   tcp::acceptor acceptor{io};
   std::thread accept_thread;
@@ -77,6 +80,8 @@ struct HttpServer::Impl {
 
   void accept_loop();
   void serve(tcp::socket& socket);
+  void serve_stream(tcp::socket& socket, const http::request<http::string_body>& req,
+                    const ApiRequest& request);
   void reap();
 };
 
@@ -124,10 +129,29 @@ void HttpServer::Impl::accept_loop() {
   }
 }
 
+void HttpServer::Impl::serve_stream(tcp::socket& socket,
+                                    const http::request<http::string_body>& req,
+                                    const ApiRequest& request) {
+  websocket::stream<tcp::socket&> ws(socket);
+  beast::error_code ec;
+  ws.accept(req, ec);
+  if (ec) return;
+  ws.text(true);
+  stream(
+      request,
+      [&](const std::string& message) {
+        ws.write(asio::buffer(message), ec);
+        return !ec;
+      },
+      stopping);
+  ws.close(websocket::close_code::going_away, ec);
+}
+
 void HttpServer::Impl::serve(tcp::socket& socket) {
-  // Reads block at most the idle timeout (a silent client is let go).
+  // Reads and writes block at most the idle timeout (a silent or stuck client is let go).
   const timeval tv{static_cast<time_t>(options.idle_timeout.count()), 0};
   ::setsockopt(socket.native_handle(), SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+  ::setsockopt(socket.native_handle(), SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
   beast::error_code ec;
   const tcp::endpoint remote = socket.remote_endpoint(ec);
   const bool local = !ec && remote.address().is_loopback();
@@ -161,6 +185,15 @@ void HttpServer::Impl::serve(tcp::socket& socket) {
     ApiResponse response;
     if (!local && !options.open_reads && !request.authorized) {
       response = {401, error_body("requests from other hosts need the token", "headers")};
+    } else if (websocket::is_upgrade(req)) {
+      if (!stream || !is_stream_target(request.target)) {
+        response = {404, error_body("no WebSocket here", request.target)};
+      } else if (const std::optional<ApiResponse> refusal = stream_refusal(request)) {
+        response = *refusal;
+      } else {
+        serve_stream(socket, req, request);
+        return;
+      }
     } else {
       response = handler(request);
     }
@@ -172,11 +205,12 @@ void HttpServer::Impl::serve(tcp::socket& socket) {
   }
 }
 
-HttpServer::HttpServer(const HttpServerOptions& options, Handler handler)
+HttpServer::HttpServer(const HttpServerOptions& options, Handler handler, StreamHandler stream)
     : impl_(std::make_unique<Impl>()) {
   options.validate();
   impl_->options = options;
   impl_->handler = std::move(handler);
+  impl_->stream = std::move(stream);
   beast::error_code ec;
   const auto address = asio::ip::make_address(options.address, ec);
   require(!ec, "--listen", "'" + options.address + "' is not an IP address");

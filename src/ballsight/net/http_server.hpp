@@ -2,9 +2,11 @@
 // The navigation service's HTTP/1.1 server (Boost.Beast, kept inside http_server.cpp: it compiles
 // slowly). One thread accepts; each connection is served by a thread of its own, at most
 // `max_connections` at once (a long-poll waits in its connection's thread, so it never holds up
-// another client). Requests are bounded (body, header, idle time); the bearer token decides
-// whether a request may write, and whether a client on another host may read.
+// another client, and a WebSocket client of the stream is sent every update from its own thread,
+// so a slow one holds up nobody). Requests are bounded (body, header, idle time); the bearer token
+// decides whether a request may write, and whether a client on another host may read.
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <filesystem>
@@ -33,9 +35,15 @@ struct HttpServerOptions {
 class HttpServer {
  public:
   using Handler = std::function<ApiResponse(const ApiRequest&)>;
+  /// Serves one WebSocket client of the stream: sends text messages through `send` (false once
+  /// the client is gone) until it returns; `stopping` is set when the server stops.
+  using StreamHandler =
+      std::function<void(const ApiRequest&, const std::function<bool(const std::string&)>& send,
+                         const std::atomic<bool>& stopping)>;
 
-  /// Binds and starts serving; throws InputError when the address cannot be bound.
-  HttpServer(const HttpServerOptions& options, Handler handler);
+  /// Binds and starts serving; throws InputError when the address cannot be bound. WebSocket
+  /// upgrades to the stream (api.hpp) go to `stream`.
+  HttpServer(const HttpServerOptions& options, Handler handler, StreamHandler stream = {});
   ~HttpServer();
   HttpServer(const HttpServer&) = delete;
   HttpServer& operator=(const HttpServer&) = delete;

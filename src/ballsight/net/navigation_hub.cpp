@@ -17,7 +17,8 @@ std::uint64_t NavigationHub::publish(NavigationUpdate update) {
     seq = next_seq_++;
     update.seq = seq;
     update.published_ns = utc_now_ns();
-    latest_ = std::move(update);
+    recent_.push_back(std::move(update));
+    if (recent_.size() > kKept) recent_.pop_front();
   }
   published_.notify_all();
   return seq;
@@ -25,22 +26,27 @@ std::uint64_t NavigationHub::publish(NavigationUpdate update) {
 
 std::optional<NavigationUpdate> NavigationHub::latest() const {
   const std::lock_guard lock(mutex_);
-  return latest_;
+  if (recent_.empty()) return std::nullopt;
+  return recent_.back();
 }
 
 std::optional<NavigationUpdate> NavigationHub::wait_after(std::uint64_t after,
                                                           std::chrono::milliseconds timeout) const {
   std::unique_lock lock(mutex_);
-  published_.wait_for(lock, timeout, [&] { return closed_ || (latest_ && latest_->seq > after); });
-  if (latest_ && latest_->seq > after) return latest_;
-  return std::nullopt;
+  const auto newer = [&] { return !recent_.empty() && recent_.back().seq > after; };
+  published_.wait_for(lock, timeout, [&] { return closed_ || newer(); });
+  if (!newer()) return std::nullopt;
+  // Sequence numbers are consecutive: the first newer one is at a known place.
+  const std::uint64_t first = recent_.front().seq;
+  return recent_[static_cast<std::size_t>(after + 1 > first ? after + 1 - first : 0)];
 }
 
 void NavigationHub::acknowledge(std::uint64_t seq) {
   const std::lock_guard lock(mutex_);
-  require(latest_ && seq >= 1 && seq <= latest_->seq, "seq",
-          "update " + std::to_string(seq) + " was not published (latest " +
-              std::to_string(latest_ ? latest_->seq : 0) + ")");
+  const std::uint64_t newest = recent_.empty() ? 0 : recent_.back().seq;
+  require(seq >= 1 && seq <= newest, "seq",
+          "update " + std::to_string(seq) + " was not published (latest " + std::to_string(newest) +
+              ")");
   acknowledged_ = std::max(acknowledged_, seq);
 }
 

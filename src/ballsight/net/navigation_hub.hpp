@@ -8,6 +8,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <deque>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -42,10 +43,14 @@ class NavigationHub {
   /// Publishes `update` (its seq and published time are assigned) and wakes every waiter.
   std::uint64_t publish(NavigationUpdate update);
   std::optional<NavigationUpdate> latest() const;
-  /// The latest update if newer than `after`, waiting up to `timeout` for one; nullopt when none
-  /// came (or the hub was closed).
+  /// The first update newer than `after` (the oldest one kept, when `after` is older than
+  /// that), waiting up to `timeout` for one; nullopt when none came (or the hub was closed).
   std::optional<NavigationUpdate> wait_after(std::uint64_t after,
                                              std::chrono::milliseconds timeout) const;
+
+  /// Updates kept for clients that read behind the newest (a reader further behind skips to the
+  /// oldest kept; the gap in seq says how many it missed).
+  static constexpr std::size_t kKept = 64;
 
   /// Marks update `seq` read; throws InputError when it was not published yet.
   void acknowledge(std::uint64_t seq);
@@ -65,7 +70,7 @@ class NavigationHub {
  private:
   mutable std::mutex mutex_;
   mutable std::condition_variable published_;
-  std::optional<NavigationUpdate> latest_;
+  std::deque<NavigationUpdate> recent_;  // the last kKept updates, oldest first
   std::uint64_t next_seq_ = 1;
   std::uint64_t acknowledged_ = 0;
   std::optional<External<Pose2D>> robot_;

@@ -72,6 +72,12 @@ const nlohmann::json& openapi_document() {
     "/api/v1/health": {
       "get": {"summary": "The service: cameras, rates, latency, clients", "responses": {"200": {"description": "health"}}}
     },
+    "/api/v1/stream": {
+      "get": {"summary": "WebSocket: every navigation update newer than 'after', in order, as {\"topic\": \"navigation\", \"dropped\", \"update\"}",
+              "parameters": [{"name": "after", "in": "query", "schema": {"type": "integer", "minimum": 0}}],
+              "responses": {"101": {"description": "switching to WebSocket"}, "400": {"description": "bad query"},
+                            "426": {"description": "not a WebSocket upgrade"}}}
+    },
     "/api/v1/openapi.json": {
       "get": {"summary": "This document", "responses": {"200": {"description": "OpenAPI 3"}}}
     }
