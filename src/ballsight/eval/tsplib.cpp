@@ -7,17 +7,12 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 
 namespace ballsight::eval {
 namespace {
-
-std::string trimmed(std::string s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  const auto last = s.find_last_not_of(" \t\r");
-  return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
-}
 
 // TSPLIB 95, section 2: the distance functions, rounded as the library defines them.
 double geo_radians(double v) {
@@ -71,7 +66,7 @@ TsplibInstance parse_tsplib(std::string_view text, const std::string& source) {
   int line_number = 0;
   while (std::getline(in, line)) {
     ++line_number;
-    const std::string t = trimmed(line);
+    const std::string t(trim_blanks(line));
     if (t.empty()) continue;
     const std::string at = source + ":" + std::to_string(line_number);
     if (t == "EOF") break;
@@ -83,7 +78,7 @@ TsplibInstance parse_tsplib(std::string_view text, const std::string& source) {
     if (section.empty() ||
         (colon != std::string::npos && std::isalpha(static_cast<unsigned char>(t[0])))) {
       require(colon != std::string::npos, at, "expected 'KEY : value'");
-      spec[trimmed(t.substr(0, colon))] = trimmed(t.substr(colon + 1));
+      spec[std::string(trim_blanks(t.substr(0, colon)))] = trim_blanks(t.substr(colon + 1));
       section.clear();
       continue;
     }

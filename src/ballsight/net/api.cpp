@@ -26,6 +26,10 @@ ApiResponse ok(const json& body) {
   return {200, body.dump()};
 }
 
+ApiResponse error_response(const ApiError& e) {
+  return {e.status, json{{"error", e.what}, {"where", e.where}}.dump()};
+}
+
 [[noreturn]] void fail(int status, const std::string& what, const std::string& where) {
   throw ApiError{status, what, where};
 }
@@ -110,7 +114,8 @@ NavigationUpdate latest_or_fail(const NavigationHub& hub) {
   return std::move(*u);
 }
 
-ApiResponse robot_route(const ApiRequest& request, const ApiContext& c) {
+// Every route answers (request, query, context).
+ApiResponse robot_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
   if (request.method == "PUT") {
     require_write(request);
     const json body = parse_body(request.body);
@@ -143,7 +148,7 @@ ApiResponse robot_route(const ApiRequest& request, const ApiContext& c) {
              {"seq", u ? u->seq : 0}});
 }
 
-ApiResponse balls_route(const ApiRequest& request, const ApiContext& c) {
+ApiResponse balls_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
   if (request.method == "PUT") {
     require_write(request);
     c.hub.set_balls(ball_list(request, c.area));
@@ -162,7 +167,7 @@ ApiResponse balls_route(const ApiRequest& request, const ApiContext& c) {
   return ok({{"balls", out}, {"source", source}, {"seq", u ? u->seq : 0}});
 }
 
-ApiResponse navigation_route(const std::string& query, const ApiContext& c) {
+ApiResponse navigation_route(const ApiRequest&, const std::string& query, const ApiContext& c) {
   if (query.find("after") == std::string::npos) {
     const std::optional<NavigationUpdate> u = c.hub.latest();
     return ok({{"latest_seq", u ? u->seq : 0}, {"acknowledged_seq", c.hub.acknowledged()}});
@@ -176,7 +181,7 @@ ApiResponse navigation_route(const std::string& query, const ApiContext& c) {
   return ok(navigation_json(*u, c.camera_names));
 }
 
-ApiResponse ack_route(const ApiRequest& request, const ApiContext& c) {
+ApiResponse ack_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
   require_write(request);
   const json body = parse_body(request.body);
   only_keys(body, {"seq"}, "body");
@@ -192,16 +197,45 @@ ApiResponse ack_route(const ApiRequest& request, const ApiContext& c) {
   return ok({{"acknowledged_seq", c.hub.acknowledged()}});
 }
 
-ApiResponse collected_route(const ApiRequest& request, const ApiContext& c) {
+ApiResponse collected_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
   require_write(request);
   const std::vector<Vec2> positions = ball_list(request, c.area);
   c.hub.add_collected(positions);
   return ok({{"accepted", positions.size()}});
 }
 
-struct Route_ {
+ApiResponse world_route(const ApiRequest&, const std::string&, const ApiContext& c) {
+  const NavigationUpdate u = latest_or_fail(c.hub);
+  json j = world_model_json(u.world, c.camera_names);
+  j["seq"] = u.seq;
+  j["capture_time_ns"] = u.capture_time_ns;
+  return ok(j);
+}
+
+ApiResponse plan_route(const ApiRequest&, const std::string&, const ApiContext& c) {
+  const NavigationUpdate u = latest_or_fail(c.hub);
+  json j = route_json(u.route);
+  j["seq"] = u.seq;
+  return ok(j);
+}
+
+ApiResponse health_route(const ApiRequest&, const std::string&, const ApiContext& c) {
+  return ok(c.health ? c.health() : json::object());
+}
+
+ApiResponse stream_route(const ApiRequest&, const std::string&, const ApiContext&) {
+  fail(426, "a WebSocket upgrade is needed", "headers");
+}
+
+ApiResponse openapi_route(const ApiRequest&, const std::string&, const ApiContext&) {
+  return ok(openapi_document());
+}
+
+/// A route of API v1: its path, the methods it takes and what answers it.
+struct ApiRoute {
   const char* path;
   std::set<std::string> methods;
+  ApiResponse (*answer)(const ApiRequest&, const std::string& query, const ApiContext&);
 };
 
 }  // namespace
@@ -215,7 +249,7 @@ std::optional<ApiResponse> stream_refusal(const ApiRequest& request) {
   try {
     if (q != std::string::npos) query_number(request.target.substr(q + 1), "after", 0);
   } catch (const ApiError& e) {
-    return ApiResponse{e.status, json{{"error", e.what}, {"where", e.where}}.dump()};
+    return error_response(e);
   }
   return std::nullopt;
 }
@@ -251,43 +285,28 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
   const std::size_t q = request.target.find('?');
   const std::string path = request.target.substr(0, q);
   const std::string query = q == std::string::npos ? "" : request.target.substr(q + 1);
-  static const std::vector<Route_> kRoutes{
-      {"/api/v1/robot", {"GET", "PUT"}}, {"/api/v1/balls", {"GET", "PUT"}},
-      {"/api/v1/navigation", {"GET"}},   {"/api/v1/navigation/ack", {"POST"}},
-      {"/api/v1/collected", {"POST"}},   {"/api/v1/world", {"GET"}},
-      {"/api/v1/route", {"GET"}},        {"/api/v1/health", {"GET"}},
-      {"/api/v1/openapi.json", {"GET"}}, {"/api/v1/stream", {"GET"}},
+  static const std::vector<ApiRoute> kRoutes{
+      {"/api/v1/robot", {"GET", "PUT"}, robot_route},
+      {"/api/v1/balls", {"GET", "PUT"}, balls_route},
+      {"/api/v1/navigation", {"GET"}, navigation_route},
+      {"/api/v1/navigation/ack", {"POST"}, ack_route},
+      {"/api/v1/collected", {"POST"}, collected_route},
+      {"/api/v1/world", {"GET"}, world_route},
+      {"/api/v1/route", {"GET"}, plan_route},
+      {"/api/v1/health", {"GET"}, health_route},
+      {"/api/v1/stream", {"GET"}, stream_route},
+      {"/api/v1/openapi.json", {"GET"}, openapi_route},
   };
   try {
     const auto route = std::find_if(kRoutes.begin(), kRoutes.end(),
-                                    [&](const Route_& r) { return path == r.path; });
+                                    [&](const ApiRoute& r) { return path == r.path; });
     if (route == kRoutes.end()) fail(404, "unknown route", path);
     if (!route->methods.count(request.method)) {
       fail(405, "method " + request.method + " not allowed", path);
     }
-    if (path == "/api/v1/robot") return robot_route(request, c);
-    if (path == "/api/v1/balls") return balls_route(request, c);
-    if (path == "/api/v1/navigation") return navigation_route(query, c);
-    if (path == "/api/v1/navigation/ack") return ack_route(request, c);
-    if (path == "/api/v1/collected") return collected_route(request, c);
-    if (path == "/api/v1/world") {
-      const NavigationUpdate u = latest_or_fail(c.hub);
-      json j = world_model_json(u.world, c.camera_names);
-      j["seq"] = u.seq;
-      j["capture_time_ns"] = u.capture_time_ns;
-      return ok(j);
-    }
-    if (path == "/api/v1/route") {
-      const NavigationUpdate u = latest_or_fail(c.hub);
-      json j = route_json(u.route);
-      j["seq"] = u.seq;
-      return ok(j);
-    }
-    if (path == "/api/v1/health") return ok(c.health ? c.health() : json::object());
-    if (path == "/api/v1/stream") fail(426, "a WebSocket upgrade is needed", "headers");
-    return ok(openapi_document());
+    return route->answer(request, query, c);
   } catch (const ApiError& e) {
-    return {e.status, json{{"error", e.what}, {"where", e.where}}.dump()};
+    return error_response(e);
   }
 }
 
