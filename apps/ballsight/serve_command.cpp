@@ -59,24 +59,23 @@ void run_serve(const ServeArgs& args) {
   SimulatedCourtService service(service_options);
   NavigationHub hub;
   const auto started = std::chrono::steady_clock::now();
-  std::unique_ptr<HttpServer> server;
-  ApiContext context{hub, service.camera_names()};
-  context.area = {
-      -0.5 * Vec2(service.site().court.area_length_m, service.site().court.area_width_m),
-      0.5 * Vec2(service.site().court.area_length_m, service.site().court.area_width_m)};
+  std::atomic<HttpServer*> server{nullptr};  // health is asked on the server's thread
+  ApiContext context{hub, service.camera_names(), service.site().court,
+                     service.site().ball_radius_m};
   context.health = [&] {
     nlohmann::json h = service.health();
     h["uptime_s"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    h["connections"] = server ? server->connections() : 0;
+    const HttpServer* serving = server;
+    h["connections"] = serving ? serving->connections() : 0;
+    h["clients"] = serving ? clients_json(serving->clients()) : nlohmann::json::array();
     h["acknowledged_seq"] = hub.acknowledged();
+    h["service_id"] = hub.service_id();
     return h;
   };
-  server = std::make_unique<HttpServer>(
-      server_options, [&](const ApiRequest& request) { return handle_api(request, context); },
-      [&](const ApiRequest& request, const std::function<bool(const std::string&)>& send,
-          const std::atomic<bool>& stopping) { stream_updates(request, context, send, stopping); });
-  std::cout << "ballsight serve: http://" << server_options.address << ":" << server->port()
+  HttpServer http(server_options, context);
+  server = &http;
+  std::cout << "ballsight serve: http://" << server_options.address << ":" << http.port()
             << "/api/v1/ (token in " << args.token_file << ")" << std::endl;
   std::atomic<bool> stop{false};
   std::thread loop([&] { service.run(hub, stop); });
@@ -91,8 +90,7 @@ void run_serve(const ServeArgs& args) {
   }
   stop = true;
   loop.join();
-  hub.close();  // long-polls answer now
-  server->stop();
+  http.stop();
   std::cout << "ballsight serve: stopped after " << service.health()["updates_published"]
             << " updates" << std::endl;
 }

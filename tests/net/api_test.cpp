@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include <thread>
+#include <variant>
 
 namespace ballsight {
 namespace {
@@ -11,7 +11,7 @@ using nlohmann::json;
 
 struct Fixture {
   NavigationHub hub;
-  ApiContext context{hub, {"ne", "se", "sw", "nw"}};
+  ApiContext context{hub, {"ne", "se", "sw", "nw"}, SiteCourt{}, 0.0335};
 
   ApiResponse call(const std::string& method, const std::string& target,
                    const std::string& body = "", bool authorized = true) {
@@ -65,25 +65,62 @@ TEST(Api, TheReportsFourMethodsAndItsFlag) {
   EXPECT_EQ(f.hub.collected(), std::vector<Vec2>{Vec2(3, 4)});
 }
 
-TEST(Api, LongPollAnswersTheFirstNewerUpdateOr204) {
+TEST(Api, LongPollAnswersTheFirstNewerUpdateOrAsksTheTransportToWait) {
   Fixture f;
   f.hub.publish(update_with_robot(1.0));
-  const json now = json::parse(f.call("GET", "/api/v1/navigation?after=0&timeout_ms=10").body);
+  const ApiResponse first = f.call("GET", "/api/v1/navigation?after=0&timeout_ms=10");
+  EXPECT_FALSE(first.wait_after);
+  const json now = json::parse(first.body);
   EXPECT_EQ(now["seq"], 1);
+  EXPECT_EQ(now["service_id"], f.hub.service_id());
   EXPECT_GT(now["published_ns"].get<std::int64_t>(), 0);
   EXPECT_EQ(now["route"]["order"], json({0}));
-  EXPECT_EQ(f.call("GET", "/api/v1/navigation?after=1&timeout_ms=20").status, 204);
-  std::thread later([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    f.hub.publish(update_with_robot(2.0));
-  });
-  const auto started = std::chrono::steady_clock::now();
-  const ApiResponse r = f.call("GET", "/api/v1/navigation?after=1&timeout_ms=5000");
-  const double waited =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  later.join();
-  EXPECT_EQ(json::parse(r.body)["seq"], 2);
-  EXPECT_LT(waited, 2.0);  // woken by the publish, not by the timeout
+  // Nothing newer than 1: the transport parks the request (the HTTP server's test waits).
+  const ApiResponse pending = f.call("GET", "/api/v1/navigation?after=1&timeout_ms=20");
+  EXPECT_EQ(pending.status, 204);
+  EXPECT_EQ(pending.wait_after, 1u);
+  EXPECT_EQ(pending.wait.count(), 20);
+  EXPECT_EQ(f.call("GET", "/api/v1/navigation?after=1&timeout_ms=99999999").wait.count(), 30000);
+  EXPECT_FALSE(poll_answer(1, f.context));
+  f.hub.publish(update_with_robot(2.0));
+  EXPECT_EQ(json::parse(poll_answer(1, f.context)->body)["seq"], 2);
+}
+
+TEST(Api, AClientOfAnEarlierRunOfTheServiceStartsAgainFromTheOldestKept) {
+  Fixture f;
+  for (int k = 0; k < 3; ++k) f.hub.publish(update_with_robot(k));
+  const std::string mine = "&service=" + f.hub.service_id();
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=2" + mine).body)["seq"], 3);
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=40&service=0f0f").body)["seq"], 1);
+  const auto s =
+      stream_subscription({"GET", "/api/v1/stream?after=40&service=0f0f", "", false}, f.context);
+  EXPECT_EQ(std::get<StreamSubscription>(s).after, 0u);
+}
+
+TEST(Api, TheStreamTakesTopics) {
+  Fixture f;
+  const auto sub = [&](const std::string& target) {
+    return stream_subscription({"GET", target, "", false}, f.context);
+  };
+  const StreamSubscription plain = std::get<StreamSubscription>(sub("/api/v1/stream"));
+  EXPECT_TRUE(plain.navigation);
+  EXPECT_FALSE(plain.world || plain.health);
+  const StreamSubscription chosen =
+      std::get<StreamSubscription>(sub("/api/v1/stream?after=3&topics=world,health"));
+  EXPECT_EQ(chosen.after, 3u);
+  EXPECT_FALSE(chosen.navigation);
+  EXPECT_TRUE(chosen.world && chosen.health);
+  expect_error(std::get<ApiResponse>(sub("/api/v1/stream?topics=navigation,weather")), 400,
+               "query topics");
+  expect_error(std::get<ApiResponse>(sub("/api/v1/stream?after=-1")), 400, "query after");
+  f.hub.publish(update_with_robot(1.0));
+  const json world = json::parse(world_message(*f.hub.latest(), f.context));
+  EXPECT_EQ(world["topic"], "world");
+  EXPECT_EQ(world["seq"], 1);
+  EXPECT_EQ(world["world"]["balls"].size(), 1u);
+  EXPECT_EQ(json::parse(navigation_message(*f.hub.latest(), f.context))["update"]["seq"], 1);
+  f.context.health = [] { return json{{"frame_sets", 7}}; };
+  EXPECT_EQ(json::parse(health_message(f.context))["health"]["frame_sets"], 7);
 }
 
 TEST(Api, LongPollGivesTheFirstUpdateNewerThanAfterNotTheLatest) {

@@ -28,20 +28,10 @@ constexpr const char* kToken = "0123456789abcdef0123";
 
 struct Service {
   NavigationHub hub;
-  ApiContext context{hub, {"ne"}};
+  ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
   HttpServer server;
 
-  explicit Service(HttpServerOptions options = with_token())
-      : server(
-            options, [this](const ApiRequest& r) { return handle_api(r, context); },
-            [this](const ApiRequest& r, const std::function<bool(const std::string&)>& send,
-                   const std::atomic<bool>& stopping) {
-              stream_updates(r, context, send, stopping);
-            }) {}
-  ~Service() {
-    hub.close();
-    server.stop();
-  }
+  explicit Service(HttpServerOptions options = with_token()) : server(options, context) {}
   static HttpServerOptions with_token() {
     HttpServerOptions o;
     o.port = 0;
@@ -125,11 +115,10 @@ TEST(HttpServer, StreamSendsEveryUpdateInOrderAndSlowReadersSkip) {
     ws.read(buffer);
     const auto message = nlohmann::json::parse(beast::buffers_to_string(buffer.data()));
     EXPECT_EQ(message["topic"], "navigation");
-    EXPECT_EQ(message["dropped"], 0);
     EXPECT_EQ(message["update"]["seq"], expected);
   }
   publisher.join();
-  // A reader far behind starts at the oldest update kept and is told how many it missed.
+  // A reader far behind starts at the oldest update kept: the gap in seq says what it missed.
   for (std::size_t k = 0; k < NavigationHub::kKept + 10; ++k) service.hub.publish({});
   websocket::stream<tcp::socket> late(io);
   late.next_layer().connect(
@@ -139,7 +128,6 @@ TEST(HttpServer, StreamSendsEveryUpdateInOrderAndSlowReadersSkip) {
   late.read(buffer);
   const auto first = nlohmann::json::parse(beast::buffers_to_string(buffer.data()));
   EXPECT_EQ(first["update"]["seq"], 20 + 10 + 1);
-  EXPECT_EQ(first["dropped"], 10);
   // A plain GET of the stream is told to upgrade.
   Client client(service.server.port());
   EXPECT_EQ(client.send(http::verb::get, "/api/v1/stream").result_int(), 426);
@@ -192,8 +180,9 @@ TEST(HttpServer, TokenFileIsCreatedPrivateAndReadBack) {
   std::filesystem::remove(file);
   HttpServerOptions bad = Service::with_token();
   bad.address = "not-an-address";
-  const HttpServer::Handler nothing = [](const ApiRequest&) { return ApiResponse{}; };
-  EXPECT_THROW({ HttpServer server(bad, nothing); }, InputError);
+  NavigationHub hub;
+  ApiContext context{hub, {}, SiteCourt{}, 0.0335};
+  EXPECT_THROW({ HttpServer server(bad, context); }, InputError);
 }
 
 }  // namespace

@@ -82,26 +82,30 @@ json point_json(const Vec2& p) {
   return {{"x_m", p.x()}, {"y_m", p.y()}};
 }
 
-/// "?a=1&b=2" -> the value of `key` as an unsigned integer, or `fallback` when absent.
-std::uint64_t query_number(const std::string& query, const std::string& key,
-                           std::uint64_t fallback) {
+/// The value of `key` in "a=1&b=2", or nullopt when absent.
+std::optional<std::string> query_text(const std::string& query, const std::string& key) {
   std::size_t start = 0;
   while (start < query.size()) {
     const std::size_t end = std::min(query.find('&', start), query.size());
     const std::string item = query.substr(start, end - start);
     const std::size_t eq = item.find('=');
-    if (item.substr(0, eq) == key) {
-      const std::string text = eq == std::string::npos ? "" : item.substr(eq + 1);
-      std::uint64_t v = 0;
-      const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-      if (ec != std::errc() || ptr != text.data() + text.size() || text.empty()) {
-        fail(400, "expected a non-negative integer, got '" + text + "'", "query " + key);
-      }
-      return v;
-    }
+    if (item.substr(0, eq) == key) return eq == std::string::npos ? "" : item.substr(eq + 1);
     start = end + 1;
   }
-  return fallback;
+  return std::nullopt;
+}
+
+/// "a=1&b=2" -> the value of `key` as an unsigned integer, or `fallback` when absent.
+std::uint64_t query_number(const std::string& query, const std::string& key,
+                           std::uint64_t fallback) {
+  const std::optional<std::string> text = query_text(query, key);
+  if (!text) return fallback;
+  std::uint64_t v = 0;
+  const auto [ptr, ec] = std::from_chars(text->data(), text->data() + text->size(), v);
+  if (ec != std::errc() || ptr != text->data() + text->size() || text->empty()) {
+    fail(400, "expected a non-negative integer, got '" + *text + "'", "query " + key);
+  }
+  return v;
 }
 
 void require_write(const ApiRequest& request) {
@@ -167,18 +171,29 @@ ApiResponse balls_route(const ApiRequest& request, const std::string&, const Api
   return ok({{"balls", out}, {"source", source}, {"seq", u ? u->seq : 0}});
 }
 
-ApiResponse navigation_route(const ApiRequest&, const std::string& query, const ApiContext& c) {
-  if (query.find("after") == std::string::npos) {
-    const std::optional<NavigationUpdate> u = c.hub.latest();
-    return ok({{"latest_seq", u ? u->seq : 0}, {"acknowledged_seq", c.hub.acknowledged()}});
-  }
+/// `after` of a long-poll or stream, or 0 when `service` names another run of the service (it
+/// restarted and counts from 1 again: the client gets everything kept).
+std::uint64_t resume_after(const std::string& query, const ApiContext& c) {
   const std::uint64_t after = query_number(query, "after", 0);
+  const std::optional<std::string> service = query_text(query, "service");
+  return service && *service != c.hub.service_id() ? 0 : after;
+}
+
+ApiResponse navigation_route(const ApiRequest&, const std::string& query, const ApiContext& c) {
+  if (!query_text(query, "after")) {
+    const std::optional<NavigationUpdate> u = c.hub.latest();
+    return ok({{"latest_seq", u ? u->seq : 0},
+               {"acknowledged_seq", c.hub.acknowledged()},
+               {"service_id", c.hub.service_id()}});
+  }
+  const std::uint64_t after = resume_after(query, c);
   const auto wait = std::min<std::uint64_t>(query_number(query, "timeout_ms", 0),
                                             static_cast<std::uint64_t>(c.max_wait.count()));
-  const std::optional<NavigationUpdate> u =
-      c.hub.wait_after(after, std::chrono::milliseconds(static_cast<std::int64_t>(wait)));
-  if (!u) return {204, ""};
-  return ok(navigation_json(*u, c.camera_names));
+  if (std::optional<ApiResponse> answer = poll_answer(after, c)) return std::move(*answer);
+  ApiResponse pending{204, ""};
+  pending.wait_after = after;
+  pending.wait = std::chrono::milliseconds(static_cast<std::int64_t>(wait));
+  return pending;
 }
 
 ApiResponse ack_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
@@ -244,42 +259,80 @@ bool is_stream_target(const std::string& target) {
   return target.substr(0, target.find('?')) == "/api/v1/stream";
 }
 
-std::optional<ApiResponse> stream_refusal(const ApiRequest& request) {
+std::variant<StreamSubscription, ApiResponse> stream_subscription(const ApiRequest& request,
+                                                                  const ApiContext& c) {
   const std::size_t q = request.target.find('?');
+  const std::string query = q == std::string::npos ? "" : request.target.substr(q + 1);
   try {
-    if (q != std::string::npos) query_number(request.target.substr(q + 1), "after", 0);
+    StreamSubscription s;
+    s.after = resume_after(query, c);
+    if (const std::optional<std::string> topics = query_text(query, "topics")) {
+      s.navigation = false;
+      std::size_t start = 0;
+      while (start <= topics->size()) {
+        const std::size_t end = std::min(topics->find(',', start), topics->size());
+        const std::string topic = topics->substr(start, end - start);
+        if (topic == "navigation") {
+          s.navigation = true;
+        } else if (topic == "world") {
+          s.world = true;
+        } else if (topic == "health") {
+          s.health = true;
+        } else {
+          fail(400, "unknown topic '" + topic + "' (navigation, world or health)", "query topics");
+        }
+        start = end + 1;
+      }
+    }
+    return s;
   } catch (const ApiError& e) {
     return error_response(e);
   }
-  return std::nullopt;
 }
 
-void stream_updates(const ApiRequest& request, const ApiContext& c,
-                    const std::function<bool(const std::string&)>& send,
-                    const std::atomic<bool>& stopping) {
-  const std::size_t q = request.target.find('?');
-  std::uint64_t after =
-      q == std::string::npos ? 0 : query_number(request.target.substr(q + 1), "after", 0);
-  while (!stopping) {
-    const std::optional<NavigationUpdate> u =
-        c.hub.wait_after(after, std::chrono::milliseconds(200));
-    if (!u) continue;
-    const json message{{"topic", "navigation"},
-                       {"dropped", u->seq - after - 1},
-                       {"update", navigation_json(*u, c.camera_names)}};
-    after = u->seq;
-    if (!send(message.dump())) return;
-  }
+std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& c) {
+  const std::optional<NavigationUpdate> u = c.hub.first_after(after);
+  if (!u) return std::nullopt;
+  return ok(navigation_json(*u, c));
 }
 
-nlohmann::json navigation_json(const NavigationUpdate& update,
-                               const std::vector<std::string>& camera_names) {
+std::string navigation_message(const NavigationUpdate& update, const ApiContext& c) {
+  return json{{"topic", "navigation"}, {"update", navigation_json(update, c)}}.dump();
+}
+
+std::string world_message(const NavigationUpdate& update, const ApiContext& c) {
+  return json{{"topic", "world"},
+              {"seq", update.seq},
+              {"service_id", c.hub.service_id()},
+              {"capture_time_ns", update.capture_time_ns},
+              {"world", world_model_json(update.world, c.camera_names)}}
+      .dump();
+}
+
+std::string health_message(const ApiContext& c) {
+  return json{{"topic", "health"},
+              {"time_ns", utc_now_ns()},
+              {"health", c.health ? c.health() : json::object()}}
+      .dump();
+}
+
+nlohmann::json navigation_json(const NavigationUpdate& update, const ApiContext& c) {
   return {{"seq", update.seq},
+          {"service_id", c.hub.service_id()},
           {"capture_time_ns", update.capture_time_ns},
           {"published_ns", update.published_ns},
-          {"world", world_model_json(update.world, camera_names)},
+          {"world", world_model_json(update.world, c.camera_names)},
           {"route", route_json(update.route)}};
 }
+
+ApiContext::ApiContext(NavigationHub& hub_, std::vector<std::string> camera_names_,
+                       const SiteCourt& court_, double ball_radius_m_)
+    : hub(hub_),
+      camera_names(std::move(camera_names_)),
+      court(court_),
+      ball_radius_m(ball_radius_m_),
+      area(-0.5 * Vec2(court_.area_length_m, court_.area_width_m),
+           0.5 * Vec2(court_.area_length_m, court_.area_width_m)) {}
 
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
   const std::size_t q = request.target.find('?');

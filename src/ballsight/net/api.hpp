@@ -4,16 +4,18 @@
 // (http_server.hpp) parses the wire and says whether the request carried the token; everything a
 // client sends is checked here, and every bad request gets a 4xx with {"error", "where"}.
 
-#include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "ballsight/core/field_rect.hpp"
 #include "ballsight/net/navigation_hub.hpp"
+#include "ballsight/world/site.hpp"
 
 namespace ballsight {
 
@@ -25,41 +27,61 @@ struct ApiRequest {
 };
 
 struct ApiResponse {
-  int status = 200;
+  ApiResponse(int status_ = 200, std::string body_ = {})
+      : status(status_), body(std::move(body_)) {}
+
+  int status;
   std::string body;  // JSON, or empty for 204
+  /// A long-poll with nothing newer than `wait_after` yet: the transport waits up to `wait` for
+  /// an update, then answers with `poll_answer` (204 when none came). Empty: answer now.
+  std::optional<std::uint64_t> wait_after;
+  std::chrono::milliseconds wait{0};
 };
 
 struct ApiContext {
-  ApiContext(NavigationHub& hub_, std::vector<std::string> camera_names_)
-      : hub(hub_), camera_names(std::move(camera_names_)) {}
+  ApiContext(NavigationHub& hub_, std::vector<std::string> camera_names_, const SiteCourt& court_,
+             double ball_radius_m_);
 
   NavigationHub& hub;
   std::vector<std::string> camera_names;
-  FieldRect area{{-19.5, -10.5}, {19.5, 10.5}};  // positions a client sends must lie in it
-  std::function<nlohmann::json()> health;        // the service's health document
-  std::chrono::milliseconds max_wait{30000};     // cap on a long-poll's timeout_ms
+  SiteCourt court;
+  double ball_radius_m;
+  FieldRect area;                             // the court's fenced area: positions sent lie in it
+  std::function<nlohmann::json()> health;     // the service's health document
+  std::chrono::milliseconds max_wait{30000};  // cap on a long-poll's timeout_ms
 };
 
-/// Answers one request. Never throws for anything a client sends.
+/// Answers one request without waiting. Never throws for anything a client sends.
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& context);
+/// A waiting long-poll's answer: the first update newer than `after`; nullopt while none is.
+std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& context);
 
-/// The WebSocket stream at /api/v1/stream[?after=SEQ]: every navigation update newer than SEQ in
-/// order, one text message each, {"topic": "navigation", "dropped": N, "update": {...}} (N: updates
-/// skipped because this client fell more than NavigationHub::kKept behind), until `send` fails
-/// (the client left) or `stopping` is set.
-void stream_updates(const ApiRequest& request, const ApiContext& context,
-                    const std::function<bool(const std::string&)>& send,
-                    const std::atomic<bool>& stopping);
-/// Whether `target` is the stream, and why it must be refused before the upgrade (nullopt: fine).
+/// What a WebSocket client of /api/v1/stream[?after=SEQ&topics=navigation,world,health&service=ID]
+/// asked for: every update newer than SEQ (all of them from the oldest kept when ID is not this
+/// service's: it restarted) as the chosen topics, and the health document once a second.
+struct StreamSubscription {
+  std::uint64_t after = 0;
+  bool navigation = true;
+  bool world = false;
+  bool health = false;
+};
+/// Whether `target` is the stream.
 bool is_stream_target(const std::string& target);
-std::optional<ApiResponse> stream_refusal(const ApiRequest& request);
+/// The subscription of a stream request, or the 4xx to refuse its upgrade with.
+std::variant<StreamSubscription, ApiResponse> stream_subscription(const ApiRequest& request,
+                                                                  const ApiContext& context);
+/// The stream's messages: {"topic": "navigation", "update": {...}}, {"topic": "world", "seq",
+/// "service_id", "capture_time_ns", "world": {...}} and {"topic": "health", "time_ns", "health":
+/// {...}}. A client finds updates it missed (it read too slowly) as gaps in seq.
+std::string navigation_message(const NavigationUpdate& update, const ApiContext& context);
+std::string world_message(const NavigationUpdate& update, const ApiContext& context);
+std::string health_message(const ApiContext& context);
 
 /// The OpenAPI 3 document of API v1.
 const nlohmann::json& openapi_document();
 
-/// The JSON of one update: {"seq", "capture_time_ns", "published_ns", "world": {...}, "route":
-/// {...}}.
-nlohmann::json navigation_json(const NavigationUpdate& update,
-                               const std::vector<std::string>& camera_names);
+/// The JSON of one update: {"seq", "service_id", "capture_time_ns", "published_ns", "world":
+/// {...}, "route": {...}}.
+nlohmann::json navigation_json(const NavigationUpdate& update, const ApiContext& context);
 
 }  // namespace ballsight

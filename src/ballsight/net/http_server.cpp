@@ -1,21 +1,30 @@
 #include "ballsight/net/http_server.hpp"
 
-#include <sys/socket.h>
 #include <sys/stat.h>
 
+#include <utility>  // before Asio's awaitable.hpp, which uses std::exchange (Boost 1.74)
+//
 #include <atomic>
+#include <boost/asio/co_spawn.hpp>
+#include <boost/asio/detached.hpp>
+#include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/post.hpp>
+#include <boost/asio/redirect_error.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/use_awaitable.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
-#include <fstream>
-#include <list>
+#include <deque>
+#include <map>
 #include <mutex>
-#include <random>
+#include <set>
 #include <thread>
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/net/foxglove.hpp"
 
 namespace ballsight {
 namespace {
@@ -25,29 +34,75 @@ namespace beast = boost::beast;
 namespace http = beast::http;
 namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
+using asio::awaitable;
+using Request = http::request<http::string_body>;
+using WebSocket = websocket::stream<beast::tcp_stream>;
 
 /// Equal strings, compared in time that does not depend on where they differ.
-bool same_secret(const std::string& a, const std::string& b) {
+bool same_secret(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   unsigned char diff = 0;
   for (std::size_t i = 0; i < a.size(); ++i) diff |= static_cast<unsigned char>(a[i] ^ b[i]);
   return diff == 0;
 }
 
-http::response<http::string_body> json_response(int status, std::string body, unsigned version,
+http::response<http::string_body> json_response(const ApiResponse& response, unsigned version,
                                                 bool keep_alive) {
-  http::response<http::string_body> res{static_cast<http::status>(status), version};
+  http::response<http::string_body> res{static_cast<http::status>(response.status), version};
   res.set(http::field::server, "ballsight");
-  if (!body.empty()) res.set(http::field::content_type, "application/json");
+  if (!response.body.empty()) res.set(http::field::content_type, "application/json");
   res.keep_alive(keep_alive);
-  res.body() = std::move(body);
+  res.body() = response.body;
   res.prepare_payload();
   return res;
 }
 
-std::string error_body(const std::string& what, const std::string& where) {
-  return nlohmann::json{{"error", what}, {"where", where}}.dump();
+ApiResponse error_response(int status, const std::string& what, const std::string& where) {
+  return {status, nlohmann::json{{"error", what}, {"where", where}}.dump()};
 }
+
+/// One message for a WebSocket client (shared by every client it goes to).
+struct Outgoing {
+  std::shared_ptr<const std::string> data;
+  bool binary = false;
+};
+
+/// A WebSocket client: its socket, what it asked for, and the messages waiting for it. Touched
+/// on the I/O thread only, but for the counters `clients()` reads.
+struct Peer {
+  Peer(WebSocket socket, std::uint64_t id_, std::string kind_, std::string remote_,
+       std::size_t limit_)
+      : ws(std::move(socket)),
+        wake(ws.get_executor()),
+        id(id_),
+        kind(std::move(kind_)),
+        remote(std::move(remote_)),
+        limit(limit_) {}
+
+  void push(Outgoing message) {
+    if (queue.size() >= limit) {
+      queue.pop_front();
+      ++dropped;
+    }
+    queue.push_back(std::move(message));
+    queued = queue.size();
+    wake.cancel();
+  }
+
+  WebSocket ws;
+  asio::steady_timer wake;  // cancelled when a message is queued or the client leaves
+  const std::uint64_t id;
+  const std::string kind;
+  const std::string remote;
+  const std::size_t limit;
+  std::deque<Outgoing> queue;
+  bool closed = false;
+  std::atomic<std::uint64_t> sent{0}, dropped{0};
+  std::atomic<std::size_t> queued{0};
+  StreamSubscription subscription;            // kind "stream"
+  std::uint64_t last_seq = 0;                 // the newest update queued for it
+  std::unique_ptr<FoxgloveSession> foxglove;  // kind "foxglove"
+};
 
 }  // namespace
 
@@ -58,171 +113,348 @@ void HttpServerOptions::validate() const {
   require(max_connections >= 1 && max_connections <= 10000, "max_connections",
           "must be in [1, 10000]");
   require(idle_timeout.count() >= 1, "idle_timeout", "must be at least 1 s");
+  require(client_queue >= 1 && client_queue <= 100000, "client_queue", "must be in [1, 100000]");
   require(!token.empty(), "token", "must not be empty");
 }
 
 struct HttpServer::Impl {
-  HttpServerOptions options;
-  Handler handler;
-  StreamHandler stream;
-  asio::io_context io;
-  tcp::acceptor acceptor{io};
-  std::thread accept_thread;
-  std::mutex mutex;
-  struct Connection {
-    std::shared_ptr<tcp::socket> socket;
-    std::thread thread;
-    bool done = false;
-  };
-  std::list<Connection> connections;
-  std::atomic<int> open{0};
-  std::atomic<bool> stopping{false};
+  Impl(const HttpServerOptions& o, ApiContext& c) : options(o), context(c) {}
 
-  void accept_loop();
-  void serve(tcp::socket& socket);
-  void serve_stream(tcp::socket& socket, const http::request<http::string_body>& req,
-                    const ApiRequest& request);
-  void reap();
+  HttpServerOptions options;
+  ApiContext& context;
+  asio::io_context io{1};
+  asio::executor_work_guard<asio::io_context::executor_type> work{io.get_executor()};
+  tcp::acceptor acceptor{io};
+  asio::steady_timer health_timer{io};
+  std::thread thread;
+  std::atomic<bool> stopping{false};
+  int listener = 0;
+
+  // I/O thread only:
+  std::uint64_t next_id = 1;
+  std::map<std::uint64_t, std::function<void()>> closers;  // every open connection
+  std::set<asio::steady_timer*> parked;                    // waiting long-polls
+  std::uint64_t broadcast_seq = 0;                         // the newest update sent out
+  // Also read by clients():
+  mutable std::mutex peers_mutex;
+  std::map<std::uint64_t, std::shared_ptr<Peer>> peers;
+  std::atomic<int> open{0};
+
+  awaitable<void> accept_loop();
+  awaitable<void> session(tcp::socket socket, std::uint64_t id);
+  awaitable<ApiResponse> long_poll(std::uint64_t after, std::chrono::milliseconds wait);
+  awaitable<void> serve_websocket(beast::tcp_stream stream, Request req, std::uint64_t id,
+                                  std::string remote, std::string subprotocol,
+                                  StreamSubscription subscription);
+  awaitable<void> write_loop(std::shared_ptr<Peer> peer);
+  awaitable<void> health_loop();
+  void broadcast();
+  void close_all();
 };
 
-void HttpServer::Impl::reap() {
-  // Joins the threads of connections that have ended (called with the mutex held).
-  for (auto it = connections.begin(); it != connections.end();) {
-    if (it->done) {
-      it->thread.join();
-      it = connections.erase(it);
-    } else {
-      ++it;
-    }
-  }
-}
-
-void HttpServer::Impl::accept_loop() {
+awaitable<void> HttpServer::Impl::accept_loop() {
   while (!stopping) {
-    auto socket = std::make_shared<tcp::socket>(io);
     beast::error_code ec;
-    acceptor.accept(*socket, ec);
+    tcp::socket socket =
+        co_await acceptor.async_accept(asio::redirect_error(asio::use_awaitable, ec));
     if (ec) {
-      if (stopping) return;
+      if (stopping || ec == asio::error::operation_aborted) co_return;
       continue;
     }
-    const std::lock_guard lock(mutex);
-    reap();
-    if (open >= options.max_connections) {
-      http::write(*socket,
-                  json_response(503, error_body("too many connections", "server"), 11, false), ec);
-      socket->shutdown(tcp::socket::shutdown_both, ec);
-      continue;
-    }
-    ++open;
-    connections.push_back({socket, {}, false});
-    Connection& c = connections.back();
-    c.thread = std::thread([this, &c] {
-      serve(*c.socket);
-      beast::error_code ignored;
-      c.socket->shutdown(tcp::socket::shutdown_both, ignored);
-      c.socket->close(ignored);
-      const std::lock_guard done_lock(mutex);
-      c.done = true;
-      --open;
-    });
+    const std::uint64_t id = next_id++;
+    asio::co_spawn(io, session(std::move(socket), id), asio::detached);
   }
 }
 
-void HttpServer::Impl::serve_stream(tcp::socket& socket,
-                                    const http::request<http::string_body>& req,
-                                    const ApiRequest& request) {
-  websocket::stream<tcp::socket&> ws(socket);
-  beast::error_code ec;
-  ws.accept(req, ec);
-  if (ec) return;
-  ws.text(true);
-  stream(
-      request,
-      [&](const std::string& message) {
-        ws.write(asio::buffer(message), ec);
-        return !ec;
-      },
-      stopping);
-  ws.close(websocket::close_code::going_away, ec);
+awaitable<ApiResponse> HttpServer::Impl::long_poll(std::uint64_t after,
+                                                   std::chrono::milliseconds wait) {
+  const auto deadline = std::chrono::steady_clock::now() + wait;
+  asio::steady_timer timer(io);
+  parked.insert(&timer);
+  ApiResponse answer{204, ""};
+  while (!stopping) {
+    if (std::optional<ApiResponse> a = poll_answer(after, context)) {
+      answer = std::move(*a);
+      break;
+    }
+    if (std::chrono::steady_clock::now() >= deadline) break;
+    timer.expires_at(deadline);  // broadcast() cancels it when an update comes
+    beast::error_code ec;
+    co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+  }
+  parked.erase(&timer);
+  co_return answer;
 }
 
-void HttpServer::Impl::serve(tcp::socket& socket) {
-  // Reads and writes block at most the idle timeout (a silent or stuck client is let go).
-  const timeval tv{static_cast<time_t>(options.idle_timeout.count()), 0};
-  ::setsockopt(socket.native_handle(), SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-  ::setsockopt(socket.native_handle(), SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
+awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) {
   beast::error_code ec;
-  const tcp::endpoint remote = socket.remote_endpoint(ec);
-  const bool local = !ec && remote.address().is_loopback();
+  const tcp::endpoint remote_endpoint = socket.remote_endpoint(ec);
+  const bool local = !ec && remote_endpoint.address().is_loopback();
+  const std::string remote =
+      ec ? "?"
+         : remote_endpoint.address().to_string() + ":" + std::to_string(remote_endpoint.port());
+  beast::tcp_stream stream(std::move(socket));
+  const int open_now = ++open;
+  closers[id] = [&stream] {
+    beast::error_code ignored;
+    stream.socket().shutdown(tcp::socket::shutdown_both, ignored);
+    stream.socket().close(ignored);
+  };
+  struct Leave {  // however the session ends
+    Impl& s;
+    std::uint64_t id;
+    ~Leave() {
+      s.closers.erase(id);
+      --s.open;
+    }
+  } leave{*this, id};
   beast::flat_buffer buffer;
+  if (open_now > options.max_connections) {
+    stream.expires_after(options.idle_timeout);
+    co_await http::async_write(
+        stream, json_response(error_response(503, "too many connections", "server"), 11, false),
+        asio::redirect_error(asio::use_awaitable, ec));
+    co_return;
+  }
   while (!stopping) {
     http::request_parser<http::string_body> parser;
     parser.body_limit(options.body_limit);
     parser.header_limit(static_cast<std::uint32_t>(options.header_limit));
-    http::read(socket, buffer, parser, ec);
-    if (ec == http::error::end_of_stream || ec == asio::error::eof ||
-        ec == asio::error::connection_reset || ec == asio::error::would_block ||
-        ec == asio::error::try_again || ec == asio::error::timed_out || stopping) {
-      return;
-    }
-    if (ec) {
+    stream.expires_after(options.idle_timeout);
+    co_await http::async_read(stream, buffer, parser,
+                              asio::redirect_error(asio::use_awaitable, ec));
+    const bool malformed = ec && ec != http::error::end_of_stream &&
+                           ec.category() == make_error_code(http::error::end_of_stream).category();
+    if (malformed) {
       const int status = ec == http::error::body_limit     ? 413
                          : ec == http::error::header_limit ? 431
                                                            : 400;
-      http::write(socket, json_response(status, error_body(ec.message(), "request"), 11, false),
-                  ec);
-      return;
+      stream.expires_after(options.idle_timeout);
+      co_await http::async_write(
+          stream, json_response(error_response(status, ec.message(), "request"), 11, false),
+          asio::redirect_error(asio::use_awaitable, ec));
+      co_return;
     }
-    const auto& req = parser.get();
+    if (ec || stopping) co_return;
+    Request req = parser.release();
     ApiRequest request;
     request.method = std::string(req.method_string());
     request.target = std::string(req.target());
     request.body = req.body();
     const auto auth = req.find(http::field::authorization);
-    request.authorized =
-        auth != req.end() && same_secret(std::string(auth->value()), "Bearer " + options.token);
+    request.authorized = auth != req.end() &&
+                         same_secret(std::string_view(auth->value().data(), auth->value().size()),
+                                     "Bearer " + options.token);
     ApiResponse response;
     if (!local && !options.open_reads && !request.authorized) {
-      response = {401, error_body("requests from other hosts need the token", "headers")};
+      response = error_response(401, "requests from other hosts need the token", "headers");
     } else if (websocket::is_upgrade(req)) {
-      if (!stream || !is_stream_target(request.target)) {
-        response = {404, error_body("no WebSocket here", request.target)};
-      } else if (const std::optional<ApiResponse> refusal = stream_refusal(request)) {
-        response = *refusal;
+      const std::string foxglove =
+          foxglove_subprotocol(std::string(req[http::field::sec_websocket_protocol]));
+      if (!foxglove.empty()) {
+        co_await serve_websocket(std::move(stream), std::move(req), id, remote, foxglove, {});
+        co_return;
+      }
+      if (!is_stream_target(request.target)) {
+        response =
+            error_response(404, "no WebSocket here (the stream is /api/v1/stream)", request.target);
       } else {
-        serve_stream(socket, req, request);
-        return;
+        auto subscription = stream_subscription(request, context);
+        if (auto* s = std::get_if<StreamSubscription>(&subscription)) {
+          co_await serve_websocket(std::move(stream), std::move(req), id, remote, "", *s);
+          co_return;
+        }
+        response = std::get<ApiResponse>(subscription);
       }
     } else {
-      response = handler(request);
+      response = handle_api(request, context);
+      if (response.wait_after) response = co_await long_poll(*response.wait_after, response.wait);
     }
-    http::write(
-        socket,
-        json_response(response.status, std::move(response.body), req.version(), req.keep_alive()),
-        ec);
-    if (ec || !req.keep_alive()) return;
+    stream.expires_after(options.idle_timeout);
+    co_await http::async_write(stream, json_response(response, req.version(), req.keep_alive()),
+                               asio::redirect_error(asio::use_awaitable, ec));
+    if (ec || !req.keep_alive()) break;
+  }
+  stream.socket().shutdown(tcp::socket::shutdown_send, ec);
+}
+
+awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Request req,
+                                                  std::uint64_t id, std::string remote,
+                                                  std::string subprotocol,
+                                                  StreamSubscription subscription) {
+  stream.expires_never();  // the WebSocket's own timeout takes over
+  auto peer = std::make_shared<Peer>(WebSocket(std::move(stream)), id,
+                                     subprotocol.empty() ? "stream" : "foxglove", remote,
+                                     options.client_queue);
+  WebSocket& ws = peer->ws;
+  closers[id] = [peer] {
+    beast::error_code ignored;
+    peer->closed = true;
+    peer->wake.cancel();
+    beast::get_lowest_layer(peer->ws).socket().close(ignored);
+  };
+  websocket::stream_base::timeout timeout{};
+  timeout.handshake_timeout = options.idle_timeout;
+  timeout.idle_timeout = options.idle_timeout;  // a client that answers no ping is let go
+  timeout.keep_alive_pings = true;
+  ws.set_option(timeout);
+  ws.read_message_max(options.body_limit);
+  if (!subprotocol.empty()) {
+    ws.set_option(websocket::stream_base::decorator([subprotocol](websocket::response_type& res) {
+      res.set(http::field::sec_websocket_protocol, subprotocol);
+    }));
+  }
+  beast::error_code ec;
+  co_await ws.async_accept(req, asio::redirect_error(asio::use_awaitable, ec));
+  if (ec) co_return;
+  const auto text = [](std::string s) {
+    return Outgoing{std::make_shared<const std::string>(std::move(s)), false};
+  };
+  if (subprotocol.empty()) {
+    peer->subscription = subscription;
+    peer->last_seq = subscription.after;
+    for (const NavigationUpdate& u : context.hub.all_after(subscription.after)) {
+      if (subscription.navigation) peer->push(text(navigation_message(u, context)));
+      if (subscription.world) peer->push(text(world_message(u, context)));
+      peer->last_seq = u.seq;
+    }
+  } else {
+    peer->foxglove = std::make_unique<FoxgloveSession>(context);
+    for (std::string& m : peer->foxglove->greeting()) peer->push(text(std::move(m)));
+    peer->last_seq = context.hub.latest() ? context.hub.latest()->seq : 0;
+  }
+  {
+    const std::lock_guard lock(peers_mutex);
+    peers[id] = peer;
+  }
+  asio::co_spawn(io, write_loop(peer), asio::detached);
+  beast::flat_buffer buffer;
+  while (!peer->closed) {
+    co_await ws.async_read(buffer, asio::redirect_error(asio::use_awaitable, ec));
+    if (ec) break;
+    if (peer->foxglove && ws.got_text()) {
+      FoxgloveOutput out =
+          peer->foxglove->on_text(beast::buffers_to_string(buffer.data()), context.hub.latest());
+      for (std::string& m : out.text) peer->push(text(std::move(m)));
+      for (std::string& m : out.binary) {
+        peer->push({std::make_shared<const std::string>(std::move(m)), true});
+      }
+    }
+    buffer.consume(buffer.size());
+  }
+  peer->closed = true;
+  peer->wake.cancel();
+  const std::lock_guard lock(peers_mutex);
+  peers.erase(id);
+}
+
+awaitable<void> HttpServer::Impl::write_loop(std::shared_ptr<Peer> peer) {
+  beast::error_code ec;
+  while (!peer->closed) {
+    if (peer->queue.empty()) {
+      peer->wake.expires_at(asio::steady_timer::time_point::max());
+      co_await peer->wake.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+      continue;
+    }
+    const Outgoing message = std::move(peer->queue.front());
+    peer->queue.pop_front();
+    peer->queued = peer->queue.size();
+    peer->ws.binary(message.binary);
+    co_await peer->ws.async_write(asio::buffer(*message.data),
+                                  asio::redirect_error(asio::use_awaitable, ec));
+    if (ec) break;
+    ++peer->sent;
+  }
+  if (!peer->closed) {  // the client is gone: end its reader too
+    peer->closed = true;
+    beast::get_lowest_layer(peer->ws).socket().close(ec);
   }
 }
 
-HttpServer::HttpServer(const HttpServerOptions& options, Handler handler, StreamHandler stream)
-    : impl_(std::make_unique<Impl>()) {
+awaitable<void> HttpServer::Impl::health_loop() {
+  while (!stopping) {
+    health_timer.expires_after(std::chrono::seconds(1));
+    beast::error_code ec;
+    co_await health_timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+    if (stopping) co_return;
+    std::shared_ptr<const std::string> message;
+    std::vector<std::shared_ptr<Peer>> wanting;
+    {
+      const std::lock_guard lock(peers_mutex);
+      for (const auto& [id, peer] : peers)
+        if (peer->subscription.health && !peer->foxglove) wanting.push_back(peer);
+    }
+    if (wanting.empty()) continue;
+    message = std::make_shared<const std::string>(health_message(context));
+    for (const auto& peer : wanting) peer->push({message, false});
+  }
+}
+
+void HttpServer::Impl::broadcast() {
+  const std::vector<NavigationUpdate> updates = context.hub.all_after(broadcast_seq);
+  if (updates.empty()) return;
+  broadcast_seq = updates.back().seq;
+  std::vector<std::shared_ptr<Peer>> list;
+  {
+    const std::lock_guard lock(peers_mutex);
+    for (const auto& [id, peer] : peers) list.push_back(peer);
+  }
+  for (const NavigationUpdate& u : updates) {
+    std::shared_ptr<const std::string> navigation, world;  // made once, when someone wants them
+    for (const auto& peer : list) {
+      if (peer->closed || u.seq <= peer->last_seq) continue;
+      peer->last_seq = u.seq;
+      if (peer->foxglove) {
+        for (std::string& f : peer->foxglove->frames(u)) {
+          peer->push({std::make_shared<const std::string>(std::move(f)), true});
+        }
+        continue;
+      }
+      if (peer->subscription.navigation) {
+        if (!navigation)
+          navigation = std::make_shared<const std::string>(navigation_message(u, context));
+        peer->push({navigation, false});
+      }
+      if (peer->subscription.world) {
+        if (!world) world = std::make_shared<const std::string>(world_message(u, context));
+        peer->push({world, false});
+      }
+    }
+  }
+  for (asio::steady_timer* timer : parked) timer->cancel();
+}
+
+void HttpServer::Impl::close_all() {
+  beast::error_code ec;
+  acceptor.close(ec);
+  health_timer.cancel();
+  for (asio::steady_timer* timer : parked) timer->cancel();
+  const auto closing = closers;  // a closer may end its session, which erases it
+  for (const auto& [id, close] : closing) close();
+}
+
+HttpServer::HttpServer(const HttpServerOptions& options, ApiContext& context)
+    : impl_(std::make_unique<Impl>(options, context)) {
   options.validate();
-  impl_->options = options;
-  impl_->handler = std::move(handler);
-  impl_->stream = std::move(stream);
   beast::error_code ec;
   const auto address = asio::ip::make_address(options.address, ec);
   require(!ec, "--listen", "'" + options.address + "' is not an IP address");
   const tcp::endpoint endpoint(address, options.port);
-  impl_->acceptor.open(endpoint.protocol(), ec);
-  if (!ec) impl_->acceptor.set_option(asio::socket_base::reuse_address(true), ec);
-  if (!ec) impl_->acceptor.bind(endpoint, ec);
-  if (!ec) impl_->acceptor.listen(asio::socket_base::max_listen_connections, ec);
+  tcp::acceptor& acceptor = impl_->acceptor;
+  acceptor.open(endpoint.protocol(), ec);
+  if (!ec) acceptor.set_option(asio::socket_base::reuse_address(true), ec);
+  if (!ec) acceptor.bind(endpoint, ec);
+  if (!ec) acceptor.listen(asio::socket_base::max_listen_connections, ec);
   require(!ec, "--listen",
           "cannot listen on " + options.address + ":" + std::to_string(options.port) + ": " +
               ec.message());
-  impl_->accept_thread = std::thread([this] { impl_->accept_loop(); });
+  Impl& s = *impl_;
+  s.broadcast_seq = context.hub.latest() ? context.hub.latest()->seq : 0;
+  s.listener =
+      context.hub.add_listener([&s](std::uint64_t) { asio::post(s.io, [&s] { s.broadcast(); }); });
+  asio::co_spawn(s.io, s.accept_loop(), asio::detached);
+  asio::co_spawn(s.io, s.health_loop(), asio::detached);
+  s.thread = std::thread([&s] { s.io.run(); });
 }
 
 HttpServer::~HttpServer() {
@@ -237,21 +469,35 @@ int HttpServer::connections() const {
   return impl_->open;
 }
 
-void HttpServer::stop() {
-  if (impl_->stopping.exchange(true)) return;
-  beast::error_code ec;
-  // Closing the acceptor does not wake a blocking accept on Linux; shutting it down does.
-  ::shutdown(impl_->acceptor.native_handle(), SHUT_RDWR);
-  impl_->acceptor.close(ec);
-  if (impl_->accept_thread.joinable()) impl_->accept_thread.join();
-  std::list<Impl::Connection> connections;
-  {
-    const std::lock_guard lock(impl_->mutex);
-    for (Impl::Connection& c : impl_->connections)
-      c.socket->shutdown(tcp::socket::shutdown_both, ec);
-    connections.splice(connections.end(), impl_->connections);
+std::vector<ClientStats> HttpServer::clients() const {
+  const std::lock_guard lock(impl_->peers_mutex);
+  std::vector<ClientStats> out;
+  for (const auto& [id, p] : impl_->peers) {
+    out.push_back({p->id, p->kind, p->remote, p->sent, p->dropped, p->queued});
   }
-  for (Impl::Connection& c : connections) c.thread.join();
+  return out;
+}
+
+nlohmann::json clients_json(const std::vector<ClientStats>& clients) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ClientStats& c : clients) {
+    out.push_back({{"id", c.id},
+                   {"kind", c.kind},
+                   {"remote", c.remote},
+                   {"sent", c.sent},
+                   {"dropped", c.dropped},
+                   {"queued", c.queued}});
+  }
+  return out;
+}
+
+void HttpServer::stop() {
+  Impl& s = *impl_;
+  if (s.stopping.exchange(true)) return;
+  s.context.hub.remove_listener(s.listener);
+  asio::post(s.io, [&s] { s.close_all(); });
+  s.work.reset();
+  s.thread.join();
 }
 
 std::string read_or_create_token(const std::filesystem::path& file) {
@@ -262,10 +508,7 @@ std::string read_or_create_token(const std::filesystem::path& file) {
     require(text.size() >= 16, file.string(), "the token must be at least 16 characters");
     return text;
   }
-  std::random_device random;
-  std::string token;
-  constexpr char kHex[] = "0123456789abcdef";
-  for (int i = 0; i < 32; ++i) token += kHex[random() % 16];
+  const std::string token = random_hex(32);
   write_file_atomic(file, token + "\n");
   require(::chmod(file.c_str(), 0600) == 0, file.string(), "cannot make it private (0600)");
   return token;

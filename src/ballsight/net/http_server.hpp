@@ -1,18 +1,21 @@
 #pragma once
-// The navigation service's HTTP/1.1 server (Boost.Beast, kept inside http_server.cpp: it compiles
-// slowly). One thread accepts; each connection is served by a thread of its own, at most
-// `max_connections` at once (a long-poll waits in its connection's thread, so it never holds up
-// another client, and a WebSocket client of the stream is sent every update from its own thread,
-// so a slow one holds up nobody). Requests are bounded (body, header, idle time); the bearer token
-// decides whether a request may write, and whether a client on another host may read.
+// The navigation service's HTTP/1.1 and WebSocket server (Boost.Beast, kept inside
+// http_server.cpp: it compiles slowly). One I/O thread serves every connection with coroutines:
+// requests, long-polls parked until an update comes (or their time is up), and WebSocket
+// clients (the stream of API v1, and Foxglove clients, foxglove.hpp) each with a bounded queue of
+// messages: a client that reads too slowly loses its oldest messages (counted in `clients()`),
+// never holds up another client or the pipeline, which only hands the I/O thread a sequence
+// number when it publishes. Requests are bounded (body, header, idle time, connections); the
+// bearer token decides whether a request may write, and whether a client on another host may
+// read.
 
-#include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ballsight/net/api.hpp"
 
@@ -25,32 +28,40 @@ struct HttpServerOptions {
   bool open_reads = false;     // reads from other hosts need no token
   std::size_t body_limit = 64 * 1024;
   std::size_t header_limit = 8 * 1024;
-  int max_connections = 64;
+  int max_connections = 256;
   std::chrono::seconds idle_timeout{30};
+  std::size_t client_queue = 128;  // messages waiting for one WebSocket client, at most
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
 };
 
+/// One WebSocket client, as the health document shows it.
+struct ClientStats {
+  std::uint64_t id = 0;
+  std::string kind;    // "stream" or "foxglove"
+  std::string remote;  // address:port
+  std::uint64_t sent = 0;
+  std::uint64_t dropped = 0;  // messages dropped because the client read too slowly
+  std::size_t queued = 0;
+};
+
+/// [{"id", "kind", "remote", "sent", "dropped", "queued"}, ...]
+nlohmann::json clients_json(const std::vector<ClientStats>& clients);
+
 class HttpServer {
  public:
-  using Handler = std::function<ApiResponse(const ApiRequest&)>;
-  /// Serves one WebSocket client of the stream: sends text messages through `send` (false once
-  /// the client is gone) until it returns; `stopping` is set when the server stops.
-  using StreamHandler =
-      std::function<void(const ApiRequest&, const std::function<bool(const std::string&)>& send,
-                         const std::atomic<bool>& stopping)>;
-
-  /// Binds and starts serving; throws InputError when the address cannot be bound. WebSocket
-  /// upgrades to the stream (api.hpp) go to `stream`.
-  HttpServer(const HttpServerOptions& options, Handler handler, StreamHandler stream = {});
+  /// Binds and starts serving API v1 of `context` (which must outlive the server); throws
+  /// InputError when the address cannot be bound.
+  HttpServer(const HttpServerOptions& options, ApiContext& context);
   ~HttpServer();
   HttpServer(const HttpServer&) = delete;
   HttpServer& operator=(const HttpServer&) = delete;
 
   unsigned short port() const;
   int connections() const;
-  /// Stops accepting, closes every connection and joins their threads.
+  std::vector<ClientStats> clients() const;
+  /// Stops accepting, closes every connection and joins the I/O thread.
   void stop();
 
  private:

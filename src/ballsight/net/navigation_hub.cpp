@@ -1,5 +1,7 @@
 #include "ballsight/net/navigation_hub.hpp"
 
+#include <random>
+
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {
@@ -9,6 +11,16 @@ std::int64_t utc_now_ns() {
              std::chrono::system_clock::now().time_since_epoch())
       .count();
 }
+
+std::string random_hex(int digits) {
+  std::random_device random;
+  constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (int i = 0; i < digits; ++i) out += kHex[random() % 16];
+  return out;
+}
+
+NavigationHub::NavigationHub() : service_id_(random_hex(16)) {}
 
 std::uint64_t NavigationHub::publish(NavigationUpdate update) {
   std::uint64_t seq = 0;
@@ -20,8 +32,20 @@ std::uint64_t NavigationHub::publish(NavigationUpdate update) {
     recent_.push_back(std::move(update));
     if (recent_.size() > kKept) recent_.pop_front();
   }
-  published_.notify_all();
+  const std::lock_guard lock(listeners_mutex_);
+  for (const auto& [id, listener] : listeners_) listener(seq);
   return seq;
+}
+
+int NavigationHub::add_listener(std::function<void(std::uint64_t)> listener) {
+  const std::lock_guard lock(listeners_mutex_);
+  listeners_.emplace_back(next_listener_, std::move(listener));
+  return next_listener_++;
+}
+
+void NavigationHub::remove_listener(int id) {
+  const std::lock_guard lock(listeners_mutex_);
+  std::erase_if(listeners_, [id](const auto& l) { return l.first == id; });
 }
 
 std::optional<NavigationUpdate> NavigationHub::latest() const {
@@ -30,15 +54,30 @@ std::optional<NavigationUpdate> NavigationHub::latest() const {
   return recent_.back();
 }
 
-std::optional<NavigationUpdate> NavigationHub::wait_after(std::uint64_t after,
-                                                          std::chrono::milliseconds timeout) const {
-  std::unique_lock lock(mutex_);
-  const auto newer = [&] { return !recent_.empty() && recent_.back().seq > after; };
-  published_.wait_for(lock, timeout, [&] { return closed_ || newer(); });
-  if (!newer()) return std::nullopt;
-  // Sequence numbers are consecutive: the first newer one is at a known place.
-  const std::uint64_t first = recent_.front().seq;
-  return recent_[static_cast<std::size_t>(after + 1 > first ? after + 1 - first : 0)];
+namespace {
+
+/// Where the first update newer than `after` is in `recent` (sequence numbers are consecutive);
+/// recent.size() when there is none.
+std::size_t first_index_after(const std::deque<NavigationUpdate>& recent, std::uint64_t after) {
+  if (recent.empty() || recent.back().seq <= after) return recent.size();
+  const std::uint64_t first = recent.front().seq;
+  return static_cast<std::size_t>(after + 1 > first ? after + 1 - first : 0);
+}
+
+}  // namespace
+
+std::optional<NavigationUpdate> NavigationHub::first_after(std::uint64_t after) const {
+  const std::lock_guard lock(mutex_);
+  const std::size_t i = first_index_after(recent_, after);
+  if (i == recent_.size()) return std::nullopt;
+  return recent_[i];
+}
+
+std::vector<NavigationUpdate> NavigationHub::all_after(std::uint64_t after) const {
+  const std::lock_guard lock(mutex_);
+  const auto first =
+      recent_.begin() + static_cast<std::ptrdiff_t>(first_index_after(recent_, after));
+  return {first, recent_.end()};
 }
 
 void NavigationHub::acknowledge(std::uint64_t seq) {
@@ -83,14 +122,6 @@ void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
 std::vector<Vec2> NavigationHub::collected() const {
   const std::lock_guard lock(mutex_);
   return collected_;
-}
-
-void NavigationHub::close() {
-  {
-    const std::lock_guard lock(mutex_);
-    closed_ = true;
-  }
-  published_.notify_all();
 }
 
 }  // namespace ballsight

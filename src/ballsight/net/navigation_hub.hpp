@@ -6,11 +6,12 @@
 // robot acknowledged, and external robot pose and balls a client may set. Thread-safe.
 
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
@@ -21,6 +22,8 @@ namespace ballsight {
 
 /// UTC now, nanoseconds since the epoch.
 std::int64_t utc_now_ns();
+/// `digits` random hexadecimal digits (std::random_device).
+std::string random_hex(int digits);
 
 /// One published value: what the cameras saw and where the robot should go.
 struct NavigationUpdate {
@@ -40,13 +43,25 @@ struct External {
 
 class NavigationHub {
  public:
-  /// Publishes `update` (its seq and published time are assigned) and wakes every waiter.
+  NavigationHub();
+
+  /// Random, fixed for this hub's life: a client that sees it change knows the service restarted
+  /// and its sequence numbers began again.
+  const std::string& service_id() const { return service_id_; }
+
+  /// Publishes `update` (its seq and published time are assigned) and tells every listener.
   std::uint64_t publish(NavigationUpdate update);
   std::optional<NavigationUpdate> latest() const;
   /// The first update newer than `after` (the oldest one kept, when `after` is older than
-  /// that), waiting up to `timeout` for one; nullopt when none came (or the hub was closed).
-  std::optional<NavigationUpdate> wait_after(std::uint64_t after,
-                                             std::chrono::milliseconds timeout) const;
+  /// that); nullopt when there is none yet.
+  std::optional<NavigationUpdate> first_after(std::uint64_t after) const;
+  /// Every kept update newer than `after`, oldest first.
+  std::vector<NavigationUpdate> all_after(std::uint64_t after) const;
+
+  /// Called with the new seq after every publish, from the publishing thread (it must return
+  /// quickly: hand the work over). Returns an id for `remove_listener`.
+  int add_listener(std::function<void(std::uint64_t seq)> listener);
+  void remove_listener(int id);
 
   /// Updates kept for clients that read behind the newest (a reader further behind skips to the
   /// oldest kept; the gap in seq says how many it missed).
@@ -64,19 +79,18 @@ class NavigationHub {
   void add_collected(const std::vector<Vec2>& positions);
   std::vector<Vec2> collected() const;
 
-  /// Wakes every waiter for good (the service stops).
-  void close();
-
  private:
+  std::string service_id_;
   mutable std::mutex mutex_;
-  mutable std::condition_variable published_;
+  std::mutex listeners_mutex_;  // publish calls listeners outside mutex_
+  std::vector<std::pair<int, std::function<void(std::uint64_t)>>> listeners_;
+  int next_listener_ = 1;
   std::deque<NavigationUpdate> recent_;  // the last kKept updates, oldest first
   std::uint64_t next_seq_ = 1;
   std::uint64_t acknowledged_ = 0;
   std::optional<External<Pose2D>> robot_;
   std::optional<External<std::vector<Vec2>>> balls_;
   std::vector<Vec2> collected_;
-  bool closed_ = false;
 };
 
 }  // namespace ballsight
