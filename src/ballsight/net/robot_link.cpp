@@ -1,0 +1,411 @@
+#include "ballsight/net/robot_link.hpp"
+
+#include <utility>  // before Asio's awaitable.hpp, which uses std::exchange (Boost 1.74)
+//
+#include <boost/asio/co_spawn.hpp>
+#include <boost/asio/detached.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/post.hpp>
+#include <boost/asio/redirect_error.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/use_awaitable.hpp>
+#include <boost/asio/use_future.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <charconv>
+
+#include "ballsight/core/angle.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/net/navigation_hub.hpp"
+
+namespace ballsight {
+namespace {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+using tcp = asio::ip::tcp;
+using asio::awaitable;
+using nlohmann::json;
+using Response = http::response<http::string_body>;
+
+/// The service answered, but not as a navigation service would (the link does not retry).
+struct Refused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+awaitable<beast::tcp_stream> connect(const RobotLinkOptions& o) {
+  auto executor = co_await asio::this_coro::executor;
+  tcp::resolver resolver(executor);
+  const auto endpoints =
+      co_await resolver.async_resolve(o.host, std::to_string(o.port), asio::use_awaitable);
+  beast::tcp_stream stream(executor);
+  stream.expires_after(o.io_timeout);
+  co_await stream.async_connect(endpoints, asio::use_awaitable);
+  co_return stream;
+}
+
+// Coroutines take their strings by value: a reference could outlive what it refers to.
+awaitable<Response> exchange(beast::tcp_stream& stream, const RobotLinkOptions& o, http::verb verb,
+                             std::string target, std::string body, std::chrono::milliseconds wait) {
+  http::request<http::string_body> req{verb, target, 11};
+  req.set(http::field::host, o.host);
+  req.keep_alive(true);
+  if (!o.token.empty()) req.set(http::field::authorization, "Bearer " + o.token);
+  if (!body.empty()) req.set(http::field::content_type, "application/json");
+  req.body() = body;
+  req.prepare_payload();
+  stream.expires_after(o.io_timeout + wait);
+  co_await http::async_write(stream, req, asio::use_awaitable);
+  beast::flat_buffer buffer;
+  Response res;
+  co_await http::async_read(stream, buffer, res, asio::use_awaitable);
+  co_return res;
+}
+
+/// Requests on one keep-alive connection, made again once when it was lost.
+class HttpClient {
+ public:
+  explicit HttpClient(const RobotLinkOptions& o) : options_(o) {}
+
+  awaitable<Response> request(http::verb verb, std::string target, std::string body = "",
+                              std::chrono::milliseconds wait = std::chrono::milliseconds(0)) {
+    for (int attempt = 0;; ++attempt) {
+      bool reused = stream_.has_value();
+      try {
+        if (!stream_) stream_.emplace(co_await connect(options_));
+        Response res = co_await exchange(*stream_, options_, verb, target, body, wait);
+        if (!res.keep_alive()) stream_.reset();
+        co_return res;
+      } catch (const boost::system::system_error&) {
+        stream_.reset();
+        if (!reused || attempt > 0) throw;  // a fresh connection failed: the service is away
+      }
+    }
+  }
+  void close() {
+    if (stream_) stream_->close();
+  }
+
+ private:
+  RobotLinkOptions options_;
+  std::optional<beast::tcp_stream> stream_;
+};
+
+std::vector<Vec2> points(const json& list, const std::string& where) {
+  require(list.is_array(), where, "expected a list of points");
+  std::vector<Vec2> out;
+  for (const json& p : list) {
+    if (p.is_array() && p.size() == 2 && p[0].is_number() && p[1].is_number()) {
+      out.emplace_back(p[0].get<double>(), p[1].get<double>());
+    } else if (p.is_object() && p.contains("x_m") && p.contains("y_m") && p["x_m"].is_number() &&
+               p["y_m"].is_number()) {
+      out.emplace_back(p["x_m"].get<double>(), p["y_m"].get<double>());
+    } else {
+      require(false, where, "expected [x, y] or {\"x_m\", \"y_m\"}");
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+RobotLinkOptions RobotLinkOptions::from_url(const std::string& url, const std::string& where) {
+  std::string rest = url;
+  if (rest.rfind("http://", 0) == 0) rest = rest.substr(7);
+  while (!rest.empty() && rest.back() == '/') rest.pop_back();
+  const std::size_t colon = rest.rfind(':');
+  require(colon != std::string::npos && colon > 0, where,
+          "expected http://HOST:PORT, got '" + url + "'");
+  unsigned port = 0;
+  const std::string digits = rest.substr(colon + 1);
+  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), port);
+  require(ec == std::errc() && ptr == digits.data() + digits.size() && port >= 1 && port <= 65535,
+          where, "port must be an integer in [1, 65535], got '" + digits + "'");
+  RobotLinkOptions o;
+  o.host = rest.substr(0, colon);
+  o.port = static_cast<unsigned short>(port);
+  return o;
+}
+
+void RobotLinkOptions::validate() const {
+  require(!host.empty(), "host", "must not be empty");
+  require(poll_wait.count() >= 0 && poll_wait.count() <= 30000, "poll_wait", "must be 0-30 s");
+  require(io_timeout.count() >= 100, "io_timeout", "must be at least 100 ms");
+  require(keep >= 1, "keep", "must be at least 1");
+  backoff.validate();
+}
+
+LinkUpdate parse_link_update(const json& u) {
+  require(u.is_object(), "update", "expected an object");
+  const auto field = [&](const char* key) -> const json& {
+    require(u.contains(key), std::string("update.") + key, "missing");
+    return u[key];
+  };
+  LinkUpdate out;
+  require(field("seq").is_number_unsigned(), "update.seq", "expected an unsigned integer");
+  out.seq = u["seq"].get<std::uint64_t>();
+  require(field("service_id").is_string(), "update.service_id", "expected a string");
+  out.service_id = u["service_id"].get<std::string>();
+  require(field("capture_time_ns").is_number_integer() && field("published_ns").is_number_integer(),
+          "update", "expected integer capture_time_ns and published_ns");
+  out.capture_time_ns = u["capture_time_ns"].get<std::int64_t>();
+  out.published_ns = u["published_ns"].get<std::int64_t>();
+  const json& world = field("world");
+  require(world.is_object() && world.contains("balls"), "update.world", "expected balls");
+  out.balls_m = points(world["balls"], "update.world.balls");
+  if (world.contains("robot") && world["robot"].is_object()) {
+    const json& r = world["robot"];
+    require(r.contains("heading_deg") && r["heading_deg"].is_number(), "update.world.robot",
+            "expected heading_deg");
+    out.robot = Pose2D{points(json::array({r}), "update.world.robot")[0],
+                       rad_from_deg(r["heading_deg"].get<double>())};
+  }
+  const json& route = field("route");
+  require(route.is_object() && route.contains("waypoints_m") && route.contains("visits_m"),
+          "update.route", "expected waypoints_m and visits_m");
+  out.waypoints_m = points(route["waypoints_m"], "update.route.waypoints_m");
+  out.visits_m = points(route["visits_m"], "update.route.visits_m");
+  out.raw = u;
+  return out;
+}
+
+struct RobotLink::Impl {
+  explicit Impl(const RobotLinkOptions& o) : options(o), writer(o) {}
+
+  RobotLinkOptions options;
+  asio::io_context io{1};  // the receiver's
+  std::thread thread;
+  std::atomic<bool> stopping{false};
+  std::function<void()> close_receiver;  // on io's thread
+
+  mutable std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<LinkUpdate> ready;
+  LinkStatus status;
+  std::uint64_t last_seq = 0;
+  std::string service_id;
+
+  std::mutex write_mutex;
+  asio::io_context write_io{1};
+  HttpClient writer;
+
+  /// Hands `update` to the robot unless it was delivered already. True when it was new.
+  bool deliver(const json& update);
+  std::string resume_query();
+  awaitable<void> receive();
+  awaitable<void> receive_stream();
+  awaitable<void> receive_polls();
+  bool write(http::verb verb, const std::string& target, const json& body);
+};
+
+std::string RobotLink::Impl::resume_query() {
+  const std::lock_guard lock(mutex);
+  std::string q = "after=" + std::to_string(last_seq);
+  if (!service_id.empty()) q += "&service=" + service_id;
+  return q;
+}
+
+bool RobotLink::Impl::deliver(const json& raw) {
+  LinkUpdate u = parse_link_update(raw);
+  u.received_ns = utc_now_ns();
+  {
+    const std::lock_guard lock(mutex);
+    if (u.service_id == service_id && u.seq <= last_seq) return false;
+    if (u.service_id == service_id) status.gaps += u.seq - last_seq - 1;
+    service_id = u.service_id;
+    last_seq = u.seq;
+    ++status.delivered;
+    ready.push_back(std::move(u));
+    if (ready.size() > options.keep) ready.pop_front();
+  }
+  changed.notify_all();
+  return true;
+}
+
+awaitable<void> RobotLink::Impl::receive_stream() {
+  beast::tcp_stream stream = co_await connect(options);
+  stream.expires_never();
+  websocket::stream<beast::tcp_stream> ws(std::move(stream));
+  websocket::stream_base::timeout timeout{};
+  timeout.handshake_timeout = options.io_timeout;
+  timeout.idle_timeout = options.io_timeout;  // the service pings an idle client
+  timeout.keep_alive_pings = false;
+  ws.set_option(timeout);
+  if (!options.token.empty()) {
+    ws.set_option(
+        websocket::stream_base::decorator([token = options.token](websocket::request_type& req) {
+          req.set(http::field::authorization, "Bearer " + token);
+        }));
+  }
+  close_receiver = [&ws] {
+    beast::error_code ignored;
+    beast::get_lowest_layer(ws).socket().close(ignored);
+  };
+  websocket::response_type answer;
+  beast::error_code ec;
+  co_await ws.async_handshake(answer, options.host, "/api/v1/stream?" + resume_query(),
+                              asio::redirect_error(asio::use_awaitable, ec));
+  if (ec == websocket::error::upgrade_declined) {
+    throw Refused("the stream was refused (" + std::to_string(answer.result_int()) + ")");
+  }
+  if (ec) throw boost::system::system_error(ec);
+  {
+    const std::lock_guard lock(mutex);
+    status.connected = true;
+    status.transport = "websocket";
+  }
+  beast::flat_buffer buffer;
+  while (!stopping) {
+    co_await ws.async_read(buffer, asio::use_awaitable);
+    const json message = json::parse(beast::buffers_to_string(buffer.data()), nullptr, false);
+    buffer.consume(buffer.size());
+    if (message.is_object() && message.value("topic", "") == "navigation") {
+      deliver(message.at("update"));
+    }
+  }
+}
+
+awaitable<void> RobotLink::Impl::receive_polls() {
+  HttpClient client(options);
+  close_receiver = [&client] { client.close(); };
+  while (!stopping) {
+    const Response res =
+        co_await client.request(http::verb::get,
+                                "/api/v1/navigation?" + resume_query() +
+                                    "&timeout_ms=" + std::to_string(options.poll_wait.count()),
+                                "", options.poll_wait);
+    {
+      const std::lock_guard lock(mutex);
+      status.connected = true;
+      status.transport = "long-poll";
+    }
+    if (res.result_int() == 200) {
+      deliver(json::parse(res.body()));
+    } else if (res.result_int() != 204) {
+      throw Refused("long-poll answered " + std::to_string(res.result_int()) + ": " + res.body());
+    }
+  }
+}
+
+awaitable<void> RobotLink::Impl::receive() {
+  bool websocket = options.websocket;
+  int failures = 0;
+  asio::steady_timer pause(io);
+  while (!stopping) {
+    const std::uint64_t before = status.delivered;
+    std::string error;
+    try {
+      if (websocket) {
+        co_await receive_stream();
+      } else {
+        co_await receive_polls();
+      }
+    } catch (const Refused& e) {
+      error = e.what();
+      if (websocket) websocket = false;  // try long-polling at once
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    close_receiver = {};
+    if (stopping) break;
+    {
+      const std::lock_guard lock(mutex);
+      if (status.connected) ++status.reconnects;
+      status.connected = false;
+      status.last_error = error;
+      failures = status.delivered > before ? 1 : failures + 1;
+    }
+    pause.expires_after(options.backoff.after(failures));
+    close_receiver = [&pause] { pause.cancel(); };
+    beast::error_code ec;
+    co_await pause.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+    close_receiver = {};
+  }
+}
+
+RobotLink::RobotLink(const RobotLinkOptions& options) : impl_(std::make_unique<Impl>(options)) {
+  options.validate();
+  Impl& s = *impl_;
+  asio::co_spawn(s.io, s.receive(), asio::detached);
+  s.thread = std::thread([&s] { s.io.run(); });
+}
+
+RobotLink::~RobotLink() {
+  stop();
+}
+
+void RobotLink::stop() {
+  Impl& s = *impl_;
+  if (s.stopping.exchange(true)) return;
+  asio::post(s.io, [&s] {
+    if (s.close_receiver) s.close_receiver();
+  });
+  s.thread.join();
+  s.changed.notify_all();
+}
+
+std::optional<LinkUpdate> RobotLink::next(std::chrono::milliseconds timeout) {
+  Impl& s = *impl_;
+  std::unique_lock lock(s.mutex);
+  s.changed.wait_for(lock, timeout, [&] { return !s.ready.empty() || s.stopping; });
+  if (s.ready.empty()) return std::nullopt;
+  LinkUpdate u = std::move(s.ready.front());
+  s.ready.pop_front();
+  return u;
+}
+
+std::optional<LinkUpdate> RobotLink::latest(std::chrono::milliseconds timeout) {
+  Impl& s = *impl_;
+  std::unique_lock lock(s.mutex);
+  s.changed.wait_for(lock, timeout, [&] { return !s.ready.empty() || s.stopping; });
+  if (s.ready.empty()) return std::nullopt;
+  LinkUpdate u = std::move(s.ready.back());
+  s.ready.clear();
+  return u;
+}
+
+bool RobotLink::Impl::write(http::verb verb, const std::string& target, const json& body) {
+  const std::lock_guard lock(write_mutex);
+  std::string error;
+  try {
+    auto done =
+        asio::co_spawn(write_io, writer.request(verb, target, body.dump()), asio::use_future);
+    write_io.restart();
+    write_io.run();
+    const Response res = done.get();
+    if (res.result_int() == 200) return true;
+    error = target + " answered " + std::to_string(res.result_int()) + ": " + res.body();
+  } catch (const std::exception& e) {
+    error = target + ": " + e.what();
+  }
+  const std::lock_guard status_lock(mutex);
+  status.last_error = error;
+  return false;
+}
+
+bool RobotLink::acknowledge(std::uint64_t seq) {
+  return impl_->write(http::verb::post, "/api/v1/navigation/ack", {{"seq", seq}});
+}
+
+bool RobotLink::report_collected(const std::vector<Vec2>& positions) {
+  json balls = json::array();
+  for (const Vec2& p : positions) balls.push_back({{"x_m", p.x()}, {"y_m", p.y()}});
+  return impl_->write(http::verb::post, "/api/v1/collected", {{"balls", balls}});
+}
+
+bool RobotLink::set_pose(const Pose2D& pose) {
+  return impl_->write(http::verb::put, "/api/v1/robot",
+                      {{"x_m", pose.position.x()},
+                       {"y_m", pose.position.y()},
+                       {"heading_deg", deg_from_rad(pose.heading_rad)}});
+}
+
+LinkStatus RobotLink::status() const {
+  const std::lock_guard lock(impl_->mutex);
+  return impl_->status;
+}
+
+}  // namespace ballsight

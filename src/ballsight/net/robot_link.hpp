@@ -1,0 +1,96 @@
+#pragma once
+// The robot's side of the navigation service (docs/robot-link.md): a client that receives every
+// navigation update over the WebSocket stream (or, where the stream is refused, by long-polling),
+// acknowledges them, reports collected balls and may set the robot's pose. When the service goes
+// away it reconnects with back-off and resumes after the last sequence number it delivered, so a
+// target is neither lost nor given twice; a restarted service (a new service id) is followed from
+// its first update. Thread-safe; the receiving runs on a thread of its own.
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+#include "ballsight/pipeline/frame_source.hpp"
+
+namespace ballsight {
+
+struct RobotLinkOptions {
+  std::string host = "127.0.0.1";
+  unsigned short port = 8080;
+  std::string token;                           // for acknowledgements, collected balls, pose
+  bool websocket = true;                       // false: long-poll only
+  std::chrono::milliseconds poll_wait{5000};   // a long-poll's timeout_ms
+  std::chrono::milliseconds io_timeout{20000};  // silence after which the link is renewed
+  BackoffOptions backoff{std::chrono::milliseconds(100), std::chrono::milliseconds(2000), 2.0};
+  std::size_t keep = 256;  // updates delivered but not yet taken, at most (oldest dropped)
+
+  /// "http://HOST:PORT" (or "HOST:PORT"); throws InputError naming `where` otherwise.
+  static RobotLinkOptions from_url(const std::string& url, const std::string& where);
+  void validate() const;
+};
+
+/// One navigation update as the robot needs it.
+struct LinkUpdate {
+  std::uint64_t seq = 0;
+  std::string service_id;
+  std::int64_t capture_time_ns = 0;
+  std::int64_t published_ns = 0;
+  std::int64_t received_ns = 0;  // UTC, when this client had it
+  std::optional<Pose2D> robot;   // the robot as the cameras saw it
+  std::vector<Vec2> balls_m;
+  std::vector<Vec2> visits_m;     // where the collector passes, in order
+  std::vector<Vec2> waypoints_m;  // the path to drive
+  nlohmann::json raw;             // the whole update
+};
+
+/// Throws InputError naming the field when `update` is not a navigation update.
+LinkUpdate parse_link_update(const nlohmann::json& update);
+
+struct LinkStatus {
+  bool connected = false;
+  std::string transport;  // "websocket" or "long-poll"
+  std::uint64_t delivered = 0;
+  std::uint64_t gaps = 0;  // updates the service published that this client never got
+  int reconnects = 0;
+  std::string last_error;
+};
+
+class RobotLink {
+ public:
+  explicit RobotLink(const RobotLinkOptions& options);
+  ~RobotLink();  // stops
+  RobotLink(const RobotLink&) = delete;
+  RobotLink& operator=(const RobotLink&) = delete;
+
+  /// The next update not taken yet, oldest first, waiting up to `timeout`.
+  std::optional<LinkUpdate> next(std::chrono::milliseconds timeout);
+  /// The newest update, dropping older ones not taken, waiting up to `timeout`.
+  std::optional<LinkUpdate> latest(std::chrono::milliseconds timeout);
+
+  /// POST /api/v1/navigation/ack. These three return false (and set last_error) when the
+  /// service could not be reached or refused the request.
+  bool acknowledge(std::uint64_t seq);
+  /// POST /api/v1/collected with the balls' positions.
+  bool report_collected(const std::vector<Vec2>& positions);
+  /// PUT /api/v1/robot.
+  bool set_pose(const Pose2D& pose);
+
+  LinkStatus status() const;
+  void stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ballsight

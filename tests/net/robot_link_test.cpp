@@ -1,0 +1,148 @@
+// The robot's client against the real server on 127.0.0.1: every update once and in order, over
+// the stream or by long-polling; writes reach the service; the link survives the service going
+// away and coming back, on the same run (resumed) or a new one (followed from its start).
+#include "ballsight/net/robot_link.hpp"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/net/http_server.hpp"
+
+namespace ballsight {
+namespace {
+
+constexpr const char* kToken = "0123456789abcdef0123";
+using std::chrono::milliseconds;
+
+HttpServerOptions server_options(unsigned short port = 0) {
+  HttpServerOptions o;
+  o.port = port;
+  o.token = kToken;
+  return o;
+}
+
+RobotLinkOptions link_options(unsigned short port, bool websocket) {
+  RobotLinkOptions o;
+  o.port = port;
+  o.token = kToken;
+  o.websocket = websocket;
+  o.poll_wait = milliseconds(500);
+  o.backoff = {milliseconds(20), milliseconds(200), 2.0};
+  return o;
+}
+
+NavigationUpdate update(double x) {
+  NavigationUpdate u;
+  u.capture_time_ns = utc_now_ns();
+  RobotPoseEstimate robot;
+  robot.pose = {Vec2(x, 1.0), 0.25};
+  u.world.robot = robot;
+  u.world.balls.push_back({Vec2(3, 4), Eigen::Matrix2d::Zero(), {0}});
+  u.route.waypoints_m = {Vec2(x, 1.0), Vec2(3, 4)};
+  u.route.visits_m = {Vec2(3, 4)};
+  return u;
+}
+
+/// The seqs of `count` updates taken from `link`, waiting up to 5 s for each.
+std::vector<std::uint64_t> take(RobotLink& link, int count) {
+  std::vector<std::uint64_t> seqs;
+  for (int k = 0; k < count; ++k) {
+    const std::optional<LinkUpdate> u = link.next(milliseconds(5000));
+    if (!u) break;
+    seqs.push_back(u->seq);
+  }
+  return seqs;
+}
+
+std::vector<std::uint64_t> range(std::uint64_t first, std::uint64_t last) {
+  std::vector<std::uint64_t> out;
+  for (std::uint64_t s = first; s <= last; ++s) out.push_back(s);
+  return out;
+}
+
+class RobotLinkTransports : public testing::TestWithParam<bool> {};
+
+TEST_P(RobotLinkTransports, EveryUpdateOnceInOrderAndWritesReachTheService) {
+  NavigationHub hub;
+  ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
+  HttpServer server(server_options(), context);
+  hub.publish(update(0.5));
+  RobotLink link(link_options(server.port(), GetParam()));
+  const std::optional<LinkUpdate> first = link.next(milliseconds(5000));
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->seq, 1u);
+  EXPECT_EQ(first->service_id, hub.service_id());
+  ASSERT_TRUE(first->robot);
+  EXPECT_DOUBLE_EQ(first->robot->position.x(), 0.5);
+  EXPECT_NEAR(first->robot->heading_rad, 0.25, 1e-12);
+  EXPECT_EQ(first->waypoints_m.size(), 2u);
+  EXPECT_GE(first->received_ns, first->published_ns);
+  for (int k = 0; k < 30; ++k) {
+    hub.publish(update(k));
+    std::this_thread::sleep_for(milliseconds(2));
+  }
+  EXPECT_EQ(take(link, 30), range(2, 31));
+  EXPECT_EQ(link.status().transport, GetParam() ? "websocket" : "long-poll");
+  EXPECT_EQ(link.status().gaps, 0u);
+  EXPECT_TRUE(link.acknowledge(31));
+  EXPECT_EQ(hub.acknowledged(), 31u);
+  EXPECT_TRUE(link.report_collected({Vec2(3, 4)})) << link.status().last_error;
+  EXPECT_EQ(hub.collected(), std::vector<Vec2>{Vec2(3, 4)});
+  EXPECT_TRUE(link.set_pose({Vec2(-2, 1), 0.0}));
+  ASSERT_TRUE(hub.robot());
+  EXPECT_EQ(hub.robot()->value.position, Vec2(-2, 1));
+  EXPECT_FALSE(link.acknowledge(99));  // never published: refused, and said why
+  EXPECT_NE(link.status().last_error.find("409"), std::string::npos) << link.status().last_error;
+}
+
+TEST_P(RobotLinkTransports, ResumesAfterTheServiceComesBackAndFollowsANewRun) {
+  NavigationHub hub;
+  ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
+  auto server = std::make_unique<HttpServer>(server_options(), context);
+  const unsigned short port = server->port();
+  RobotLink link(link_options(port, GetParam()));
+  for (int k = 0; k < 5; ++k) hub.publish(update(k));
+  EXPECT_EQ(take(link, 5), range(1, 5));
+  // The service goes away; the pipeline publishes on; the same run comes back on the same port.
+  server.reset();
+  for (int k = 0; k < 5; ++k) hub.publish(update(k));
+  std::this_thread::sleep_for(milliseconds(100));
+  server = std::make_unique<HttpServer>(server_options(port), context);
+  EXPECT_EQ(take(link, 5), range(6, 10));  // nothing lost, nothing twice
+  EXPECT_GE(link.status().reconnects, 1);
+  // A new run of the service (its seq begins again) is followed from its first update.
+  server.reset();
+  NavigationHub restarted;
+  ApiContext context2{restarted, {"ne"}, SiteCourt{}, 0.0335};
+  server = std::make_unique<HttpServer>(server_options(port), context2);
+  for (int k = 0; k < 3; ++k) restarted.publish(update(k));
+  const std::optional<LinkUpdate> u = link.next(milliseconds(5000));
+  ASSERT_TRUE(u);
+  EXPECT_EQ(u->seq, 1u);
+  EXPECT_EQ(u->service_id, restarted.service_id());
+  EXPECT_EQ(take(link, 2), range(2, 3));
+  EXPECT_EQ(link.status().gaps, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(StreamAndLongPoll, RobotLinkTransports, testing::Bool(),
+                         [](const auto& p) { return p.param ? "Stream" : "LongPoll"; });
+
+TEST(RobotLink, OptionsFromAUrlAndBadUpdatesAreNamed) {
+  const RobotLinkOptions o = RobotLinkOptions::from_url("http://10.0.0.7:8080/", "--server");
+  EXPECT_EQ(o.host, "10.0.0.7");
+  EXPECT_EQ(o.port, 8080);
+  EXPECT_EQ(RobotLinkOptions::from_url("localhost:9", "--server").host, "localhost");
+  EXPECT_THROW(RobotLinkOptions::from_url("http://host", "--server"), InputError);
+  EXPECT_THROW(RobotLinkOptions::from_url("http://host:70000", "--server"), InputError);
+  try {
+    parse_link_update({{"seq", 1u}});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("update.service_id"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace ballsight

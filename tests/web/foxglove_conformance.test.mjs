@@ -1,0 +1,168 @@
+// ballsight's Foxglove WebSocket server (src/ballsight/net/foxglove.cpp) against the official
+// client, @foxglove/ws-protocol over ws. Needs scripts/setup-npm; run from the repository root:
+//   BALLSIGHT_BIN=build/bin/ballsight node --test tests/web/foxglove_conformance.test.mjs
+import assert from "node:assert/strict";
+import { spawn } from "node:child_process";
+import { existsSync, mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { createInterface } from "node:readline";
+import test from "node:test";
+import { setTimeout as sleep } from "node:timers/promises";
+
+const WAIT_MS = 20_000; // every wait is bounded by this
+const TOPICS = ["/court", "/balls", "/robot_pose", "/route", "/navigation"];
+const modules = new URL("../../node_modules/", import.meta.url);
+const decoder = new TextDecoder();
+
+/** Polls `done` until it is true, or fails after `ms` naming `what`. */
+async function until(done, what, ms = WAIT_MS) {
+  const end = Date.now() + ms;
+  while (!done()) {
+    if (Date.now() > end) throw new Error(`timed out after ${ms} ms waiting for ${what}`);
+    await sleep(50);
+  }
+}
+
+/** The port of `ballsight serve`, from its "ballsight serve: http://127.0.0.1:PORT/..." line. */
+function listeningPort(child, stderr) {
+  return new Promise((resolve, reject) => {
+    const timer = setTimeout(() => reject(new Error(`no listening line in ${WAIT_MS} ms`)), WAIT_MS);
+    createInterface({ input: child.stdout }).on("line", (line) => {
+      const m = /^ballsight serve: http:\/\/127\.0\.0\.1:(\d+)\//.exec(line);
+      if (m) clearTimeout(timer), resolve(Number(m[1]));
+    });
+    child.once("error", (e) => (clearTimeout(timer), reject(e)));
+    child.once("exit", (code, signal) => {
+      clearTimeout(timer);
+      reject(new Error(`ballsight exited (${code ?? signal}) before listening:\n${stderr()}`));
+    });
+  });
+}
+
+/** SIGTERM, then SIGKILL if it has not exited within 10 s. */
+async function stop(child) {
+  if (child.exitCode !== null || child.signalCode !== null) return;
+  const exited = new Promise((resolve) => child.once("exit", resolve));
+  child.kill("SIGTERM");
+  const timer = setTimeout(() => child.kill("SIGKILL"), 10_000);
+  await exited;
+  clearTimeout(timer);
+}
+
+/** Timestamps strictly increasing. */
+function assertIncreasing(messages, what) {
+  for (let i = 1; i < messages.length; ++i) {
+    const [a, b] = [messages[i - 1].timestamp, messages[i].timestamp];
+    assert.ok(b > a, `${what}: timestamp ${b} after ${a} (message ${i})`);
+  }
+}
+
+test("ballsight serves Foxglove WebSocket v1 to @foxglove/ws-protocol", { timeout: 180_000 }, async (t) => {
+  const bin = process.env.BALLSIGHT_BIN;
+  if (!bin) return t.skip("BALLSIGHT_BIN is not set (the path of the ballsight executable)");
+  if (!existsSync(new URL("@foxglove/ws-protocol/package.json", modules)) || !existsSync(new URL("ws/package.json", modules))) {
+    return t.skip("node_modules is missing: run scripts/setup-npm");
+  }
+  const { default: protocol } = await import("@foxglove/ws-protocol"); // CJS
+  const { FoxgloveClient } = protocol;
+  const { default: WebSocket } = await import("ws");
+
+  const dir = mkdtempSync(join(tmpdir(), "ballsight-foxglove-"));
+  const args = ["serve", "--sim", "--listen", "127.0.0.1:0", "--token-file", join(dir, "token"), "--duration", "60"];
+  const child = spawn(bin, args, { stdio: ["ignore", "pipe", "pipe"] });
+  let stderr = "";
+  child.stderr.on("data", (d) => (stderr = (stderr + d).slice(-4000)));
+  t.after(async () => {
+    await stop(child);
+    rmSync(dir, { recursive: true, force: true });
+  });
+  const url = `ws://127.0.0.1:${await listeningPort(child, () => stderr)}/`;
+
+  const ws = new WebSocket(url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]);
+  const client = new FoxgloveClient({ ws });
+  t.after(() => client.close());
+  const seen = { serverInfo: null, channels: null, errors: [], statuses: [], inbox: new Map() };
+  client.on("serverInfo", (info) => (seen.serverInfo = info));
+  client.on("advertise", (channels) => (seen.channels = channels));
+  client.on("error", (e) => seen.errors.push(e));
+  client.on("status", (s) => seen.statuses.push(s));
+  client.on("message", ({ subscriptionId, timestamp, data }) => {
+    if (!seen.inbox.has(subscriptionId)) seen.inbox.set(subscriptionId, []);
+    seen.inbox.get(subscriptionId).push({ timestamp, payload: JSON.parse(decoder.decode(data)) });
+  });
+  const inbox = (id) => seen.inbox.get(id) ?? [];
+  const channelId = (topic) => seen.channels.find((c) => c.topic === topic).id;
+
+  await t.test("serverInfo, then an advertise of the JSON channels", async () => {
+    await until(() => seen.serverInfo, "serverInfo");
+    assert.equal(seen.serverInfo.name, "ballsight");
+    assert.ok(Array.isArray(seen.serverInfo.capabilities));
+    assert.equal(ws.protocol, "foxglove.websocket.v1");
+    await until(() => seen.channels, "advertise");
+    assert.deepEqual(seen.channels.map((c) => c.topic).sort(), [...TOPICS].sort());
+    for (const c of seen.channels) {
+      assert.equal(typeof c.id, "number", c.topic);
+      assert.equal(c.encoding, "json", c.topic);
+      assert.equal(c.schemaEncoding, "jsonschema", c.topic);
+      assert.ok(c.schemaName, c.topic);
+      assert.equal(typeof JSON.parse(c.schema), "object", c.topic);
+    }
+  });
+
+  await t.test("/court is a foxglove.SceneUpdate with lines", async () => {
+    const court = seen.channels.find((c) => c.topic === "/court");
+    assert.equal(court.schemaName, "foxglove.SceneUpdate");
+    const id = client.subscribe(court.id);
+    await until(() => inbox(id).length > 0, "a /court message");
+    const { entities } = inbox(id)[0].payload;
+    assert.ok(Array.isArray(entities) && entities.length > 0, "entities");
+    const lines = entities.flatMap((e) => e.lines ?? []);
+    assert.ok(lines.length > 0, "an entity with lines");
+    assert.ok(lines.every((l) => l.points.length >= 2), "every line has points");
+    client.unsubscribe(id);
+  });
+
+  let navigation, route;
+  await t.test("/navigation and /route stream in order, without gaps", async () => {
+    navigation = client.subscribe(channelId("/navigation"));
+    route = client.subscribe(channelId("/route"));
+    await until(() => inbox(navigation).length >= 4 && inbox(route).length >= 3, "4 /navigation and 3 /route messages");
+    assertIncreasing(inbox(navigation), "/navigation");
+    assertIncreasing(inbox(route), "/route");
+    const seqs = inbox(navigation).map((m) => m.payload.seq);
+    seqs.slice(1).forEach((s, i) => assert.equal(s, seqs[i] + 1, `seq after ${seqs[i]} in ${seqs}`));
+    for (const { timestamp, payload } of inbox(route)) {
+      const { sec, nsec } = payload.timestamp;
+      assert.equal(BigInt(sec) * 1_000_000_000n + BigInt(nsec), timestamp, "route stamp = frame time");
+      assert.ok(Array.isArray(payload.poses), "poses");
+    }
+  });
+
+  await t.test("unsubscribe ends a subscription", async () => {
+    client.unsubscribe(navigation);
+    await sleep(500); // what was in flight
+    const [navigations, routes] = [inbox(navigation).length, inbox(route).length];
+    await until(() => inbox(route).length >= routes + 3, "3 more /route messages");
+    assert.equal(inbox(navigation).length, navigations, "no /navigation after unsubscribe");
+    client.unsubscribe(route);
+  });
+
+  await t.test("no client errors, no error statuses", () => {
+    assert.deepEqual(seen.errors.map(String), []);
+    assert.deepEqual(seen.statuses.filter((s) => s.level >= 2), []);
+  });
+
+  await t.test("foxglove.sdk.v1 is selected when offered", async (st) => {
+    const raw = new WebSocket(url, ["foxglove.sdk.v1"]);
+    st.after(() => raw.terminate());
+    let first = null;
+    raw.once("message", (data, binary) => (first = { data, binary }));
+    raw.on("error", (e) => seen.errors.push(e));
+    await until(() => first || seen.errors.length, "the first message on foxglove.sdk.v1");
+    assert.deepEqual(seen.errors.map(String), []);
+    assert.equal(raw.protocol, "foxglove.sdk.v1");
+    assert.equal(first.binary, false);
+    assert.equal(JSON.parse(first.data.toString()).op, "serverInfo");
+  });
+});
