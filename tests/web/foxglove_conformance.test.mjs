@@ -27,15 +27,20 @@ async function until(done, what, ms = WAIT_MS) {
 /** The port of `ballsight serve`, from its "ballsight serve: http://127.0.0.1:PORT/..." line. */
 function listeningPort(child, stderr) {
   return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error(`no listening line in ${WAIT_MS} ms`)), WAIT_MS);
+    const fail = (error) => {
+      clearTimeout(timer);
+      reject(error);
+    };
+    const timer = setTimeout(() => fail(new Error(`no listening line in ${WAIT_MS} ms`)), WAIT_MS);
     createInterface({ input: child.stdout }).on("line", (line) => {
       const m = /^ballsight serve: http:\/\/127\.0\.0\.1:(\d+)\//.exec(line);
-      if (m) clearTimeout(timer), resolve(Number(m[1]));
-    });
-    child.once("error", (e) => (clearTimeout(timer), reject(e)));
-    child.once("exit", (code, signal) => {
+      if (!m) return;
       clearTimeout(timer);
-      reject(new Error(`ballsight exited (${code ?? signal}) before listening:\n${stderr()}`));
+      resolve(Number(m[1]));
+    });
+    child.once("error", fail);
+    child.once("exit", (code, signal) => {
+      fail(new Error(`ballsight exited (${code ?? signal}) before listening:\n${stderr()}`));
     });
   });
 }
@@ -58,18 +63,21 @@ function assertIncreasing(messages, what) {
   }
 }
 
-test("ballsight serves Foxglove WebSocket v1 to @foxglove/ws-protocol", { timeout: 180_000 }, async (t) => {
+const installed = ["@foxglove/ws-protocol", "ws"].every((name) =>
+  existsSync(new URL(`${name}/package.json`, modules)),
+);
+
+test("Foxglove WebSocket v1 with @foxglove/ws-protocol", { timeout: 180_000 }, async (t) => {
   const bin = process.env.BALLSIGHT_BIN;
   if (!bin) return t.skip("BALLSIGHT_BIN is not set (the path of the ballsight executable)");
-  if (!existsSync(new URL("@foxglove/ws-protocol/package.json", modules)) || !existsSync(new URL("ws/package.json", modules))) {
-    return t.skip("node_modules is missing: run scripts/setup-npm");
-  }
+  if (!installed) return t.skip("node_modules is missing: run scripts/setup-npm");
   const { default: protocol } = await import("@foxglove/ws-protocol"); // CJS
   const { FoxgloveClient } = protocol;
   const { default: WebSocket } = await import("ws");
 
   const dir = mkdtempSync(join(tmpdir(), "ballsight-foxglove-"));
-  const args = ["serve", "--sim", "--listen", "127.0.0.1:0", "--token-file", join(dir, "token"), "--duration", "60"];
+  const args = ["serve", "--sim", "--listen", "127.0.0.1:0", "--duration", "60"];
+  args.push("--token-file", join(dir, "token"));
   const child = spawn(bin, args, { stdio: ["ignore", "pipe", "pipe"] });
   let stderr = "";
   child.stderr.on("data", (d) => (stderr = (stderr + d).slice(-4000)));
@@ -92,7 +100,11 @@ test("ballsight serves Foxglove WebSocket v1 to @foxglove/ws-protocol", { timeou
     seen.inbox.get(subscriptionId).push({ timestamp, payload: JSON.parse(decoder.decode(data)) });
   });
   const inbox = (id) => seen.inbox.get(id) ?? [];
-  const channelId = (topic) => seen.channels.find((c) => c.topic === topic).id;
+  const channel = (topic) => {
+    const found = seen.channels?.find((c) => c.topic === topic);
+    assert.ok(found, `${topic} is advertised`);
+    return found;
+  };
 
   await t.test("serverInfo, then an advertise of the JSON channels", async () => {
     await until(() => seen.serverInfo, "serverInfo");
@@ -111,7 +123,7 @@ test("ballsight serves Foxglove WebSocket v1 to @foxglove/ws-protocol", { timeou
   });
 
   await t.test("/court is a foxglove.SceneUpdate with lines", async () => {
-    const court = seen.channels.find((c) => c.topic === "/court");
+    const court = channel("/court");
     assert.equal(court.schemaName, "foxglove.SceneUpdate");
     const id = client.subscribe(court.id);
     await until(() => inbox(id).length > 0, "a /court message");
@@ -125,21 +137,25 @@ test("ballsight serves Foxglove WebSocket v1 to @foxglove/ws-protocol", { timeou
 
   let navigation, route;
   await t.test("/navigation and /route stream in order, without gaps", async () => {
-    navigation = client.subscribe(channelId("/navigation"));
-    route = client.subscribe(channelId("/route"));
-    await until(() => inbox(navigation).length >= 4 && inbox(route).length >= 3, "4 /navigation and 3 /route messages");
+    navigation = client.subscribe(channel("/navigation").id);
+    route = client.subscribe(channel("/route").id);
+    await until(
+      () => inbox(navigation).length >= 4 && inbox(route).length >= 3,
+      "4 /navigation and 3 /route messages",
+    );
     assertIncreasing(inbox(navigation), "/navigation");
     assertIncreasing(inbox(route), "/route");
     const seqs = inbox(navigation).map((m) => m.payload.seq);
-    seqs.slice(1).forEach((s, i) => assert.equal(s, seqs[i] + 1, `seq after ${seqs[i]} in ${seqs}`));
+    seqs.slice(1).forEach((s, i) => assert.equal(s, seqs[i] + 1, `seq after ${seqs[i]}: ${seqs}`));
     for (const { timestamp, payload } of inbox(route)) {
       const { sec, nsec } = payload.timestamp;
-      assert.equal(BigInt(sec) * 1_000_000_000n + BigInt(nsec), timestamp, "route stamp = frame time");
+      assert.equal(BigInt(sec) * 1_000_000_000n + BigInt(nsec), timestamp, "stamp = frame time");
       assert.ok(Array.isArray(payload.poses), "poses");
     }
   });
 
   await t.test("unsubscribe ends a subscription", async () => {
+    assert.ok(inbox(navigation).length && inbox(route).length, "/navigation and /route running");
     client.unsubscribe(navigation);
     await sleep(500); // what was in flight
     const [navigations, routes] = [inbox(navigation).length, inbox(route).length];

@@ -114,6 +114,7 @@ void HttpServerOptions::validate() const {
           "must be in [1, 10000]");
   require(idle_timeout.count() >= 1, "idle_timeout", "must be at least 1 s");
   require(client_queue >= 1 && client_queue <= 100000, "client_queue", "must be in [1, 100000]");
+  require(client_send_buffer >= 4096, "client_send_buffer", "must be at least 4 KiB");
   require(!token.empty(), "token", "must not be empty");
 }
 
@@ -283,6 +284,8 @@ awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Requ
                                                   std::string subprotocol,
                                                   StreamSubscription subscription) {
   stream.expires_never();  // the WebSocket's own timeout takes over
+  beast::error_code ec;
+  stream.socket().set_option(asio::socket_base::send_buffer_size(options.client_send_buffer), ec);
   auto peer = std::make_shared<Peer>(WebSocket(std::move(stream)), id,
                                      subprotocol.empty() ? "stream" : "foxglove", remote,
                                      options.client_queue);
@@ -304,7 +307,6 @@ awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Requ
       res.set(http::field::sec_websocket_protocol, subprotocol);
     }));
   }
-  beast::error_code ec;
   co_await ws.async_accept(req, asio::redirect_error(asio::use_awaitable, ec));
   if (ec) co_return;
   const auto text = [](std::string s) {

@@ -31,6 +31,9 @@ struct HttpServerOptions {
   int max_connections = 256;
   std::chrono::seconds idle_timeout{30};
   std::size_t client_queue = 128;  // messages waiting for one WebSocket client, at most
+  /// The kernel's send buffer of a WebSocket client (SO_SNDBUF): small, so that a slow client's
+  /// backlog waits in its queue, where the oldest is dropped, not in the kernel, where it ages.
+  int client_send_buffer = 64 * 1024;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
