@@ -97,7 +97,11 @@ test("Foxglove WebSocket v1 with @foxglove/ws-protocol", { timeout: 180_000 }, a
   client.on("status", (s) => seen.statuses.push(s));
   client.on("message", ({ subscriptionId, timestamp, data }) => {
     if (!seen.inbox.has(subscriptionId)) seen.inbox.set(subscriptionId, []);
-    seen.inbox.get(subscriptionId).push({ timestamp, payload: JSON.parse(decoder.decode(data)) });
+    try {
+      seen.inbox.get(subscriptionId).push({ timestamp, payload: JSON.parse(decoder.decode(data)) });
+    } catch (e) {
+      seen.errors.push(new Error(`subscription ${subscriptionId}: payload is not JSON: ${e}`));
+    }
   });
   const inbox = (id) => seen.inbox.get(id) ?? [];
   const channel = (topic) => {

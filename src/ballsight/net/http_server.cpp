@@ -335,8 +335,12 @@ awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Requ
     co_await ws.async_read(buffer, asio::redirect_error(asio::use_awaitable, ec));
     if (ec) break;
     if (peer->foxglove && ws.got_text()) {
+      // A new subscription gets the update broadcast() handled last (not the hub's latest,
+      // which broadcast() may be about to send: it would arrive twice).
+      const std::optional<NavigationUpdate> handled =
+          peer->last_seq > 0 ? context.hub.first_after(peer->last_seq - 1) : std::nullopt;
       FoxgloveOutput out =
-          peer->foxglove->on_text(beast::buffers_to_string(buffer.data()), context.hub.latest());
+          peer->foxglove->on_text(beast::buffers_to_string(buffer.data()), handled);
       for (std::string& m : out.text) peer->push(text(std::move(m)));
       for (std::string& m : out.binary) {
         peer->push({std::make_shared<const std::string>(std::move(m)), true});

@@ -1,0 +1,217 @@
+// The navigation service on loopback (issue: navigation service). Latency counters are in
+// milliseconds, per update and client, measured from the UTC times the update carries:
+// - BM_PublishToReceive/N: hub.publish() -> parsed at each of N RobotLink clients (WebSocket);
+//   target p99 <= 2 ms with 10 clients.
+// - BM_LongPollRoundTrip: one long-poll answered at once, request to parsed reply (keep-alive).
+// - BM_Throughput100Clients: updates per second delivered to each of 100 WebSocket clients.
+// - BM_WholeChain: four simulated frames captured -> pipeline -> plan -> publish -> parsed at a
+//   client (`serve --sim` flat out); target p50 <= 15 ms on the 2-core machine.
+// Run: build/bin/bench_net
+
+#include <benchmark/benchmark.h>
+
+#include <utility>  // before Asio's awaitable.hpp (Boost 1.74)
+//
+#include <algorithm>
+#include <boost/asio/co_spawn.hpp>
+#include <boost/asio/detached.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/redirect_error.hpp>
+#include <boost/asio/use_awaitable.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <thread>
+
+#include "ballsight/eval/simulated_service.hpp"
+#include "ballsight/net/http_server.hpp"
+#include "ballsight/net/robot_link.hpp"
+
+namespace {
+
+using namespace ballsight;
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+using tcp = asio::ip::tcp;
+using std::chrono::milliseconds;
+
+constexpr const char* kToken = "0123456789abcdef0123";
+
+/// A service on a free loopback port around `hub`.
+struct LocalService {
+  explicit LocalService(NavigationHub& hub) : context(hub, {"ne", "se", "sw", "nw"}, {}, 0.0335) {
+    HttpServerOptions o;
+    o.port = 0;
+    o.token = kToken;
+    o.client_queue = 4096;
+    server = std::make_unique<HttpServer>(o, context);
+  }
+  ApiContext context;
+  std::unique_ptr<HttpServer> server;
+};
+
+/// An update the size of a real one: 30 balls and a route through them.
+NavigationUpdate sized_update() {
+  NavigationUpdate u;
+  u.capture_time_ns = utc_now_ns();
+  for (int b = 0; b < 30; ++b) {
+    const Vec2 p(-10.0 + 0.7 * b, 0.13 * (b % 17) - 1.0);
+    u.world.balls.push_back({p, Eigen::Matrix2d::Identity() * 1e-4, {0, 1}});
+    u.route.visits_m.push_back(p);
+    u.route.waypoints_m.push_back(p);
+  }
+  return u;
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+void report(benchmark::State& state, const std::vector<double>& ms) {
+  state.counters["p50_ms"] = percentile(ms, 0.50);
+  state.counters["p99_ms"] = percentile(ms, 0.99);
+  state.counters["max_ms"] = ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end());
+}
+
+RobotLinkOptions link_to(unsigned short port) {
+  RobotLinkOptions o;
+  o.port = port;
+  o.token = kToken;
+  return o;
+}
+
+void BM_PublishToReceive(benchmark::State& state) {
+  NavigationHub hub;
+  LocalService service(hub);
+  std::vector<std::unique_ptr<RobotLink>> links;
+  for (int c = 0; c < state.range(0); ++c) {
+    links.push_back(std::make_unique<RobotLink>(link_to(service.server->port())));
+  }
+  while (service.server->clients().size() < links.size())
+    std::this_thread::sleep_for(milliseconds(1));
+  std::vector<double> ms;
+  for (auto _ : state) {
+    hub.publish(sized_update());
+    for (auto& link : links) {
+      const std::optional<LinkUpdate> u = link->next(milliseconds(5000));
+      if (!u) {
+        state.SkipWithError("an update did not arrive");
+        return;
+      }
+      ms.push_back(1e-6 * static_cast<double>(u->received_ns - u->published_ns));
+    }
+    state.PauseTiming();  // updates spaced as a 100 Hz pipeline would publish them
+    std::this_thread::sleep_for(milliseconds(10));
+    state.ResumeTiming();
+  }
+  report(state, ms);
+}
+BENCHMARK(BM_PublishToReceive)
+    ->Arg(1)
+    ->Arg(10)
+    ->Iterations(500)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_LongPollRoundTrip(benchmark::State& state) {
+  NavigationHub hub;
+  LocalService service(hub);
+  hub.publish(sized_update());
+  asio::io_context io;
+  beast::tcp_stream stream(io);
+  stream.connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), service.server->port()));
+  beast::flat_buffer buffer;
+  for (auto _ : state) {
+    http::request<http::string_body> req{http::verb::get,
+                                         "/api/v1/navigation?after=0&timeout_ms=1000", 11};
+    req.set(http::field::host, "127.0.0.1");
+    http::write(stream, req);
+    http::response<http::string_body> res;
+    http::read(stream, buffer, res);
+    benchmark::DoNotOptimize(parse_link_update(nlohmann::json::parse(res.body())));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LongPollRoundTrip)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+asio::awaitable<void> count_messages(unsigned short port, std::atomic<std::uint64_t>& received,
+                                     std::atomic<int>& connected) {
+  auto executor = co_await asio::this_coro::executor;
+  websocket::stream<beast::tcp_stream> ws(executor);
+  co_await beast::get_lowest_layer(ws).async_connect(
+      tcp::endpoint(asio::ip::make_address("127.0.0.1"), port), asio::use_awaitable);
+  co_await ws.async_handshake("127.0.0.1", "/api/v1/stream", asio::use_awaitable);
+  ++connected;
+  beast::flat_buffer buffer;
+  beast::error_code ec;
+  while (!ec) {
+    co_await ws.async_read(buffer, asio::redirect_error(asio::use_awaitable, ec));
+    buffer.consume(buffer.size());
+    ++received;
+  }
+}
+
+void BM_Throughput100Clients(benchmark::State& state) {
+  constexpr int kClients = 100, kBurst = 50;
+  NavigationHub hub;
+  LocalService service(hub);
+  asio::io_context io;
+  std::atomic<std::uint64_t> received{0};
+  std::atomic<int> connected{0};
+  for (int c = 0; c < kClients; ++c) {
+    asio::co_spawn(io, count_messages(service.server->port(), received, connected), asio::detached);
+  }
+  std::thread clients([&] { io.run(); });
+  while (connected < kClients) std::this_thread::sleep_for(milliseconds(1));
+  std::uint64_t expected = 0;
+  for (auto _ : state) {  // a burst of updates, until every client has read all of them
+    for (int k = 0; k < kBurst; ++k) hub.publish(sized_update());
+    expected += kClients * kBurst;
+    while (received < expected) std::this_thread::yield();
+  }
+  state.counters["updates_per_s_each"] = benchmark::Counter(
+      static_cast<double>(state.iterations() * kBurst), benchmark::Counter::kIsRate);
+  service.server->stop();
+  clients.join();
+}
+BENCHMARK(BM_Throughput100Clients)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_WholeChain(benchmark::State& state) {
+  SimulatedServiceOptions options;
+  options.max_rate_hz = 1000.0;  // flat out: the chain is timed from each capture
+  SimulatedCourtService simulated(options);
+  NavigationHub hub;
+  ApiContext context{hub, simulated.camera_names(), simulated.site().court,
+                     simulated.site().ball_radius_m};
+  HttpServerOptions o;
+  o.port = 0;
+  o.token = kToken;
+  HttpServer server(o, context);
+  RobotLink link(link_to(server.port()));
+  std::atomic<bool> stop{false};
+  std::thread loop([&] { simulated.run(hub, stop); });
+  std::vector<double> ms;
+  for (auto _ : state) {
+    const std::optional<LinkUpdate> u = link.next(milliseconds(10000));
+    if (!u) {
+      state.SkipWithError("no update arrived");
+      break;
+    }
+    ms.push_back(1e-6 * static_cast<double>(u->received_ns - u->capture_time_ns));
+  }
+  stop = true;
+  loop.join();
+  report(state, ms);
+  state.counters["pipeline_ms"] = simulated.health()["pipeline_ms"].get<double>();
+  state.counters["plan_ms"] = simulated.health()["plan_ms"].get<double>();
+}
+BENCHMARK(BM_WholeChain)->Iterations(40)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
