@@ -331,8 +331,8 @@ ApiContext::ApiContext(NavigationHub& hub_, std::vector<std::string> camera_name
       camera_names(std::move(camera_names_)),
       court(court_),
       ball_radius_m(ball_radius_m_),
-      area(-0.5 * Vec2(court_.area_length_m, court_.area_width_m),
-           0.5 * Vec2(court_.area_length_m, court_.area_width_m)) {}
+      area{Vec2(-0.5 * court_.area_length_m, -0.5 * court_.area_width_m),
+           Vec2(0.5 * court_.area_length_m, 0.5 * court_.area_width_m)} {}
 
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
   const std::size_t q = request.target.find('?');
