@@ -1,5 +1,6 @@
-// `ballsight serve --sim`: the navigation service (HTTP API v1, docs/robot-link.md) on the
-// simulated court: frames rendered, run through the court pipeline, planned and published.
+// `ballsight serve`: the navigation service (HTTP API v1, docs/robot-link.md) on the site's
+// cameras (--site) or the simulated court (--sim): every frame set through the court pipeline,
+// planned and published.
 
 #include <signal.h>
 
@@ -13,6 +14,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/simulated_service.hpp"
 #include "ballsight/net/http_server.hpp"
+#include "ballsight/net/site_service.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -21,6 +23,7 @@ namespace {
 
 struct ServeArgs {
   bool sim = false;
+  std::string site;
   std::string listen = "127.0.0.1:8080";
   std::string token_file = "ballsight-token";
   std::string planner = "ballsight";
@@ -30,7 +33,8 @@ struct ServeArgs {
 };
 
 void run_serve(const ServeArgs& args) {
-  require(args.sim, "--sim", "needed: this version serves the simulated court");
+  require(args.sim != !args.site.empty(), "--site",
+          "give the site file (--site SITE.yml) or --sim, not both");
   require(args.duration_s >= 0.0, "--duration", "must not be negative");
   const std::size_t colon = args.listen.rfind(':');
   require(colon != std::string::npos, "--listen", "expected HOST:PORT, got '" + args.listen + "'");
@@ -38,11 +42,20 @@ void run_serve(const ServeArgs& args) {
       parse_numbers(args.listen.substr(colon + 1), 1, "--listen", "HOST:PORT");
   require(port[0] >= 0 && port[0] <= 65535 && port[0] == std::floor(port[0]), "--listen",
           "port must be an integer in [0, 65535]");
-  SimulatedServiceOptions service_options = args.service;
   const std::optional<PlannerKind> kind = planner_from_name(args.planner);
   require(kind && *kind != PlannerKind::exact, "--planner",
           "expected priority, nearest or ballsight, got '" + args.planner + "'");
-  service_options.planner.kind = *kind;
+  std::unique_ptr<CourtService> court;
+  if (args.sim) {
+    SimulatedServiceOptions options = args.service;
+    options.planner.kind = *kind;
+    court = std::make_unique<SimulatedCourtService>(options);
+  } else {
+    SiteServiceOptions options;
+    options.planner.kind = *kind;
+    court = std::make_unique<SiteCourtService>(read_site(args.site), options);
+  }
+  CourtService& service = *court;
 
   // SIGINT and SIGTERM are taken by this thread alone (blocked before any thread starts).
   sigset_t signals;
@@ -56,7 +69,6 @@ void run_serve(const ServeArgs& args) {
   server_options.port = static_cast<unsigned short>(port[0]);
   server_options.token = read_or_create_token(args.token_file);
   server_options.open_reads = args.open_reads;
-  SimulatedCourtService service(service_options);
   NavigationHub hub;
   const auto started = std::chrono::steady_clock::now();
   std::atomic<HttpServer*> server{nullptr};  // health is asked on the server's thread
@@ -91,8 +103,8 @@ void run_serve(const ServeArgs& args) {
   stop = true;
   loop.join();
   http.stop();
-  std::cout << "ballsight serve: stopped after " << service.health()["updates_published"]
-            << " updates" << std::endl;
+  std::cout << "ballsight serve: stopped after " << service.health()["frame_sets"] << " updates"
+            << std::endl;
 }
 
 }  // namespace
@@ -103,6 +115,7 @@ void add_serve_command(CLI::App& app) {
       "serve",
       "The navigation service: the court pipeline on every frame set, a route for every world "
       "model, served over HTTP (API v1, docs/robot-link.md) to the robot and any client");
+  cmd->add_option("--site", args->site, "Site file: serve its cameras");
   cmd->add_flag("--sim", args->sim, "Serve the built-in simulated court (rendered frames)");
   add_seed_option(*cmd, args->service.seed, "Simulated court: seed of the rig and the scene");
   cmd->add_option("--listen", args->listen, "HOST:PORT to listen on (port 0: a free one)")

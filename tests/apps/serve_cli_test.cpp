@@ -10,6 +10,7 @@
 
 #include "apps/run_cli.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "simulated_site.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight::test {
@@ -43,21 +44,37 @@ Reply request(unsigned short port, http::verb verb, const std::string& target,
           res.body().empty() ? json() : json::parse(res.body())};
 }
 
+/// `ballsight serve ARGS --listen 127.0.0.1:0`, its stdout read through `out`; its port.
+unsigned short start_serve(const std::string& args, FILE*& out) {
+  const std::string command =
+      std::string("'") + BALLSIGHT_CLI + "' serve --listen 127.0.0.1:0 " + args;
+  out = ::popen(command.c_str(), "r");
+  if (out == nullptr) return 0;
+  char line[256] = {};
+  if (std::fgets(line, sizeof line, out) == nullptr) return 0;
+  const std::string first(line);
+  const std::size_t colon = first.find("127.0.0.1:");
+  return colon == std::string::npos
+             ? 0
+             : static_cast<unsigned short>(std::stoi(first.substr(colon + 10)));
+}
+
+/// The rest of the service's output, once it stopped; its exit status in `status`.
+std::string rest_of(FILE* out, int& status) {
+  std::string rest;
+  char line[256] = {};
+  while (std::fgets(line, sizeof line, out) != nullptr) rest += line;
+  status = ::pclose(out);
+  return rest;
+}
+
 TEST(ServeCli, SimulatedCourtRouteAndCollectedBall) {
   const TempDir temp;
   const std::string token_file = (temp / "token").string();
-  const std::string command = std::string("'") + BALLSIGHT_CLI +
-                              "' serve --sim --listen 127.0.0.1:0 --rate 5 --duration 12 "
-                              "--token-file '" +
-                              token_file + "'";
-  FILE* out = ::popen(command.c_str(), "r");
-  ASSERT_NE(out, nullptr);
-  char line[256] = {};
-  ASSERT_NE(std::fgets(line, sizeof line, out), nullptr);
-  const std::string first(line);
-  const std::size_t colon = first.find("127.0.0.1:");
-  ASSERT_NE(colon, std::string::npos) << first;
-  const auto port = static_cast<unsigned short>(std::stoi(first.substr(colon + 10)));
+  FILE* out = nullptr;
+  const unsigned short port =
+      start_serve("--sim --rate 5 --duration 12 --token-file '" + token_file + "'", out);
+  ASSERT_NE(port, 0);
   const std::string token = read_file(token_file).substr(0, 32);
 
   const Reply u1 = request(port, http::verb::get, "/api/v1/navigation?after=0&timeout_ms=8000");
@@ -101,15 +118,54 @@ TEST(ServeCli, SimulatedCourtRouteAndCollectedBall) {
       200);
   EXPECT_EQ(request(port, http::verb::get, "/api/v1/navigation").body["acknowledged_seq"], seq);
   const Reply health = request(port, http::verb::get, "/api/v1/health");
-  EXPECT_GT(health.body["updates_published"].get<int>(), 2);
-  std::string rest;
-  while (std::fgets(line, sizeof line, out) != nullptr) rest += line;
-  EXPECT_EQ(::pclose(out), 0);
+  EXPECT_GT(health.body["frame_sets"].get<int>(), 2);
+  int status = -1;
+  const std::string rest = rest_of(out, status);
+  EXPECT_EQ(status, 0);
   EXPECT_NE(rest.find("stopped after"), std::string::npos) << rest;
 }
 
+TEST(ServeCli, TheSitesCamerasRecorded) {
+  const TempDir temp;
+  const std::filesystem::path site = simulated_site(temp);
+  FILE* out = nullptr;
+  const unsigned short port =
+      start_serve("--site '" + site.string() + "' --duration 8 --token-file '" +
+                      (temp / "token").string() + "'",
+                  out);
+  ASSERT_NE(port, 0);
+  // Two recorded frame sets: two updates, the route planned from the robot the cameras saw.
+  for (std::uint64_t seq = 1; seq <= 2; ++seq) {
+    const Reply u =
+        request(port, http::verb::get,
+                "/api/v1/navigation?after=" + std::to_string(seq - 1) + "&timeout_ms=8000");
+    ASSERT_EQ(u.status, 200);
+    EXPECT_EQ(u.body["seq"], seq);
+    EXPECT_GT(u.body["world"]["balls"].size(), 3u);
+    EXPECT_TRUE(u.body["world"]["robot"].is_object());
+    EXPECT_FALSE(u.body["route"]["order"].empty());
+  }
+  // The recordings have ended: the cameras say so, and the last update stays served.
+  EXPECT_EQ(request(port, http::verb::get, "/api/v1/navigation?after=2&timeout_ms=1500").status,
+            204);
+  const Reply health = request(port, http::verb::get, "/api/v1/health");
+  ASSERT_EQ(health.body["cameras"].size(), 4u);
+  for (const json& camera : health.body["cameras"]) {
+    EXPECT_EQ(camera["state"], "finished") << camera;
+    EXPECT_EQ(camera["frames"], 2) << camera;
+    EXPECT_TRUE(camera["last_frame_age_s"].is_number()) << camera;
+  }
+  EXPECT_EQ(health.body["frame_sets"], 2);
+  EXPECT_EQ(request(port, http::verb::get, "/api/v1/route").status, 200);
+  int status = -1;
+  rest_of(out, status);
+  EXPECT_EQ(status, 0);
+}
+
 TEST(ServeCli, BadOptionsFailWithOneLine) {
-  expect_one_line_error(run_cli({"serve"}), "--sim");
+  expect_one_line_error(run_cli({"serve"}), "--site");
+  expect_one_line_error(run_cli({"serve", "--sim", "--site", "x.yml"}), "--site");
+  expect_one_line_error(run_cli({"serve", "--site", "/nonexistent/site.yml"}), "site.yml");
   expect_one_line_error(run_cli({"serve", "--sim", "--listen", "127.0.0.1"}), "--listen");
   expect_one_line_error(run_cli({"serve", "--sim", "--listen", "nowhere:80"}), "--listen");
   expect_one_line_error(run_cli({"serve", "--sim", "--planner", "exact"}), "--planner");

@@ -6,7 +6,7 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/court_eval_calibration.hpp"
-#include "ballsight/net/update_planner.hpp"
+#include "ballsight/net/update_planner.hpp"  // kCollectedMatchM
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/sim/court_renderer.hpp"
@@ -18,10 +18,6 @@ namespace ballsight {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 }  // namespace
 
@@ -37,12 +33,8 @@ struct SimulatedCourtService::Impl {
   Site site;
   sim::CourtScene scene;
   std::vector<sim::CourtRenderer> renderers;
-  std::unique_ptr<CourtPipeline> pipeline;
-
-  mutable std::mutex mutex;  // guards the figures below
-  std::uint64_t frame_sets = 0, published = 0;
-  double render_ms = 0.0, pipeline_ms = 0.0, plan_ms = 0.0, rate = 0.0;
-  std::string last_error;
+  std::unique_ptr<UpdatePublisher> publisher;
+  std::atomic<double> render_ms{0.0};
 };
 
 SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& options)
@@ -58,7 +50,9 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
     s.renderers.emplace_back(c, s.rig.court);
     cameras.push_back({c.camera, c.camera_from_field});
   }
-  s.pipeline = make_ballsight_pipeline(cameras, ballsight_options_for_site(s.site));
+  s.publisher = std::make_unique<UpdatePublisher>(
+      s.site, make_ballsight_pipeline(cameras, ballsight_options_for_site(s.site)),
+      options.planner);
 }
 
 SimulatedCourtService::~SimulatedCourtService() = default;
@@ -67,16 +61,9 @@ const Site& SimulatedCourtService::site() const {
   return impl_->site;
 }
 
-std::vector<std::string> SimulatedCourtService::camera_names() const {
-  std::vector<std::string> names;
-  for (const SiteCamera& c : impl_->site.cameras) names.push_back(c.name);
-  return names;
-}
-
 void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {
   Impl& s = *impl_;
   const auto period = std::chrono::duration<double>(1.0 / s.options.max_rate_hz);
-  std::optional<Route> previous;
   std::uint64_t tick = 0;
   while (!stop) {
     const auto started = Clock::now();
@@ -94,34 +81,8 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
           s.renderers[c].render(s.scene, sim::derive_seed(s.options.seed + tick, c + 2)).bgr);
     }
     const std::int64_t capture_ns = utc_now_ns();  // the frames exist from now: "captured"
-    const double render_ms = ms_since(started);
-    const auto pipeline_started = Clock::now();
-    const FrameSetResult result = s.pipeline->process(frames);
-    const double pipeline_ms = ms_since(pipeline_started);
-    const auto plan_started = Clock::now();
-    std::string error;
-    NavigationUpdate update;
-    try {
-      update = plan_update(s.site, result.world, capture_ns, hub, previous ? &*previous : nullptr,
-                           s.options.planner);
-    } catch (const InputError& e) {  // e.g. a pose the cameras put inside the net
-      error = e.what();
-      update.capture_time_ns = capture_ns;
-      update.world = result.world;
-    }
-    previous = update.route;
-    hub.publish(std::move(update));
-    {
-      const std::lock_guard lock(s.mutex);
-      ++s.frame_sets;
-      ++s.published;
-      s.render_ms = render_ms;
-      s.pipeline_ms = pipeline_ms;
-      s.plan_ms = ms_since(plan_started);
-      s.last_error = error;
-      const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
-      s.rate = seconds > 0.0 ? 1.0 / std::max(seconds, period.count()) : 0.0;
-    }
+    s.render_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
+    s.publisher->publish(frames, capture_ns, hub);
     ++tick;
     std::this_thread::sleep_until(started + std::chrono::duration_cast<Clock::duration>(period));
   }
@@ -129,19 +90,14 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
 
 nlohmann::json SimulatedCourtService::health() const {
   const Impl& s = *impl_;
-  const std::lock_guard lock(s.mutex);
+  nlohmann::json h = s.publisher->health();
   nlohmann::json cameras = nlohmann::json::array();
   for (const SiteCamera& c : s.site.cameras) {
-    cameras.push_back({{"name", c.name}, {"state", "simulated"}, {"frames", s.frame_sets}});
+    cameras.push_back({{"name", c.name}, {"state", "simulated"}, {"frames", h["frame_sets"]}});
   }
-  return {{"cameras", cameras},
-          {"frame_sets", s.frame_sets},
-          {"updates_published", s.published},
-          {"render_ms", s.render_ms},
-          {"pipeline_ms", s.pipeline_ms},
-          {"plan_ms", s.plan_ms},
-          {"frame_sets_per_s", s.rate},
-          {"last_error", s.last_error}};
+  h["cameras"] = cameras;
+  h["render_ms"] = s.render_ms.load();
+  return h;
 }
 
 }  // namespace ballsight

@@ -6,16 +6,10 @@
 // what the service sees. The cameras' calibration is the simulator's (calibrating from rendered
 // chessboards is `eval court`'s business).
 
-#include <atomic>
 #include <cstdint>
-#include <mutex>
-#include <nlohmann/json.hpp>
-#include <string>
-#include <vector>
+#include <memory>
 
-#include "ballsight/net/navigation_hub.hpp"
-#include "ballsight/plan/planning_problem.hpp"
-#include "ballsight/world/site.hpp"
+#include "ballsight/net/court_service.hpp"
 
 namespace ballsight {
 
@@ -28,20 +22,16 @@ struct SimulatedServiceOptions {
   void validate() const;
 };
 
-class SimulatedCourtService {
+class SimulatedCourtService : public CourtService {
  public:
   explicit SimulatedCourtService(const SimulatedServiceOptions& options);
-  ~SimulatedCourtService();
+  ~SimulatedCourtService() override;
 
-  const Site& site() const;
-  std::vector<std::string> camera_names() const;
-
-  /// Captures, plans and publishes into `hub` until `stop` is set.
-  void run(NavigationHub& hub, const std::atomic<bool>& stop);
-
-  /// {"cameras": [{"name", "state", "frames"}], "frame_sets", "updates_published",
-  ///  "render_ms", "pipeline_ms", "plan_ms", "frame_sets_per_s", "last_error"}.
-  nlohmann::json health() const;
+  const Site& site() const override;
+  void run(NavigationHub& hub, const std::atomic<bool>& stop) override;
+  /// {"cameras": [{"name", "state": "simulated", "frames"}], "render_ms", and the figures of
+  /// UpdatePublisher::health()}.
+  nlohmann::json health() const override;
 
  private:
   struct Impl;

@@ -27,7 +27,7 @@ ApiResponse ok(const json& body) {
 }
 
 ApiResponse error_response(const ApiError& e) {
-  return {e.status, json{{"error", e.what}, {"where", e.where}}.dump()};
+  return api_error(e.status, e.what, e.where);
 }
 
 [[noreturn]] void fail(int status, const std::string& what, const std::string& where) {
@@ -254,6 +254,12 @@ struct ApiRoute {
 };
 
 }  // namespace
+
+ApiResponse api_error(int status, const std::string& what, const std::string& where) {
+  // What a client sent may be quoted, and need not be UTF-8: such bytes become U+FFFD.
+  return {status, json{{"error", what}, {"where", where}}.dump(-1, ' ', false,
+                                                               json::error_handler_t::replace)};
+}
 
 bool is_stream_target(const std::string& target) {
   return target.substr(0, target.find('?')) == "/api/v1/stream";

@@ -51,6 +51,9 @@ struct ApiContext {
   std::chrono::milliseconds max_wait{30000};  // cap on a long-poll's timeout_ms
 };
 
+/// The 4xx/5xx answer {"error": what, "where": where}.
+ApiResponse api_error(int status, const std::string& what, const std::string& where);
+
 /// Answers one request without waiting. Never throws for anything a client sends.
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& context);
 /// A waiting long-poll's answer: the first update newer than `after`; nullopt while none is.

@@ -17,6 +17,7 @@
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
 #include <deque>
+#include <iostream>
 #include <map>
 #include <mutex>
 #include <set>
@@ -57,8 +58,15 @@ http::response<http::string_body> json_response(const ApiResponse& response, uns
   return res;
 }
 
-ApiResponse error_response(int status, const std::string& what, const std::string& where) {
-  return {status, nlohmann::json{{"error", what}, {"where", where}}.dump()};
+/// Ends a connection's coroutine: a failure inside it (a bug, since nothing a client sends may
+/// throw) closes that connection only, and is said on stderr; it must not end the service.
+void end_of_connection(const std::exception_ptr& failure) {
+  if (!failure) return;
+  try {
+    std::rethrow_exception(failure);
+  } catch (const std::exception& e) {
+    std::cerr << "ballsight serve: a connection failed: " << e.what() << "\n";
+  }
 }
 
 /// One message for a WebSocket client (shared by every client it goes to).
@@ -163,7 +171,7 @@ awaitable<void> HttpServer::Impl::accept_loop() {
       continue;
     }
     const std::uint64_t id = next_id++;
-    asio::co_spawn(io, session(std::move(socket), id), asio::detached);
+    asio::co_spawn(io, session(std::move(socket), id), end_of_connection);
   }
 }
 
@@ -213,7 +221,7 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
   if (open_now > options.max_connections) {
     stream.expires_after(options.idle_timeout);
     co_await http::async_write(
-        stream, json_response(error_response(503, "too many connections", "server"), 11, false),
+        stream, json_response(api_error(503, "too many connections", "server"), 11, false),
         asio::redirect_error(asio::use_awaitable, ec));
     co_return;
   }
@@ -232,7 +240,7 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
                                                            : 400;
       stream.expires_after(options.idle_timeout);
       co_await http::async_write(
-          stream, json_response(error_response(status, ec.message(), "request"), 11, false),
+          stream, json_response(api_error(status, ec.message(), "request"), 11, false),
           asio::redirect_error(asio::use_awaitable, ec));
       co_return;
     }
@@ -248,7 +256,7 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
                                      "Bearer " + options.token);
     ApiResponse response;
     if (!local && !options.open_reads && !request.authorized) {
-      response = error_response(401, "requests from other hosts need the token", "headers");
+      response = api_error(401, "requests from other hosts need the token", "headers");
     } else if (websocket::is_upgrade(req)) {
       const std::string foxglove =
           foxglove_subprotocol(std::string(req[http::field::sec_websocket_protocol]));
@@ -258,7 +266,7 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
       }
       if (!is_stream_target(request.target)) {
         response =
-            error_response(404, "no WebSocket here (the stream is /api/v1/stream)", request.target);
+            api_error(404, "no WebSocket here (the stream is /api/v1/stream)", request.target);
       } else {
         auto subscription = stream_subscription(request, context);
         if (auto* s = std::get_if<StreamSubscription>(&subscription)) {
@@ -329,7 +337,7 @@ awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Requ
     const std::lock_guard lock(peers_mutex);
     peers[id] = peer;
   }
-  asio::co_spawn(io, write_loop(peer), asio::detached);
+  asio::co_spawn(io, write_loop(peer), end_of_connection);
   beast::flat_buffer buffer;
   while (!peer->closed) {
     co_await ws.async_read(buffer, asio::redirect_error(asio::use_awaitable, ec));

@@ -28,9 +28,9 @@ namespace ballsight {
 struct RobotLinkOptions {
   std::string host = "127.0.0.1";
   unsigned short port = 8080;
-  std::string token;                           // for acknowledgements, collected balls, pose
-  bool websocket = true;                       // false: long-poll only
-  std::chrono::milliseconds poll_wait{5000};   // a long-poll's timeout_ms
+  std::string token;                            // for acknowledgements, collected balls, pose
+  bool websocket = true;                        // false: long-poll only
+  std::chrono::milliseconds poll_wait{5000};    // a long-poll's timeout_ms
   std::chrono::milliseconds io_timeout{20000};  // silence after which the link is renewed
   BackoffOptions backoff{std::chrono::milliseconds(100), std::chrono::milliseconds(2000), 2.0};
   std::size_t keep = 256;  // updates delivered but not yet taken, at most (oldest dropped)

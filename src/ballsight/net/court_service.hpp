@@ -1,0 +1,63 @@
+#pragma once
+// What `ballsight serve` serves: a court service turns frame sets into navigation updates and
+// publishes them into the hub, on a thread of its own (the HTTP server's I/O thread only hears
+// the sequence number). Two kinds: the site's cameras (site_service.hpp) and the simulated court
+// (eval/simulated_service.hpp). Both take the same step for every frame set: UpdatePublisher.
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ballsight/net/navigation_hub.hpp"
+#include "ballsight/pipeline/court_pipeline.hpp"
+#include "ballsight/plan/planning_problem.hpp"
+#include "ballsight/world/site.hpp"
+
+namespace ballsight {
+
+class CourtService {
+ public:
+  virtual ~CourtService() = default;
+  virtual const Site& site() const = 0;
+  /// Captures, plans and publishes into `hub` until `stop` is set.
+  virtual void run(NavigationHub& hub, const std::atomic<bool>& stop) = 0;
+  /// {"cameras": [{"name", "state", "frames", ...}], figures of UpdatePublisher::health()}.
+  virtual nlohmann::json health() const = 0;
+
+  std::vector<std::string> camera_names() const;
+};
+
+/// One frame set through the court pipeline, planned (warm-started from the previous route) and
+/// published. Thread-safe for health().
+class UpdatePublisher {
+ public:
+  UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
+                  const PlannerOptions& planner);
+
+  /// Frames captured at `capture_ns` (UTC; empty images for missing cameras) -> one update.
+  FrameSetResult publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
+                         NavigationHub& hub);
+
+  /// {"frame_sets", "pipeline_ms", "plan_ms", "frame_sets_per_s", "last_error"}: the last
+  /// frame set's times, and the rate over the last few.
+  nlohmann::json health() const;
+
+ private:
+  const Site& site_;
+  std::unique_ptr<CourtPipeline> pipeline_;
+  PlannerOptions planner_;
+  std::optional<Route> previous_;
+  mutable std::mutex mutex_;  // guards the figures below
+  std::uint64_t frame_sets_ = 0;
+  double pipeline_ms_ = 0.0, plan_ms_ = 0.0, rate_hz_ = 0.0;
+  std::optional<std::chrono::steady_clock::time_point> last_;
+  std::string last_error_;
+};
+
+}  // namespace ballsight
