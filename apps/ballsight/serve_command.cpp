@@ -126,7 +126,8 @@ void add_serve_command(CLI::App& app) {
   cmd->add_flag("--open-reads", args->open_reads, "Reads from other hosts need no token");
   cmd->add_option("--planner", args->planner, "priority, nearest or ballsight")
       ->capture_default_str();
-  cmd->add_option("--rate", args->service.max_rate_hz, "Frame sets per second at most")
+  cmd->add_option("--rate", args->service.max_rate_hz,
+                  "Simulated court: frame sets per second at most")
       ->capture_default_str();
   cmd->add_option("--duration", args->duration_s, "Stop after this many seconds (0: on a signal)")
       ->capture_default_str();

@@ -1,6 +1,6 @@
 // Fault: `ballsight serve --sim` killed (SIGKILL, no goodbye) and started again on the same port
 // while the robot's client runs. The client notices, reconnects with back-off, follows the new
-// run of the service from its first update, and keeps acknowledging.
+// run of the service from its latest update, and keeps acknowledging.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -105,9 +105,8 @@ TEST(ServeFault, TheRobotsClientOutlivesAKilledService) {
   while ((after = next_of(link, "")) && after->service_id == before->service_id) {
   }
   ASSERT_TRUE(after) << link.status().last_error;
-  EXPECT_EQ(after->seq, 1u);
   EXPECT_GE(link.status().reconnects, 1);
-  // Followed from the new run's start, then on without a gap.
+  // Followed from the new run's latest update, then on without a gap.
   const std::optional<LinkUpdate> then = next_of(link, after->service_id);
   ASSERT_TRUE(then);
   EXPECT_EQ(then->seq, after->seq + 1);

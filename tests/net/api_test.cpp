@@ -86,15 +86,15 @@ TEST(Api, LongPollAnswersTheFirstNewerUpdateOrAsksTheTransportToWait) {
   EXPECT_EQ(json::parse(poll_answer(1, f.context)->body)["seq"], 2);
 }
 
-TEST(Api, AClientOfAnEarlierRunOfTheServiceStartsAgainFromTheOldestKept) {
+TEST(Api, AClientOfAnEarlierRunOfTheServiceStartsAgainFromTheLatest) {
   Fixture f;
   for (int k = 0; k < 3; ++k) f.hub.publish(update_with_robot(k));
   const std::string mine = "&service=" + f.hub.service_id();
   EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=2" + mine).body)["seq"], 3);
-  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=40&service=0f0f").body)["seq"], 1);
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=40&service=0f0f").body)["seq"], 3);
   const auto s =
       stream_subscription({"GET", "/api/v1/stream?after=40&service=0f0f", "", false}, f.context);
-  EXPECT_EQ(std::get<StreamSubscription>(s).after, 0u);
+  EXPECT_EQ(std::get<StreamSubscription>(s).after, 2u);
 }
 
 TEST(Api, TheStreamTakesTopics) {
@@ -126,8 +126,10 @@ TEST(Api, TheStreamTakesTopics) {
 TEST(Api, LongPollGivesTheFirstUpdateNewerThanAfterNotTheLatest) {
   Fixture f;
   for (int k = 0; k < 3; ++k) f.hub.publish(update_with_robot(k));
-  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=0&timeout_ms=0").body)["seq"], 1);
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=1&timeout_ms=0").body)["seq"], 2);
   EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=2&timeout_ms=0").body)["seq"], 3);
+  // A client that has read nothing yet wants the present: the latest.
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation?after=0&timeout_ms=0").body)["seq"], 3);
   EXPECT_EQ(json::parse(f.call("GET", "/api/v1/navigation").body)["latest_seq"], 3);
 }
 

@@ -171,12 +171,15 @@ ApiResponse balls_route(const ApiRequest& request, const std::string&, const Api
   return ok({{"balls", out}, {"source", source}, {"seq", u ? u->seq : 0}});
 }
 
-/// `after` of a long-poll or stream, or 0 when `service` names another run of the service (it
-/// restarted and counts from 1 again: the client gets everything kept).
+/// `after` of a long-poll or stream. A client that has read nothing (after=0), or read only from
+/// another run of the service (`service` names it: it restarted and counts from 1 again), wants
+/// the present, not the history: it gets the latest update first.
 std::uint64_t resume_after(const std::string& query, const ApiContext& c) {
   const std::uint64_t after = query_number(query, "after", 0);
   const std::optional<std::string> service = query_text(query, "service");
-  return service && *service != c.hub.service_id() ? 0 : after;
+  if (after != 0 && !(service && *service != c.hub.service_id())) return after;
+  const std::optional<NavigationUpdate> latest = c.hub.latest();
+  return latest ? latest->seq - 1 : 0;
 }
 
 ApiResponse navigation_route(const ApiRequest&, const std::string& query, const ApiContext& c) {

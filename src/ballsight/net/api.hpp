@@ -60,7 +60,7 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& context);
 std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& context);
 
 /// What a WebSocket client of /api/v1/stream[?after=SEQ&topics=navigation,world,health&service=ID]
-/// asked for: every update newer than SEQ (all of them from the oldest kept when ID is not this
+/// asked for: every update newer than SEQ (from the latest when SEQ is 0 or ID is not this
 /// service's: it restarted) as the chosen topics, and the health document once a second.
 struct StreamSubscription {
   std::uint64_t after = 0;

@@ -4,7 +4,7 @@
 // acknowledges them, reports collected balls and may set the robot's pose. When the service goes
 // away it reconnects with back-off and resumes after the last sequence number it delivered, so a
 // target is neither lost nor given twice; a restarted service (a new service id) is followed from
-// its first update. Thread-safe; the receiving runs on a thread of its own.
+// its latest update. Thread-safe; the receiving runs on a thread of its own.
 
 #include <atomic>
 #include <chrono>
