@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -85,15 +86,24 @@ void run_serve(const ServeArgs& args) {
     h["service_id"] = hub.service_id();
     return h;
   };
+  context.on_collected = [&] { service.republish(hub); };
   HttpServer http(server_options, context);
   server = &http;
   std::cout << "ballsight serve: http://" << server_options.address << ":" << http.port()
             << "/api/v1/ (token in " << args.token_file << ")" << std::endl;
   std::atomic<bool> stop{false};
-  std::thread loop([&] { service.run(hub, stop); });
+  std::exception_ptr failure;  // the court service's, ends the command with its message
+  std::thread loop([&] {
+    try {
+      service.run(hub, stop);
+    } catch (...) {
+      failure = std::current_exception();
+      stop = true;
+    }
+  });
   const timespec tick{0, 100'000'000};
   while (true) {
-    if (sigtimedwait(&signals, nullptr, &tick) > 0) break;
+    if (sigtimedwait(&signals, nullptr, &tick) > 0 || stop) break;
     if (args.duration_s > 0.0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >=
             args.duration_s) {
@@ -103,6 +113,7 @@ void run_serve(const ServeArgs& args) {
   stop = true;
   loop.join();
   http.stop();
+  if (failure) std::rethrow_exception(failure);
   std::cout << "ballsight serve: stopped after " << service.health()["frame_sets"] << " updates"
             << std::endl;
 }

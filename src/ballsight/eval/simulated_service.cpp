@@ -6,7 +6,6 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/court_eval_calibration.hpp"
-#include "ballsight/net/update_planner.hpp"  // kCollectedMatchM
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/sim/court_renderer.hpp"
@@ -68,12 +67,9 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
   while (!stop) {
     const auto started = Clock::now();
     // Balls the robot reported collected leave the court.
-    const std::vector<Vec2> collected = hub.collected();
     std::erase_if(s.scene.balls, [&](const sim::SceneSphere& b) {
       return b.kind == sim::ObjectKind::tennis_ball &&
-             std::any_of(collected.begin(), collected.end(), [&](const Vec2& c) {
-               return (c - b.center_in_field.head<2>()).norm() < kCollectedMatchM;
-             });
+             hub.was_collected(b.center_in_field.head<2>());
     });
     std::vector<cv::Mat> frames;
     for (std::size_t c = 0; c < s.renderers.size(); ++c) {
@@ -86,6 +82,10 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     ++tick;
     std::this_thread::sleep_until(started + std::chrono::duration_cast<Clock::duration>(period));
   }
+}
+
+void SimulatedCourtService::republish(NavigationHub& hub) {
+  impl_->publisher->republish(hub);
 }
 
 nlohmann::json SimulatedCourtService::health() const {

@@ -29,6 +29,7 @@ class SimulatedCourtService : public CourtService {
 
   const Site& site() const override;
   void run(NavigationHub& hub, const std::atomic<bool>& stop) override;
+  void republish(NavigationHub& hub) override;
   /// {"cameras": [{"name", "state": "simulated", "frames"}], "render_ms", and the figures of
   /// UpdatePublisher::health()}.
   nlohmann::json health() const override;

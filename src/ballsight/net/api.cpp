@@ -23,7 +23,7 @@ struct ApiError {
 };
 
 ApiResponse ok(const json& body) {
-  return {200, body.dump()};
+  return {200, json_text(body)};
 }
 
 ApiResponse error_response(const ApiError& e) {
@@ -112,6 +112,14 @@ void require_write(const ApiRequest& request) {
   if (!request.authorized) fail(401, "writes need 'Authorization: Bearer TOKEN'", "headers");
 }
 
+/// Adds the update's seq, service id and times to `j`.
+void stamp(json& j, const NavigationUpdate& u, const ApiContext& c) {
+  j["seq"] = u.seq;
+  j["service_id"] = c.hub.service_id();
+  j["capture_time_ns"] = u.capture_time_ns;
+  j["published_ns"] = u.published_ns;
+}
+
 NavigationUpdate latest_or_fail(const NavigationHub& hub) {
   std::optional<NavigationUpdate> u = hub.latest();
   if (!u) fail(503, "no update published yet", "service");
@@ -172,13 +180,16 @@ ApiResponse balls_route(const ApiRequest& request, const std::string&, const Api
 }
 
 /// `after` of a long-poll or stream. A client that has read nothing (after=0), or read only from
-/// another run of the service (`service` names it: it restarted and counts from 1 again), wants
-/// the present, not the history: it gets the latest update first.
+/// another run of the service (`service` names it, or `after` is beyond the latest: it
+/// restarted and counts from 1 again), wants the present, not the history: the latest first.
 std::uint64_t resume_after(const std::string& query, const ApiContext& c) {
   const std::uint64_t after = query_number(query, "after", 0);
   const std::optional<std::string> service = query_text(query, "service");
-  if (after != 0 && !(service && *service != c.hub.service_id())) return after;
   const std::optional<NavigationUpdate> latest = c.hub.latest();
+  // Beyond the latest: a seq of an earlier run, though the client did not say so.
+  const bool restarted =
+      (service && *service != c.hub.service_id()) || (latest && after > latest->seq);
+  if (after != 0 && !restarted) return after;
   return latest ? latest->seq - 1 : 0;
 }
 
@@ -219,21 +230,21 @@ ApiResponse collected_route(const ApiRequest& request, const std::string&, const
   require_write(request);
   const std::vector<Vec2> positions = ball_list(request, c.area);
   c.hub.add_collected(positions);
+  if (c.on_collected) c.on_collected();
   return ok({{"accepted", positions.size()}});
 }
 
 ApiResponse world_route(const ApiRequest&, const std::string&, const ApiContext& c) {
   const NavigationUpdate u = latest_or_fail(c.hub);
   json j = world_model_json(u.world, c.camera_names);
-  j["seq"] = u.seq;
-  j["capture_time_ns"] = u.capture_time_ns;
+  stamp(j, u, c);
   return ok(j);
 }
 
 ApiResponse plan_route(const ApiRequest&, const std::string&, const ApiContext& c) {
   const NavigationUpdate u = latest_or_fail(c.hub);
   json j = route_json(u.route);
-  j["seq"] = u.seq;
+  stamp(j, u, c);
   return ok(j);
 }
 
@@ -258,10 +269,12 @@ struct ApiRoute {
 
 }  // namespace
 
+std::string json_text(const json& j) {
+  return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 ApiResponse api_error(int status, const std::string& what, const std::string& where) {
-  // What a client sent may be quoted, and need not be UTF-8: such bytes become U+FFFD.
-  return {status, json{{"error", what}, {"where", where}}.dump(-1, ' ', false,
-                                                               json::error_handler_t::replace)};
+  return {status, json_text(json{{"error", what}, {"where", where}})};
 }
 
 bool is_stream_target(const std::string& target) {
@@ -306,23 +319,19 @@ std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& c)
 }
 
 std::string navigation_message(const NavigationUpdate& update, const ApiContext& c) {
-  return json{{"topic", "navigation"}, {"update", navigation_json(update, c)}}.dump();
+  return json_text(json{{"topic", "navigation"}, {"update", navigation_json(update, c)}});
 }
 
 std::string world_message(const NavigationUpdate& update, const ApiContext& c) {
-  return json{{"topic", "world"},
-              {"seq", update.seq},
-              {"service_id", c.hub.service_id()},
-              {"capture_time_ns", update.capture_time_ns},
-              {"world", world_model_json(update.world, c.camera_names)}}
-      .dump();
+  json j{{"topic", "world"}, {"world", world_model_json(update.world, c.camera_names)}};
+  stamp(j, update, c);
+  return json_text(j);
 }
 
 std::string health_message(const ApiContext& c) {
-  return json{{"topic", "health"},
-              {"time_ns", utc_now_ns()},
-              {"health", c.health ? c.health() : json::object()}}
-      .dump();
+  return json_text(json{{"topic", "health"},
+                        {"time_ns", utc_now_ns()},
+                        {"health", c.health ? c.health() : json::object()}});
 }
 
 nlohmann::json navigation_json(const NavigationUpdate& update, const ApiContext& c) {

@@ -48,8 +48,13 @@ struct ApiContext {
   double ball_radius_m;
   FieldRect area;                             // the court's fenced area: positions sent lie in it
   std::function<nlohmann::json()> health;     // the service's health document
+  std::function<void()> on_collected;         // balls were reported collected: re-plan now
   std::chrono::milliseconds max_wait{30000};  // cap on a long-poll's timeout_ms
 };
+
+/// `j` as JSON text; bytes that are not UTF-8 (a client's, a camera's message) become U+FFFD
+/// instead of an exception.
+std::string json_text(const nlohmann::json& j);
 
 /// The 4xx/5xx answer {"error": what, "where": where}.
 ApiResponse api_error(int status, const std::string& what, const std::string& where);

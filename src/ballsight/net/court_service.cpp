@@ -14,6 +14,10 @@ double ms_since(Clock::time_point start) {
 
 }  // namespace
 
+double smoothed_rate(double previous_hz, double sample_hz) {
+  return previous_hz == 0.0 ? sample_hz : 0.8 * previous_hz + 0.2 * sample_hz;
+}
+
 std::vector<std::string> CourtService::camera_names() const {
   std::vector<std::string> names;
   for (const SiteCamera& c : site().cameras) names.push_back(c.name);
@@ -29,43 +33,66 @@ UpdatePublisher::UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline
 FrameSetResult UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
                                         NavigationHub& hub) {
   const auto started = Clock::now();
-  FrameSetResult result = pipeline_->process(frames);
-  const double pipeline_ms = ms_since(started);
-  const auto plan_started = Clock::now();
-  std::string error;
-  NavigationUpdate update;
+  FrameSetResult result;
   try {
-    update = plan_update(site_, result.world, capture_ns, hub, previous_ ? &*previous_ : nullptr,
-                         planner_);
-  } catch (const InputError& e) {  // e.g. a pose the cameras put inside the net
-    error = e.what();
-    update.capture_time_ns = capture_ns;
-    update.world = result.world;
+    result = pipeline_->process(frames);
+  } catch (const std::exception& e) {  // a bad frame must not end the service: say so, go on
+    const std::lock_guard lock(mutex_);
+    ++failed_;
+    last_error_ = std::string("pipeline: ") + e.what();
+    return result;
   }
-  const double plan_ms = ms_since(plan_started);
-  previous_ = update.route;
-  hub.publish(std::move(update));
+  const double pipeline_ms = ms_since(started);
+  std::vector<Vec2> seen;
+  for (const FusedBall& b : result.world.balls) seen.push_back(b.position_m);
+  hub.confirm_collected(seen);
+  const std::lock_guard plan_lock(plan_mutex_);
+  last_world_ = result.world;
+  last_capture_ns_ = capture_ns;
+  const double plan_ms = plan_and_publish(hub);
   const std::lock_guard lock(mutex_);
   ++frame_sets_;
   pipeline_ms_ = pipeline_ms;
   plan_ms_ = plan_ms;
-  last_error_ = error;
   const auto now = Clock::now();
   if (last_) {
     const double hz = 1.0 / std::max(1e-6, std::chrono::duration<double>(now - *last_).count());
-    rate_hz_ = rate_hz_ == 0.0 ? hz : 0.8 * rate_hz_ + 0.2 * hz;
+    rate_hz_ = smoothed_rate(rate_hz_, hz);
   }
   last_ = now;
   return result;
 }
 
+void UpdatePublisher::republish(NavigationHub& hub) {
+  const std::lock_guard plan_lock(plan_mutex_);
+  if (last_capture_ns_ == 0) return;  // nothing seen yet
+  plan_and_publish(hub);
+}
+
+double UpdatePublisher::plan_and_publish(NavigationHub& hub) {
+  const auto started = Clock::now();
+  std::string error;
+  NavigationUpdate update;
+  try {
+    update = plan_update(site_, last_world_, last_capture_ns_, hub,
+                         previous_ ? &*previous_ : nullptr, planner_);
+  } catch (const InputError& e) {  // e.g. a pose the cameras put inside the net
+    error = e.what();
+    update.capture_time_ns = last_capture_ns_;
+    update.world = last_world_;
+  }
+  previous_ = update.route;
+  hub.publish(std::move(update));
+  const std::lock_guard lock(mutex_);
+  last_error_ = error;
+  return ms_since(started);
+}
+
 nlohmann::json UpdatePublisher::health() const {
   const std::lock_guard lock(mutex_);
-  return {{"frame_sets", frame_sets_},
-          {"pipeline_ms", pipeline_ms_},
-          {"plan_ms", plan_ms_},
-          {"frame_sets_per_s", rate_hz_},
-          {"last_error", last_error_}};
+  return {{"frame_sets", frame_sets_},    {"pipeline_ms", pipeline_ms_},
+          {"plan_ms", plan_ms_},          {"frame_sets_per_s", rate_hz_},
+          {"frame_sets_failed", failed_}, {"last_error", last_error_}};
 }
 
 }  // namespace ballsight

@@ -27,34 +27,49 @@ class CourtService {
   virtual const Site& site() const = 0;
   /// Captures, plans and publishes into `hub` until `stop` is set.
   virtual void run(NavigationHub& hub, const std::atomic<bool>& stop) = 0;
+  /// Plans the last world model again and publishes it (balls were reported collected: they
+  /// leave the plan at once, not at the next frame set). Any thread.
+  virtual void republish(NavigationHub& hub) = 0;
   /// {"cameras": [{"name", "state", "frames", ...}], figures of UpdatePublisher::health()}.
   virtual nlohmann::json health() const = 0;
 
   std::vector<std::string> camera_names() const;
 };
 
+/// A rate (frames or frame sets per second) smoothed over the last few samples; 0: none yet.
+double smoothed_rate(double previous_hz, double sample_hz);
+
 /// One frame set through the court pipeline, planned (warm-started from the previous route) and
-/// published. Thread-safe for health().
+/// published. Thread-safe.
 class UpdatePublisher {
  public:
   UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
                   const PlannerOptions& planner);
 
   /// Frames captured at `capture_ns` (UTC; empty images for missing cameras) -> one update.
+  /// Reports of collected balls the frames confirm are forgotten. A pipeline failure publishes
+  /// nothing and is counted (health).
   FrameSetResult publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
                          NavigationHub& hub);
+  /// The last world model planned again and published; nothing before the first frame set.
+  void republish(NavigationHub& hub);
 
-  /// {"frame_sets", "pipeline_ms", "plan_ms", "frame_sets_per_s", "last_error"}: the last
-  /// frame set's times, and the rate over the last few.
+  /// {"frame_sets", "frame_sets_failed", "pipeline_ms", "plan_ms", "frame_sets_per_s",
+  /// "last_error"}: the last frame set's times, and the rate over the last few.
   nlohmann::json health() const;
 
  private:
+  double plan_and_publish(NavigationHub& hub);  // plan_mutex_ held; its time in ms
+
   const Site& site_;
   std::unique_ptr<CourtPipeline> pipeline_;
   PlannerOptions planner_;
+  std::mutex plan_mutex_;  // guards the last world, its time and the previous route
+  WorldModel last_world_;
+  std::int64_t last_capture_ns_ = 0;
   std::optional<Route> previous_;
   mutable std::mutex mutex_;  // guards the figures below
-  std::uint64_t frame_sets_ = 0;
+  std::uint64_t frame_sets_ = 0, failed_ = 0;
   double pipeline_ms_ = 0.0, plan_ms_ = 0.0, rate_hz_ = 0.0;
   std::optional<std::chrono::steady_clock::time_point> last_;
   std::string last_error_;

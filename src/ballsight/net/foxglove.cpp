@@ -236,22 +236,22 @@ std::optional<std::string> FoxgloveSession::payload(std::uint32_t channel,
                                                     const NavigationUpdate& u) const {
   switch (channel) {
     case kCourt:
-      return court_scene(context_, u.capture_time_ns).dump();
+      return json_text(court_scene(context_, u.capture_time_ns));
     case kBalls:
-      return balls_scene(context_, u).dump();
+      return json_text(balls_scene(context_, u));
     case kRobot:
       if (!u.world.robot) return std::nullopt;
-      return json{{"timestamp", stamp(u.capture_time_ns)},
-                  {"frame_id", kFrame},
-                  {"pose", pose(u.world.robot->pose.position.x(), u.world.robot->pose.position.y(),
-                                0.0, u.world.robot->pose.heading_rad)}}
-          .dump();
+      return json_text(
+          {{"timestamp", stamp(u.capture_time_ns)},
+           {"frame_id", kFrame},
+           {"pose", pose(u.world.robot->pose.position.x(), u.world.robot->pose.position.y(), 0.0,
+                         u.world.robot->pose.heading_rad)}});
     case kRoute:
-      return json{
-          {"timestamp", stamp(u.capture_time_ns)}, {"frame_id", kFrame}, {"poses", route_poses(u)}}
-          .dump();
+      return json_text({{"timestamp", stamp(u.capture_time_ns)},
+                        {"frame_id", kFrame},
+                        {"poses", route_poses(u)}});
     default:
-      return navigation_json(u, context_).dump();
+      return json_text(navigation_json(u, context_));
   }
 }
 
@@ -259,7 +259,7 @@ FoxgloveOutput FoxgloveSession::on_text(std::string_view message,
                                         const std::optional<NavigationUpdate>& latest) {
   FoxgloveOutput out;
   const auto status = [&](const std::string& what) {
-    out.text.push_back(json{{"op", "status"}, {"level", 2}, {"message", what}}.dump());
+    out.text.push_back(json_text({{"op", "status"}, {"level", 2}, {"message", what}}));
     return out;
   };
   const json m = json::parse(message, nullptr, false);
@@ -282,6 +282,10 @@ FoxgloveOutput FoxgloveSession::on_text(std::string_view message,
       if (!id || !channel || *channel < kCourt || *channel > kNavigation) {
         return status("subscribe: unknown channel or bad id");
       }
+      if (channel_of_.size() + added.size() >= kMaxSubscriptions) {
+        return status("subscribe: at most " + std::to_string(kMaxSubscriptions) +
+                      " subscriptions per client");
+      }
       if (channel_of_.count(*id) || added.count(*id)) {
         return status("subscribe: subscription id " + std::to_string(*id) + " is taken");
       }
@@ -292,7 +296,7 @@ FoxgloveOutput FoxgloveSession::on_text(std::string_view message,
       const std::int64_t now = utc_now_ns();
       if (channel == kCourt) {
         out.binary.push_back(foxglove_message_frame(id, static_cast<std::uint64_t>(now),
-                                                    court_scene(context_, now).dump()));
+                                                    json_text(court_scene(context_, now))));
       } else if (latest) {
         if (const std::optional<std::string> p = payload(channel, *latest)) {
           out.binary.push_back(

@@ -42,6 +42,8 @@ class FoxgloveSession {
   std::vector<std::string> frames(const NavigationUpdate& update) const;
 
   std::size_t subscriptions() const { return channel_of_.size(); }
+  /// Each subscription costs a payload per update on the I/O thread: a client gets this many.
+  static constexpr std::size_t kMaxSubscriptions = 32;
 
  private:
   std::optional<std::string> payload(std::uint32_t channel, const NavigationUpdate& update) const;

@@ -1,7 +1,11 @@
 #include "ballsight/net/http_server.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <utility>  // before Asio's awaitable.hpp, which uses std::exchange (Boost 1.74)
 //
 #include <atomic>
@@ -52,6 +56,8 @@ http::response<http::string_body> json_response(const ApiResponse& response, uns
   http::response<http::string_body> res{static_cast<http::status>(response.status), version};
   res.set(http::field::server, "ballsight");
   if (!response.body.empty()) res.set(http::field::content_type, "application/json");
+  if (response.status == 401) res.set(http::field::www_authenticate, "Bearer");
+  if (response.status == 426) res.set(http::field::upgrade, "websocket");
   res.keep_alive(keep_alive);
   res.body() = response.body;
   res.prepare_payload();
@@ -66,6 +72,18 @@ void end_of_connection(const std::exception_ptr& failure) {
     std::rethrow_exception(failure);
   } catch (const std::exception& e) {
     std::cerr << "ballsight serve: a connection failed: " << e.what() << "\n";
+  } catch (...) {
+    std::cerr << "ballsight serve: a connection failed\n";
+  }
+}
+
+/// Runs `work`, saying on stderr what `what` was when it fails (the I/O thread goes on).
+template <class Work>
+void guarded(const char* what, Work&& work) {
+  try {
+    work();
+  } catch (const std::exception& e) {
+    std::cerr << "ballsight serve: " << what << " failed: " << e.what() << "\n";
   }
 }
 
@@ -168,6 +186,9 @@ awaitable<void> HttpServer::Impl::accept_loop() {
         co_await acceptor.async_accept(asio::redirect_error(asio::use_awaitable, ec));
     if (ec) {
       if (stopping || ec == asio::error::operation_aborted) co_return;
+      // Out of file descriptors, say: wait a little instead of spinning.
+      asio::steady_timer pause(io, std::chrono::milliseconds(100));
+      co_await pause.async_wait(asio::redirect_error(asio::use_awaitable, ec));
       continue;
     }
     const std::uint64_t id = next_id++;
@@ -399,8 +420,10 @@ awaitable<void> HttpServer::Impl::health_loop() {
         if (peer->subscription.health && !peer->foxglove) wanting.push_back(peer);
     }
     if (wanting.empty()) continue;
-    message = std::make_shared<const std::string>(health_message(context));
-    for (const auto& peer : wanting) peer->push({message, false});
+    guarded("the health topic", [&] {
+      message = std::make_shared<const std::string>(health_message(context));
+      for (const auto& peer : wanting) peer->push({message, false});
+    });
   }
 }
 
@@ -522,10 +545,14 @@ std::string read_or_create_token(const std::filesystem::path& file) {
     require(text.size() >= 16, file.string(), "the token must be at least 16 characters");
     return text;
   }
-  const std::string token = random_hex(32);
-  write_file_atomic(file, token + "\n");
-  require(::chmod(file.c_str(), 0600) == 0, file.string(), "cannot make it private (0600)");
-  return token;
+  // Private from its first byte: created 0600, never there with wider rights.
+  const std::string token = random_hex(32) + "\n";
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  require(fd >= 0, file.string(), std::string("cannot create it: ") + std::strerror(errno));
+  const bool written =
+      ::write(fd, token.data(), token.size()) == static_cast<ssize_t>(token.size());
+  require(::close(fd) == 0 && written, file.string(), "cannot write the token");
+  return token.substr(0, 32);
 }
 
 }  // namespace ballsight

@@ -1,5 +1,6 @@
 #include "ballsight/net/navigation_hub.hpp"
 
+#include <algorithm>
 #include <random>
 
 #include "ballsight/core/error.hpp"
@@ -117,6 +118,31 @@ std::optional<External<std::vector<Vec2>>> NavigationHub::balls() const {
 void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
   const std::lock_guard lock(mutex_);
   collected_.insert(collected_.end(), positions.begin(), positions.end());
+  if (collected_.size() > kMaxCollected) {
+    collected_.erase(
+        collected_.begin(),
+        collected_.begin() + static_cast<std::ptrdiff_t>(collected_.size() - kMaxCollected));
+  }
+}
+
+namespace {
+
+bool near_any(const Vec2& p, const std::vector<Vec2>& list) {
+  return std::any_of(list.begin(), list.end(), [&](const Vec2& q) {
+    return (q - p).norm() < NavigationHub::kCollectedMatchM;
+  });
+}
+
+}  // namespace
+
+bool NavigationHub::was_collected(const Vec2& p) const {
+  const std::lock_guard lock(mutex_);
+  return near_any(p, collected_);
+}
+
+void NavigationHub::confirm_collected(const std::vector<Vec2>& seen) {
+  const std::lock_guard lock(mutex_);
+  std::erase_if(collected_, [&](const Vec2& c) { return !near_any(c, seen); });
 }
 
 std::vector<Vec2> NavigationHub::collected() const {

@@ -75,9 +75,18 @@ class NavigationHub {
   std::optional<External<Pose2D>> robot() const;
   void set_balls(std::vector<Vec2> balls);
   std::optional<External<std::vector<Vec2>>> balls() const;
-  /// Balls the robot reports collected: the planner leaves them out from now on.
+  /// Balls the robot reports collected: the planner leaves them out until the cameras confirm
+  /// they are gone. At most kMaxCollected are kept (the oldest go first).
   void add_collected(const std::vector<Vec2>& positions);
   std::vector<Vec2> collected() const;
+  /// Whether a ball at `p` is one the robot reported collected (within kCollectedMatchM).
+  bool was_collected(const Vec2& p) const;
+  /// Forgets the reports the cameras have confirmed: no ball `seen` is near them any more.
+  void confirm_collected(const std::vector<Vec2>& seen);
+
+  static constexpr std::size_t kMaxCollected = 4096;
+  /// A ball reported collected within this of a ball seen is that ball.
+  static constexpr double kCollectedMatchM = 0.30;
 
  private:
   std::string service_id_;

@@ -22,9 +22,9 @@ const nlohmann::json& openapi_document() {
       "Balls": {"type": "object", "required": ["balls"], "additionalProperties": false,
                 "properties": {"balls": {"type": "array", "items": {"$ref": "#/components/schemas/Point"}}}},
       "Ack": {"type": "object", "required": ["seq"], "additionalProperties": false,
-              "properties": {"seq": {"type": "integer", "minimum": 1}}},
-      "Update": {"type": "object", "required": ["seq", "capture_time_ns", "published_ns", "world", "route"],
-                 "properties": {"seq": {"type": "integer"}, "capture_time_ns": {"type": "integer"},
+              "properties": {"seq": {"type": "integer", "minimum": 0, "description": "an update published already (else 409)"}}},
+      "Update": {"type": "object", "required": ["seq", "service_id", "capture_time_ns", "published_ns", "world", "route"],
+                 "properties": {"seq": {"type": "integer"}, "service_id": {"type": "string"}, "capture_time_ns": {"type": "integer"},
                                 "published_ns": {"type": "integer"}, "world": {"type": "object"},
                                 "route": {"type": "object"}}}
     }
@@ -45,8 +45,9 @@ const nlohmann::json& openapi_document() {
               "responses": {"200": {"description": "set"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "422": {"description": "outside the field"}}}
     },
     "/api/v1/navigation": {
-      "get": {"summary": "Without 'after': the latest and the acknowledged sequence numbers. With 'after': long-poll for the first update newer than it",
+      "get": {"summary": "Without 'after': the latest and the acknowledged sequence numbers and the service id. With 'after': long-poll for the first update newer than it (the latest when 'after' is 0, beyond the latest, or of another run named by 'service')",
               "parameters": [{"name": "after", "in": "query", "schema": {"type": "integer", "minimum": 0}},
+                             {"name": "service", "in": "query", "schema": {"type": "string"}},
                              {"name": "timeout_ms", "in": "query", "schema": {"type": "integer", "minimum": 0, "maximum": 30000}}],
               "responses": {"200": {"description": "status, or the update", "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Update"}}}},
                             "204": {"description": "no newer update within timeout_ms"}, "400": {"description": "bad query"}}}
@@ -57,24 +58,26 @@ const nlohmann::json& openapi_document() {
                "responses": {"200": {"description": "acknowledged"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "409": {"description": "not published"}}}
     },
     "/api/v1/collected": {
-      "post": {"summary": "Balls the robot picked up: they leave the plan at once", "security": [{"bearer": []}],
+      "post": {"summary": "Balls the robot picked up (positions): they leave the plan at once (re-planned and published), until the cameras confirm them gone", "security": [{"bearer": []}],
                "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Balls"}}}},
                "responses": {"200": {"description": "accepted"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "422": {"description": "outside the field"}}}
     },
     "/api/v1/world": {
-      "get": {"summary": "The latest world model: balls, collection sites, robot, cameras",
+      "get": {"summary": "The latest world model: balls, collection sites, robot, cameras; its seq, service id, capture and publish times",
               "responses": {"200": {"description": "world model"}, "503": {"description": "no update yet"}}}
     },
     "/api/v1/route": {
-      "get": {"summary": "The latest route: order, waypoints, length, time",
+      "get": {"summary": "The latest route: order, waypoints, length, time; its seq, service id, capture and publish times",
               "responses": {"200": {"description": "route"}, "503": {"description": "no update yet"}}}
     },
     "/api/v1/health": {
       "get": {"summary": "The service: cameras, rates, latency, clients", "responses": {"200": {"description": "health"}}}
     },
     "/api/v1/stream": {
-      "get": {"summary": "WebSocket: every navigation update newer than 'after', in order, as {\"topic\": \"navigation\", \"dropped\", \"update\"}",
-              "parameters": [{"name": "after", "in": "query", "schema": {"type": "integer", "minimum": 0}}],
+      "get": {"summary": "WebSocket: every update newer than 'after', in order, as the chosen topics ({\"topic\": \"navigation\", \"update\"}, {\"topic\": \"world\", ...}, {\"topic\": \"health\", ...} once a second); gaps in seq are updates missed",
+              "parameters": [{"name": "after", "in": "query", "schema": {"type": "integer", "minimum": 0}},
+                             {"name": "service", "in": "query", "schema": {"type": "string"}},
+                             {"name": "topics", "in": "query", "schema": {"type": "string", "example": "navigation,world,health"}}],
               "responses": {"101": {"description": "switching to WebSocket"}, "400": {"description": "bad query"},
                             "426": {"description": "not a WebSocket upgrade"}}}
     },

@@ -36,15 +36,13 @@ struct Refused : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-awaitable<beast::tcp_stream> connect(const RobotLinkOptions& o) {
-  auto executor = co_await asio::this_coro::executor;
-  tcp::resolver resolver(executor);
+/// Connects `stream` (closing it from elsewhere cancels the attempt).
+awaitable<void> connect(beast::tcp_stream& stream, const RobotLinkOptions& o) {
+  tcp::resolver resolver(stream.get_executor());
   const auto endpoints =
       co_await resolver.async_resolve(o.host, std::to_string(o.port), asio::use_awaitable);
-  beast::tcp_stream stream(executor);
   stream.expires_after(o.io_timeout);
   co_await stream.async_connect(endpoints, asio::use_awaitable);
-  co_return stream;
 }
 
 // Coroutines take their strings by value: a reference could outlive what it refers to.
@@ -65,7 +63,7 @@ awaitable<Response> exchange(beast::tcp_stream& stream, const RobotLinkOptions& 
   co_return res;
 }
 
-/// Requests on one keep-alive connection, made again once when it was lost.
+/// Requests on one keep-alive connection, made again once when it was lost (not after close()).
 class HttpClient {
  public:
   explicit HttpClient(const RobotLinkOptions& o) : options_(o) {}
@@ -73,25 +71,38 @@ class HttpClient {
   awaitable<Response> request(http::verb verb, std::string target, std::string body = "",
                               std::chrono::milliseconds wait = std::chrono::milliseconds(0)) {
     for (int attempt = 0;; ++attempt) {
-      bool reused = stream_.has_value();
+      const bool reused = connected_;
       try {
-        if (!stream_) stream_.emplace(co_await connect(options_));
+        if (!stream_) stream_.emplace(co_await asio::this_coro::executor);
+        if (!connected_) {
+          co_await connect(*stream_, options_);
+          connected_ = true;
+        }
         Response res = co_await exchange(*stream_, options_, verb, target, body, wait);
-        if (!res.keep_alive()) stream_.reset();
+        if (!res.keep_alive()) drop();
         co_return res;
       } catch (const boost::system::system_error&) {
-        stream_.reset();
-        if (!reused || attempt > 0) throw;  // a fresh connection failed: the service is away
+        drop();
+        // A fresh connection failed (the service is away), or we were closed: no second try.
+        if (!reused || attempt > 0 || closed_) throw;
       }
     }
   }
+  /// Ends the connection and any request on it, for good.
   void close() {
+    closed_ = true;
     if (stream_) stream_->close();
   }
 
  private:
+  void drop() {
+    stream_.reset();
+    connected_ = false;
+  }
+
   RobotLinkOptions options_;
   std::optional<beast::tcp_stream> stream_;
+  bool connected_ = false, closed_ = false;
 };
 
 }  // namespace
@@ -149,6 +160,8 @@ struct RobotLink::Impl {
   awaitable<void> receive_stream();
   awaitable<void> receive_polls();
   bool write(http::verb verb, const std::string& target, const json& body);
+  /// The oldest update not taken (or the newest, dropping the rest), waiting up to `timeout`.
+  std::optional<LinkUpdate> take(std::chrono::milliseconds timeout, bool newest);
 };
 
 std::string RobotLink::Impl::resume_query() {
@@ -176,9 +189,13 @@ bool RobotLink::Impl::deliver(const json& raw) {
 }
 
 awaitable<void> RobotLink::Impl::receive_stream() {
-  beast::tcp_stream stream = co_await connect(options);
-  stream.expires_never();
-  websocket::stream<beast::tcp_stream> ws(std::move(stream));
+  websocket::stream<beast::tcp_stream> ws(io);
+  close_receiver = [&ws] {
+    beast::error_code ignored;
+    beast::get_lowest_layer(ws).socket().close(ignored);
+  };
+  co_await connect(beast::get_lowest_layer(ws), options);
+  beast::get_lowest_layer(ws).expires_never();
   websocket::stream_base::timeout timeout{};
   timeout.handshake_timeout = options.io_timeout;
   timeout.idle_timeout = options.io_timeout;  // the service pings an idle client
@@ -190,15 +207,14 @@ awaitable<void> RobotLink::Impl::receive_stream() {
           req.set(http::field::authorization, "Bearer " + token);
         }));
   }
-  close_receiver = [&ws] {
-    beast::error_code ignored;
-    beast::get_lowest_layer(ws).socket().close(ignored);
-  };
   websocket::response_type answer;
   beast::error_code ec;
   co_await ws.async_handshake(answer, options.host, "/api/v1/stream?" + resume_query(),
                               asio::redirect_error(asio::use_awaitable, ec));
-  if (ec == websocket::error::upgrade_declined) {
+  // Refused as a thing unknown (a proxy, an older service): long-poll instead. A 503 (too many
+  // connections) is worth another try later.
+  if (ec == websocket::error::upgrade_declined &&
+      (answer.result_int() == 404 || answer.result_int() == 426)) {
     throw Refused("the stream was refused (" + std::to_string(answer.result_int()) + ")");
   }
   if (ec) throw boost::system::system_error(ec);
@@ -297,24 +313,25 @@ void RobotLink::stop() {
   s.changed.notify_all();
 }
 
-std::optional<LinkUpdate> RobotLink::next(std::chrono::milliseconds timeout) {
-  Impl& s = *impl_;
-  std::unique_lock lock(s.mutex);
-  s.changed.wait_for(lock, timeout, [&] { return !s.ready.empty() || s.stopping; });
-  if (s.ready.empty()) return std::nullopt;
-  LinkUpdate u = std::move(s.ready.front());
-  s.ready.pop_front();
+std::optional<LinkUpdate> RobotLink::Impl::take(std::chrono::milliseconds timeout, bool newest) {
+  std::unique_lock lock(mutex);
+  changed.wait_for(lock, timeout, [&] { return !ready.empty() || stopping; });
+  if (ready.empty()) return std::nullopt;
+  LinkUpdate u = std::move(newest ? ready.back() : ready.front());
+  if (newest) {
+    ready.clear();
+  } else {
+    ready.pop_front();
+  }
   return u;
 }
 
+std::optional<LinkUpdate> RobotLink::next(std::chrono::milliseconds timeout) {
+  return impl_->take(timeout, false);
+}
+
 std::optional<LinkUpdate> RobotLink::latest(std::chrono::milliseconds timeout) {
-  Impl& s = *impl_;
-  std::unique_lock lock(s.mutex);
-  s.changed.wait_for(lock, timeout, [&] { return !s.ready.empty() || s.stopping; });
-  if (s.ready.empty()) return std::nullopt;
-  LinkUpdate u = std::move(s.ready.back());
-  s.ready.clear();
-  return u;
+  return impl_->take(timeout, true);
 }
 
 bool RobotLink::Impl::write(http::verb verb, const std::string& target, const json& body) {

@@ -1,5 +1,6 @@
 #include "ballsight/net/site_service.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <thread>
 
@@ -42,7 +43,10 @@ void SiteCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {
   }
   while (!stop) {
     const std::optional<FrameSet> set = next_frame_set(list, options_.wait);
-    if (!set) {  // every recorded source has ended, or no live one delivered: the last update stays
+    const bool any =
+        set && std::any_of(set->frames.begin(), set->frames.end(),
+                           [](const std::optional<Frame>& f) { return f.has_value(); });
+    if (!any) {  // every recorded source has ended, or no camera delivered: the last update stays
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
       continue;
     }
@@ -59,7 +63,7 @@ void SiteCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {
         if (fig.last_frame && f->timestamp > *fig.last_frame) {
           const double hz =
               1.0 / std::chrono::duration<double>(f->timestamp - *fig.last_frame).count();
-          fig.rate_hz = fig.rate_hz == 0.0 ? hz : 0.8 * fig.rate_hz + 0.2 * hz;
+          fig.rate_hz = smoothed_rate(fig.rate_hz, hz);
         }
         fig.last_frame = f->timestamp;
       }
@@ -71,6 +75,10 @@ void SiteCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {
     publisher_->publish(frames, capture_ns, hub);
   }
   for (auto& c : captures_) c->stop();
+}
+
+void SiteCourtService::republish(NavigationHub& hub) {
+  publisher_->republish(hub);
 }
 
 nlohmann::json SiteCourtService::health() const {

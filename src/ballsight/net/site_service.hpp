@@ -23,6 +23,7 @@ class SiteCourtService : public CourtService {
 
   const Site& site() const override { return site_; }
   void run(NavigationHub& hub, const std::atomic<bool>& stop) override;
+  void republish(NavigationHub& hub) override;
   /// Per camera: "state" (starting, running, retrying, finished, stopped), "frames",
   /// "frames_per_s", "last_frame_age_s" (null before the first), "failures", "last_error".
   nlohmann::json health() const override;

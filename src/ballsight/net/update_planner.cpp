@@ -27,11 +27,7 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world, std::int
   if (const auto external = hub.balls(); external && external->set_ns > capture_ns) {
     balls = external->value;
   }
-  const std::vector<Vec2> collected = hub.collected();
-  std::erase_if(balls, [&](const Vec2& b) {
-    return std::any_of(collected.begin(), collected.end(),
-                       [&](const Vec2& c) { return (c - b).norm() < kCollectedMatchM; });
-  });
+  std::erase_if(balls, [&](const Vec2& b) { return hub.was_collected(b); });
   // Two detections closer than a ball's radius would be one ball twice: keep the first.
   std::vector<Vec2> distinct;
   for (const Vec2& b : balls) {

@@ -13,9 +13,6 @@
 
 namespace ballsight {
 
-/// A ball reported collected within this of a ball seen is that ball.
-inline constexpr double kCollectedMatchM = 0.30;
-
 /// The update for `world` (captured at `capture_ns`, UTC); `previous` is the last published route
 /// (nullptr for the first). With no robot pose known the route is empty.
 NavigationUpdate plan_update(const Site& site, const WorldModel& world, std::int64_t capture_ns,
