@@ -1,0 +1,109 @@
+#include "ballsight/plan/path_follower.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+namespace {
+
+constexpr double kStraightRad = 0.35;  // 20 degrees: a turn smaller than this is no corner
+
+}  // namespace
+
+void FollowerOptions::validate() const {
+  const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  require(positive(mouth_ahead_m), "mouth_ahead_m", "must be positive");
+  require(positive(lookahead_m), "lookahead_m", "must be positive");
+  require(positive(max_speed_mps), "max_speed_mps", "must be positive");
+  require(positive(max_turn_rate_rps), "max_turn_rate_rps", "must be positive");
+  require(positive(arrive_m), "arrive_m", "must be positive");
+  require(positive(slow_down_m), "slow_down_m", "must be positive");
+}
+
+PathFollower::PathFollower(const FollowerOptions& options) : options_(options) {
+  options_.validate();
+}
+
+void PathFollower::set_path(std::vector<Vec2> waypoints) {
+  path_ = std::move(waypoints);
+  cumulative_.assign(path_.size(), 0.0);
+  for (std::size_t i = 1; i < path_.size(); ++i) {
+    cumulative_[i] = cumulative_[i - 1] + (path_[i] - path_[i - 1]).norm();
+  }
+  progress_ = 0.0;
+}
+
+Vec2 PathFollower::at(double s) const {
+  if (s <= 0.0) return path_.front();
+  const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
+  if (it == cumulative_.end()) return path_.back();
+  const std::size_t i = static_cast<std::size_t>(it - cumulative_.begin());
+  const double leg = cumulative_[i] - cumulative_[i - 1];
+  const double t = leg > 0.0 ? (s - cumulative_[i - 1]) / leg : 1.0;
+  return path_[i - 1] + t * (path_[i] - path_[i - 1]);
+}
+
+FollowCommand PathFollower::command(const Pose2D& pose) {
+  if (path_.empty()) return {0.0, 0.0, true};
+  const Vec2 h(std::cos(pose.heading_rad), std::sin(pose.heading_rad));
+  const Vec2 h_perp(-h.y(), h.x());
+  const Vec2 mouth = pose.position + options_.mouth_ahead_m * h;
+  // Progress: the closest point of the path to the mouth, searched a little ahead of the last
+  // progress only (the path may cross itself; progress never goes back).
+  const double total = cumulative_.back();
+  double best = progress_, best_d = (at(progress_) - mouth).norm();
+  for (double s = progress_; s <= std::min(total, progress_ + 2.0); s += 0.02) {
+    const double d = (at(s) - mouth).norm();
+    if (d < best_d) {
+      best_d = d;
+      best = s;
+    }
+  }
+  progress_ = best;
+  const double to_end = (path_.back() - mouth).norm();
+  if (total - progress_ < options_.arrive_m + 1e-9 && to_end < options_.arrive_m) {
+    return {0.0, 0.0, true};
+  }
+  // The next corner beyond the mouth's progress: a waypoint where the path turns (once the mouth
+  // is within arrive_m of one, the next).
+  double corner = total;
+  for (auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), progress_);
+       it + 1 < cumulative_.end(); ++it) {
+    const std::size_t i = static_cast<std::size_t>(it - cumulative_.begin());
+    if ((path_[i] - mouth).norm() < options_.arrive_m) continue;
+    const Vec2 in = path_[i] - path_[i - 1], out = path_[i + 1] - path_[i];
+    if (in.norm() > 1e-9 && out.norm() > 1e-9 &&
+        in.dot(out) > std::cos(kStraightRad) * in.norm() * out.norm()) {
+      continue;  // (nearly) straight on: no corner
+    }
+    corner = cumulative_[i];
+    break;
+  }
+  const Vec2 carrot = at(std::min(progress_ + options_.lookahead_m, corner));
+  const Vec2 towards = carrot - mouth;
+  const double distance = towards.norm();
+  if (distance < 1e-9) return {0.0, 0.0, true};
+  // Slow for the waypoint ahead when the path turns there, and for the end.
+  const double remaining = corner >= total ? std::max(total - progress_, to_end)
+                                           : std::max(corner - progress_, 0.0) + 0.2;
+  const double speed =
+      options_.max_speed_mps * std::clamp(remaining / options_.slow_down_m, 0.15, 1.0);
+  const Vec2 u = speed * towards / distance;
+  if (u.dot(h) < 0.0) {  // the carrot is behind: turn on the spot towards it (the mouth collects
+                         // only driving forwards)
+    return {0.0, std::copysign(options_.max_turn_rate_rps, u.dot(h_perp)), false};
+  }
+  double v = u.dot(h);
+  double w = u.dot(h_perp) / options_.mouth_ahead_m;
+  // Within the turn rate: scale the whole velocity, so that the mouth keeps its direction.
+  if (std::abs(w) > options_.max_turn_rate_rps) {
+    const double k = options_.max_turn_rate_rps / std::abs(w);
+    v *= k;
+    w *= k;
+  }
+  return {v, w, false};
+}
+
+}  // namespace ballsight

@@ -1,0 +1,62 @@
+#pragma once
+// Following a planned route with a differential-drive collector. The route's waypoints are where
+// the collector's mouth must pass (planning_input: the planned point is the mouth, a distance d
+// ahead of the robot's reference point), so the follower steers the mouth, not the axle: a point
+// ahead of a differential drive moves as P' = v h + d w h_perp (h the heading), so for a wanted
+// velocity u of the mouth, v = u . h and w = (u . h_perp) / d, exactly (feedback linearisation;
+// the mouth tracks the path itself, where pure pursuit cuts corners). u points at a carrot a
+// look-ahead along the path from the mouth's progress, but never past the next waypoint (a ball
+// is there: the mouth goes over it, not round the corner), and slows for the waypoint ahead and
+// for the end of the path; a carrot behind the robot is turned to on the spot.
+
+#include <cstddef>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+
+namespace ballsight {
+
+struct FollowerOptions {
+  double mouth_ahead_m = 0.30;  // d: the collector's mouth ahead of the pose
+  double lookahead_m = 0.40;    // carrot distance along the path
+  double max_speed_mps = 1.0;
+  double max_turn_rate_rps = 1.5707963267948966;  // 90 deg/s
+  double arrive_m = 0.05;           // the end of the path is reached within this
+  double slow_down_m = 0.6;         // full speed until this close to the end
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+struct FollowCommand {
+  double speed_mps = 0.0;
+  double turn_rate_rps = 0.0;
+  bool arrived = false;  // the mouth is at the path's end: the command is to stand still
+};
+
+class PathFollower {
+ public:
+  explicit PathFollower(const FollowerOptions& options = {});
+
+  /// A new path (the latest route's waypoints, starting near the robot): progress starts again
+  /// at its beginning.
+  void set_path(std::vector<Vec2> waypoints);
+  const std::vector<Vec2>& path() const { return path_; }
+
+  /// The command for the robot at `pose` (its reference point and heading).
+  FollowCommand command(const Pose2D& pose);
+
+  /// Where along the path the mouth has got, in metres from its start.
+  double progress_m() const { return progress_; }
+
+ private:
+  /// The point `s` metres along the path (clamped to its ends).
+  Vec2 at(double s) const;
+
+  FollowerOptions options_;
+  std::vector<Vec2> path_;
+  std::vector<double> cumulative_;  // path length up to each waypoint
+  double progress_ = 0.0;
+};
+
+}  // namespace ballsight

@@ -1,0 +1,149 @@
+#include "ballsight/sim/robot_motion.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "ballsight/core/angle.hpp"
+#include "ballsight/core/error.hpp"
+
+namespace ballsight::sim {
+namespace {
+
+/// `value` moved towards `target` by at most `step`.
+double approach(double value, double target, double step) {
+  return value + std::clamp(target - value, -step, step);
+}
+
+/// A rectangle as its four corners, counter-clockwise.
+using Corners = std::array<Vec2, 4>;
+
+Corners footprint_corners(const RobotFootprint& f, const Pose2D& pose) {
+  const Vec2 forward(std::cos(pose.heading_rad), std::sin(pose.heading_rad));
+  const Vec2 left(-forward.y(), forward.x());
+  const auto at = [&](double x, double y) -> Vec2 {
+    return pose.position + x * forward + y * left;
+  };
+  return {at(-f.back_m, -f.half_width_m), at(f.front_m, -f.half_width_m),
+          at(f.front_m, f.half_width_m), at(-f.back_m, f.half_width_m)};
+}
+
+/// Whether two convex quadrilaterals overlap (separating axis theorem over their edges).
+bool overlap(const Corners& a, const Corners& b) {
+  for (const Corners* shape : {&a, &b}) {
+    for (int i = 0; i < 4; ++i) {
+      const Vec2 edge = (*shape)[(i + 1) % 4] - (*shape)[i];
+      const Vec2 axis(-edge.y(), edge.x());
+      double a_min = 1e300, a_max = -1e300, b_min = 1e300, b_max = -1e300;
+      for (const Vec2& p : a) {
+        a_min = std::min(a_min, axis.dot(p));
+        a_max = std::max(a_max, axis.dot(p));
+      }
+      for (const Vec2& p : b) {
+        b_min = std::min(b_min, axis.dot(p));
+        b_max = std::max(b_max, axis.dot(p));
+      }
+      if (a_max < b_min || b_max < a_min) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void DriveLimits::validate() const {
+  const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  require(positive(max_speed_mps), "robot.max_speed_mps", "must be positive");
+  require(positive(max_accel_mps2), "robot.max_accel_mps2", "must be positive");
+  require(positive(max_turn_rate_dps), "robot.turn_rate_dps", "must be positive");
+  require(positive(max_turn_accel_dps2), "robot.turn_accel_dps2", "must be positive");
+}
+
+RobotFootprint RobotFootprint::of(const RobotBox& box, double collector_x_m,
+                                  double collector_width_m) {
+  RobotFootprint f;
+  f.back_m = box.length_m / 2.0;
+  f.front_m = std::max(box.length_m / 2.0, collector_x_m);
+  f.half_width_m = std::max(box.width_m, collector_width_m) / 2.0;
+  f.collector_x_m = collector_x_m;
+  f.collector_width_m = collector_width_m;
+  return f;
+}
+
+bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
+                       const TennisCourtSpec& court) {
+  const Corners corners = footprint_corners(footprint, pose);
+  for (const Vec2& c : corners) {
+    if (std::abs(c.x()) > court.surround_length_m / 2.0 ||
+        std::abs(c.y()) > court.surround_width_m / 2.0) {
+      return true;
+    }
+  }
+  if (!court.net.enabled) return false;
+  // The net: the mesh on x = 0 between the post centres, as thick as the posts.
+  const double half_span =
+      court.doubles_width_m / 2.0 + court.net.post_outside_doubles_m + court.net.post_radius_m;
+  const double half_depth = court.net.post_radius_m;
+  const Corners net{Vec2(-half_depth, -half_span), Vec2(half_depth, -half_span),
+                    Vec2(half_depth, half_span), Vec2(-half_depth, half_span)};
+  return overlap(corners, net);
+}
+
+DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, double dt,
+                     const DriveLimits& limits, const RobotFootprint& footprint,
+                     const TennisCourtSpec& court) {
+  const double max_turn = rad_from_deg(limits.max_turn_rate_dps);
+  const double v_target =
+      std::clamp(command.speed_mps, -limits.max_speed_mps, limits.max_speed_mps);
+  const double w_target = std::clamp(command.turn_rate_rps, -max_turn, max_turn);
+  RobotMotion next = motion;
+  next.speed_mps = approach(motion.speed_mps, v_target, limits.max_accel_mps2 * dt);
+  next.turn_rate_rps =
+      approach(motion.turn_rate_rps, w_target, rad_from_deg(limits.max_turn_accel_dps2) * dt);
+  // The arc at the step's mean speeds.
+  const double v = 0.5 * (motion.speed_mps + next.speed_mps);
+  const double w = 0.5 * (motion.turn_rate_rps + next.turn_rate_rps);
+  const double h0 = motion.pose.heading_rad, dh = w * dt;
+  Vec2 move;
+  if (std::abs(dh) < 1e-9) {
+    move = v * dt * Vec2(std::cos(h0), std::sin(h0));
+  } else {
+    const double r = v / w;
+    move = r * Vec2(std::sin(h0 + dh) - std::sin(h0), std::cos(h0) - std::cos(h0 + dh));
+  }
+  next.pose = {motion.pose.position + move, wrap_rad_pi(h0 + dh)};
+  if (footprint_blocked(footprint, next.pose, court)) {
+    RobotMotion stopped = motion;
+    stopped.speed_mps = 0.0;
+    stopped.turn_rate_rps = 0.0;
+    return {stopped, true};
+  }
+  return {next, false};
+}
+
+std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Pose2D& after,
+                               const RobotFootprint& footprint) {
+  // The ball's place in the robot's frame: ahead of the mouth before, at or behind it after.
+  const auto local = [](const Pose2D& pose, const Vec2& p) {
+    const Vec2 d = p - pose.position;
+    const double c = std::cos(pose.heading_rad), s = std::sin(pose.heading_rad);
+    return Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+  };
+  const double half = footprint.collector_width_m / 2.0;
+  std::vector<int> ids;
+  std::erase_if(scene.balls, [&](const SceneSphere& ball) {
+    if (ball.kind != ObjectKind::tennis_ball) return false;
+    const Vec2 p = ball.center_in_field.head<2>();
+    const Vec2 a = local(before, p), b = local(after, p);
+    const bool crossed = a.x() > footprint.collector_x_m && b.x() <= footprint.collector_x_m;
+    const bool inside = b.x() <= footprint.collector_x_m && b.x() > -footprint.back_m &&
+                        std::abs(b.y()) <= half;  // e.g. turned onto it on the spot
+    const bool taken = (crossed && std::abs(a.y()) <= half + 0.05 && std::abs(b.y()) <= half) ||
+                       (inside && a.x() > footprint.collector_x_m - 0.05);
+    if (taken) ids.push_back(ball.id);
+    return taken;
+  });
+  return ids;
+}
+
+}  // namespace ballsight::sim

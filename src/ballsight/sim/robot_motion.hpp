@@ -1,0 +1,70 @@
+#pragma once
+// The simulated collector's truth: a differential-drive robot that speeds up, turns and stops
+// within its limits, cannot pass through the net or the fence, and picks up every tennis ball
+// its collector mouth passes over (the tennis-ball report's 70 cm collector, section 7.8).
+
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+#include "ballsight/sim/court_scene.hpp"
+#include "ballsight/sim/tennis_court.hpp"
+
+namespace ballsight::sim {
+
+struct DriveLimits {
+  double max_speed_mps = 1.0;
+  double max_accel_mps2 = 1.0;      // speeding up and braking
+  double max_turn_rate_dps = 90.0;  // turning on the spot
+  double max_turn_accel_dps2 = 360.0;
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+/// Wheel speeds as forward speed and turn rate (rad/s, counter-clockwise).
+struct DriveCommand {
+  double speed_mps = 0.0;
+  double turn_rate_rps = 0.0;
+};
+
+struct RobotMotion {
+  Pose2D pose;  // the box centre, as RobotBox::pose
+  double speed_mps = 0.0;
+  double turn_rate_rps = 0.0;
+};
+
+/// What the robot occupies, in its own frame (x forward): its box and the collector's mouth.
+struct RobotFootprint {
+  double back_m = 0.30;
+  double front_m = 0.30;
+  double half_width_m = 0.35;   // the collector is wider than the box
+  double collector_x_m = 0.30;  // the mouth, ahead of the pose
+  double collector_width_m = 0.70;
+
+  /// The footprint of `box` with a collector of this width, its mouth this far ahead.
+  static RobotFootprint of(const RobotBox& box, double collector_x_m, double collector_width_m);
+};
+
+/// Whether the robot at `pose` overlaps the net (its mesh between the posts, and the posts) or
+/// reaches beyond the fenced area.
+bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
+                       const TennisCourtSpec& court);
+
+struct DriveStep {
+  RobotMotion motion;
+  bool blocked = false;  // the step was refused: the robot stopped where it was
+};
+
+/// One step of `dt` seconds: speed and turn rate move towards the command within the limits, the
+/// pose follows the arc they describe. A step that would put the footprint into the net or the
+/// fence is not taken: the robot stays and stops.
+DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, double dt,
+                     const DriveLimits& limits, const RobotFootprint& footprint,
+                     const TennisCourtSpec& court);
+
+/// Removes from `scene` the tennis balls whose centre crossed the collector's mouth while the
+/// robot moved from `before` to `after` (forwards, within the mouth's width); their ids.
+std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Pose2D& after,
+                               const RobotFootprint& footprint);
+
+}  // namespace ballsight::sim
