@@ -4,6 +4,8 @@
 
 #include <variant>
 
+#include "sample_update.hpp"
+
 namespace ballsight {
 namespace {
 
@@ -20,15 +22,7 @@ struct Fixture {
 };
 
 NavigationUpdate update_with_robot(double x) {
-  NavigationUpdate u;
-  u.capture_time_ns = utc_now_ns();
-  RobotPoseEstimate robot;
-  robot.pose = {Vec2(x, 1.0), 0.5};
-  u.world.robot = robot;
-  u.world.balls.push_back({Vec2(3, 4), Eigen::Matrix2d::Zero(), {0}});
-  u.route.planner = "ballsight";
-  u.route.order = {0};
-  return u;
+  return test::sample_update({Vec2(x, 1.0), 0.5});
 }
 
 void expect_error(const ApiResponse& r, int status, const std::string& where) {

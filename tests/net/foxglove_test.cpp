@@ -10,6 +10,7 @@
 #include <boost/beast/websocket.hpp>
 
 #include "ballsight/net/http_server.hpp"
+#include "sample_update.hpp"
 
 namespace ballsight {
 namespace {
@@ -17,14 +18,7 @@ namespace {
 using nlohmann::json;
 
 NavigationUpdate update() {
-  NavigationUpdate u;
-  u.capture_time_ns = 1'700'000'000'123'456'789;
-  RobotPoseEstimate robot;
-  robot.pose = {Vec2(1.0, 2.0), 0.5};
-  u.world.robot = robot;
-  u.world.balls.push_back({Vec2(3, 4), Eigen::Matrix2d::Zero(), {0}});
-  u.route.waypoints_m = {Vec2(1, 2), Vec2(3, 4)};
-  return u;
+  return test::sample_update({Vec2(1.0, 2.0), 0.5}, 1'700'000'000'123'456'789);
 }
 
 std::uint64_t little_endian(const std::string& bytes, std::size_t at, int n) {

@@ -9,6 +9,7 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/net/http_server.hpp"
+#include "sample_update.hpp"
 
 namespace ballsight {
 namespace {
@@ -34,15 +35,7 @@ RobotLinkOptions link_options(unsigned short port, bool websocket) {
 }
 
 NavigationUpdate update(double x) {
-  NavigationUpdate u;
-  u.capture_time_ns = utc_now_ns();
-  RobotPoseEstimate robot;
-  robot.pose = {Vec2(x, 1.0), 0.25};
-  u.world.robot = robot;
-  u.world.balls.push_back({Vec2(3, 4), Eigen::Matrix2d::Zero(), {0}});
-  u.route.waypoints_m = {Vec2(x, 1.0), Vec2(3, 4)};
-  u.route.visits_m = {Vec2(3, 4)};
-  return u;
+  return test::sample_update({Vec2(x, 1.0), 0.25});
 }
 
 /// The seqs of `count` updates taken from `link`, waiting up to 5 s for each.
