@@ -183,7 +183,6 @@ BENCHMARK(BM_Throughput100Clients)->Unit(benchmark::kMillisecond)->UseRealTime()
 
 void BM_WholeChain(benchmark::State& state) {
   SimulatedServiceOptions options;
-  options.max_rate_hz = 1000.0;  // flat out: the chain is timed from each capture
   SimulatedCourtService simulated(options);
   NavigationHub hub;
   ApiContext context{hub, simulated.camera_names(), simulated.site().court,

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   ballsight::app::add_court_run_command(*court);
   ballsight::app::add_plan_command(app);
   ballsight::app::add_serve_command(app);
+  ballsight::app::add_robot_command(app);
 
   try {
     app.parse(argc, argv);

@@ -29,6 +29,7 @@ struct ServeArgs {
   std::string token_file = "ballsight-token";
   std::string planner = "ballsight";
   bool open_reads = false;
+  int balls = -1;           // simulated court: tennis balls (-1: the scenario's)
   double duration_s = 0.0;  // 0: until SIGINT or SIGTERM
   SimulatedServiceOptions service;
 };
@@ -47,10 +48,14 @@ void run_serve(const ServeArgs& args) {
   require(kind && *kind != PlannerKind::exact, "--planner",
           "expected priority, nearest or ballsight, got '" + args.planner + "'");
   std::unique_ptr<CourtService> court;
+  SimulatedCourtService* simulated = nullptr;
   if (args.sim) {
     SimulatedServiceOptions options = args.service;
     options.planner.kind = *kind;
-    court = std::make_unique<SimulatedCourtService>(options);
+    if (args.balls >= 0) options.balls = args.balls;
+    auto service = std::make_unique<SimulatedCourtService>(options);
+    simulated = service.get();
+    court = std::move(service);
   } else {
     SiteServiceOptions options;
     options.planner.kind = *kind;
@@ -87,6 +92,11 @@ void run_serve(const ServeArgs& args) {
     return h;
   };
   context.on_collected = [&] { service.republish(hub); };
+  if (simulated) {
+    context.drive = [simulated](std::uint64_t seq, double speed_mps, double turn_rate_rps) {
+      return simulated->drive(seq, speed_mps, turn_rate_rps);
+    };
+  }
   HttpServer http(server_options, context);
   server = &http;
   std::cout << "ballsight serve: http://" << server_options.address << ":" << http.port()
@@ -137,9 +147,14 @@ void add_serve_command(CLI::App& app) {
   cmd->add_flag("--open-reads", args->open_reads, "Reads from other hosts need no token");
   cmd->add_option("--planner", args->planner, "priority, nearest or ballsight")
       ->capture_default_str();
-  cmd->add_option("--rate", args->service.max_rate_hz,
-                  "Simulated court: frame sets per second at most")
+  cmd->add_option("--rate", args->service.vision_hz,
+                  "Simulated court: frame sets per second of simulated time")
       ->capture_default_str();
+  cmd->add_option("--balls", args->balls, "Simulated court: tennis balls on it (default 20-60)");
+  cmd->add_flag("--realtime", args->service.realtime,
+                "Simulated court: simulated time at wall time (default: as fast as it goes)");
+  cmd->add_option("--truth-out", args->service.truth_out,
+                  "Simulated court: write every tick's truth here (JSON lines)");
   cmd->add_option("--duration", args->duration_s, "Stop after this many seconds (0: on a signal)")
       ->capture_default_str();
   cmd->callback([args] { run_serve(*args); });

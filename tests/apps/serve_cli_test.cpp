@@ -96,19 +96,24 @@ TEST(ServeCli, SimulatedCourtRouteAndCollectedBall) {
                     json{{"balls", {{{"x_m", tx}, {"y_m", ty}}}}}.dump(), token)
                 .status,
             200);
-  // Two updates later the ball has left the court (the simulator) and the plan.
+  // With no robot driving, a hand takes the ball off the court at the next tick (the report's
+  // own test): a few updates later the cameras no longer see it.
+  const auto sees_target = [&](const json& update) {
+    for (const json& b : update["world"]["balls"]) {
+      if (std::hypot(b["x_m"].get<double>() - tx, b["y_m"].get<double>() - ty) < 0.1) return true;
+    }
+    return false;
+  };
   std::uint64_t seq = u1.body["seq"];
-  json latest;
-  for (int k = 0; k < 2; ++k) {
+  json latest = u1.body;
+  for (int k = 0; k < 5 && sees_target(latest); ++k) {
     const Reply u = request(port, http::verb::get,
                             "/api/v1/navigation?after=" + std::to_string(seq) + "&timeout_ms=8000");
     ASSERT_EQ(u.status, 200);
     seq = u.body["seq"];
     latest = u.body;
   }
-  for (const json& b : latest["world"]["balls"]) {
-    EXPECT_GT(std::hypot(b["x_m"].get<double>() - tx, b["y_m"].get<double>() - ty), 0.1);
-  }
+  EXPECT_FALSE(sees_target(latest));
   for (const json& v : latest["route"]["visits_m"]) {
     EXPECT_GT(std::hypot(v[0].get<double>() - tx, v[1].get<double>() - ty), 0.1);
   }
@@ -129,8 +134,8 @@ TEST(ServeCli, ACollectedBallLeavesThePlanAtOnce) {
   const TempDir temp;
   const std::string token_file = (temp / "token").string();
   FILE* out = nullptr;  // a frame set every 4 s: an update within 1 s is the re-plan
-  const unsigned short port =
-      start_serve("--sim --rate 0.25 --duration 5 --token-file '" + token_file + "'", out);
+  const unsigned short port = start_serve(
+      "--sim --rate 0.25 --realtime --duration 5 --token-file '" + token_file + "'", out);
   ASSERT_NE(port, 0);
   const Reply u1 = request(port, http::verb::get, "/api/v1/navigation?after=0&timeout_ms=8000");
   ASSERT_EQ(u1.status, 200);

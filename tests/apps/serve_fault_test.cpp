@@ -2,69 +2,24 @@
 // while the robot's client runs. The client notices, reconnects with back-off, follows the new
 // run of the service from its latest update, and keeps acknowledging.
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <string>
 
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/net/robot_link.hpp"
+#include "serve_process.hpp"
 #include "temp_dir.hpp"
-
-extern char** environ;
 
 namespace ballsight::test {
 namespace {
 
 using std::chrono::milliseconds;
 
-/// `ballsight serve --sim` in a child process, its stdout read through a pipe.
-class ServeProcess {
- public:
-  ServeProcess(const std::string& listen, const std::string& token_file) {
-    int fds[2];
-    if (::pipe(fds) != 0) return;
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
-    posix_spawn_file_actions_addclose(&actions, fds[0]);
-    std::vector<std::string> args{BALLSIGHT_CLI, "serve",        "--sim",   "--listen",
-                                  listen,        "--rate",       "10",      "--duration",
-                                  "60",          "--token-file", token_file};
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    if (posix_spawn(&pid_, BALLSIGHT_CLI, &actions, nullptr, argv.data(), environ) != 0) pid_ = 0;
-    posix_spawn_file_actions_destroy(&actions);
-    ::close(fds[1]);
-    out_ = ::fdopen(fds[0], "r");
-    char line[256] = {};
-    if (pid_ > 0 && std::fgets(line, sizeof line, out_)) {
-      const std::string first(line);
-      const std::size_t at = first.find("127.0.0.1:");
-      if (at != std::string::npos)
-        port_ = static_cast<unsigned short>(std::stoi(first.substr(at + 10)));
-    }
-  }
-  ~ServeProcess() { kill(SIGTERM); }
-
-  unsigned short port() const { return port_; }
-  void kill(int signal) {
-    if (pid_ <= 0) return;
-    ::kill(pid_, signal);
-    ::waitpid(pid_, nullptr, 0);
-    pid_ = 0;
-    std::fclose(out_);
-  }
-
- private:
-  pid_t pid_ = 0;
-  FILE* out_ = nullptr;
-  unsigned short port_ = 0;
-};
+std::vector<std::string> serve_args(const std::string& listen, const std::string& token_file) {
+  return {"--sim",      "--listen",   listen, "--rate",       "10",
+          "--realtime", "--duration", "60",   "--token-file", token_file};
+}
 
 /// The next update newer than `seq` of the run `service`, waiting up to 30 s.
 std::optional<LinkUpdate> next_of(RobotLink& link, const std::string& service) {
@@ -79,7 +34,7 @@ std::optional<LinkUpdate> next_of(RobotLink& link, const std::string& service) {
 TEST(ServeFault, TheRobotsClientOutlivesAKilledService) {
   const TempDir temp;
   const std::string token_file = (temp / "token").string();
-  auto service = std::make_unique<ServeProcess>("127.0.0.1:0", token_file);
+  auto service = std::make_unique<ServeProcess>(serve_args("127.0.0.1:0", token_file));
   const unsigned short port = service->port();
   ASSERT_NE(port, 0);
   RobotLinkOptions options;
@@ -99,7 +54,8 @@ TEST(ServeFault, TheRobotsClientOutlivesAKilledService) {
   }
 
   service->kill(SIGKILL);
-  service = std::make_unique<ServeProcess>("127.0.0.1:" + std::to_string(port), token_file);
+  service =
+      std::make_unique<ServeProcess>(serve_args("127.0.0.1:" + std::to_string(port), token_file));
   ASSERT_EQ(service->port(), port);
   std::optional<LinkUpdate> after;
   while ((after = next_of(link, "")) && after->service_id == before->service_id) {

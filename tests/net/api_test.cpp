@@ -174,7 +174,7 @@ TEST(Api, TheOpenApiDocumentListsExactlyTheRoutesThatAnswer) {
       EXPECT_EQ(f.call(method, path).status, 405) << method << " " << path;
     }
   }
-  EXPECT_EQ(operations, 12);
+  EXPECT_EQ(operations, 13);
 }
 
 }  // namespace

@@ -30,6 +30,12 @@ TEST(PlanningInput, TheSiteGivesTheCourtTheNetAndTheCollector) {
   site.court.net = false;
   EXPECT_FALSE(drivable_court(site.court).net);
   expect_error([&] { site_planning_problem(Site{}, {Vec2(0.02, 1), 0.0}, {}); }, "inside the net");
+  // Beyond a post, within the room the route keeps round it: planned from the nearest point out.
+  const PlanningProblem round =
+      site_planning_problem(Site{}, {Vec2(-0.02, 6.6), rad_from_deg(-90.0)}, {Vec2(5, 5)});
+  EXPECT_FALSE(round.court->in_net_zone(round.robot.position));
+  EXPECT_NEAR(round.robot.position.x(), -0.10, 1e-12);  // the mouth out through the net's side
+  EXPECT_NEAR(round.robot.position.y(), 6.3, 1e-12);
 }
 
 TEST(PlanningInput, WorldJsonAndCsv) {

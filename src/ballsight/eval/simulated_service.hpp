@@ -1,13 +1,20 @@
 #pragma once
-// `ballsight serve --sim`: the navigation service on the built-in simulated court. The four
-// corner cameras are rendered over and over (fresh sensor noise each time; balls the robot
-// reports collected vanish from the court), ballsight's court pipeline turns every frame set into
-// a world model, the route is planned and the update published: the frames, not the truth, are
-// what the service sees. The cameras' calibration is the simulator's (calibrating from rendered
-// chessboards is `eval court`'s business).
+// `ballsight serve --sim`: the navigation service on the built-in simulated court, in simulated
+// time. Every vision tick the four corner cameras are rendered from the court's truth (fresh
+// sensor noise each time, the robot where it really is, collected balls gone), ballsight's court
+// pipeline turns the frames into a world model, the route is planned and the update published:
+// the frames, not the truth, are what the service sees. Then the court advances one vision
+// period: the simulated robot (`ballsight robot`) drives with the command it sent for that update
+// (PUT /api/v1/sim/drive; the service waits for it, so simulated time runs as fast as the two
+// programs allow, or at wall time with `realtime`), its collector picks up the balls it passes
+// over, the net and the fence stop it. With no robot driving, a ball reported collected is taken
+// off the court by hand, as in the report's own test. The cameras' calibration is the
+// simulator's (calibrating from rendered chessboards is `eval court`'s business).
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "ballsight/net/court_service.hpp"
 
@@ -15,7 +22,11 @@ namespace ballsight {
 
 struct SimulatedServiceOptions {
   std::uint64_t seed = 1;
-  double max_rate_hz = 10.0;  // frame sets per second at most
+  std::optional<int> balls;         // tennis balls on the court; nullopt: the scenario's 20-60
+  double vision_hz = 10.0;          // frame sets per second of simulated time
+  bool realtime = false;            // simulated time at wall time (else as fast as possible)
+  double robot_wait_s = 1.0;        // for a driving robot's command, at most (wall)
+  std::filesystem::path truth_out;  // JSON lines, one per tick (empty: not written)
   PlannerOptions planner;
 
   /// Throws InputError naming the first invalid field.
@@ -30,9 +41,15 @@ class SimulatedCourtService : public CourtService {
   const Site& site() const override;
   void run(NavigationHub& hub, const std::atomic<bool>& stop) override;
   void republish(NavigationHub& hub) override;
-  /// {"cameras": [{"name", "state": "simulated", "frames"}], "render_ms", and the figures of
+  /// {"cameras": [{"name", "state": "simulated", "frames"}], "render_ms", "sim": {"time_s",
+  /// "balls_left", "collected", "robot", "driving", "blocked_ticks"}, and the figures of
   /// UpdatePublisher::health()}.
   nlohmann::json health() const override;
+
+  /// The robot's command for the update `seq` (speed m/s, turn rate rad/s, counter-clockwise):
+  /// it drives the next vision period. Returns {"collected": balls its collector took since its
+  /// previous command (the collector's sensor), "time_s": simulated time}. Any thread.
+  nlohmann::json drive(std::uint64_t seq, double speed_mps, double turn_rate_rps);
 
  private:
   struct Impl;

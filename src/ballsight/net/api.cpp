@@ -234,6 +234,19 @@ ApiResponse collected_route(const ApiRequest& request, const std::string&, const
   return ok({{"accepted", positions.size()}});
 }
 
+ApiResponse drive_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
+  require_write(request);
+  if (!c.drive) fail(404, "not a simulated court: there is no simulated robot to drive", "service");
+  const json body = parse_body(request.body);
+  only_keys(body, {"seq", "speed_mps", "turn_rate_dps"}, "body");
+  const auto seq = body.find("seq");
+  if (seq == body.end() || !seq->is_number_unsigned()) {
+    fail(400, "expected a non-negative integer", "body.seq");
+  }
+  return ok(c.drive(seq->get<std::uint64_t>(), number(body, "speed_mps", "body"),
+                    rad_from_deg(number(body, "turn_rate_dps", "body"))));
+}
+
 ApiResponse world_route(const ApiRequest&, const std::string&, const ApiContext& c) {
   const NavigationUpdate u = latest_or_fail(c.hub);
   json j = world_model_json(u.world, c.camera_names);
@@ -362,6 +375,7 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       {"/api/v1/navigation", {"GET"}, navigation_route},
       {"/api/v1/navigation/ack", {"POST"}, ack_route},
       {"/api/v1/collected", {"POST"}, collected_route},
+      {"/api/v1/sim/drive", {"PUT"}, drive_route},
       {"/api/v1/world", {"GET"}, world_route},
       {"/api/v1/route", {"GET"}, plan_route},
       {"/api/v1/health", {"GET"}, health_route},

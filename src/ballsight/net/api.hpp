@@ -46,9 +46,12 @@ struct ApiContext {
   std::vector<std::string> camera_names;
   SiteCourt court;
   double ball_radius_m;
-  FieldRect area;                             // the court's fenced area: positions sent lie in it
-  std::function<nlohmann::json()> health;     // the service's health document
-  std::function<void()> on_collected;         // balls were reported collected: re-plan now
+  FieldRect area;                          // the court's fenced area: positions sent lie in it
+  std::function<nlohmann::json()> health;  // the service's health document
+  std::function<void()> on_collected;      // balls were reported collected: re-plan now
+  /// The simulated court only: a simulated robot's command for update `seq` (PUT
+  /// /api/v1/sim/drive); answers its collector's count. Empty elsewhere (404).
+  std::function<nlohmann::json(std::uint64_t seq, double speed_mps, double turn_rate_rps)> drive;
   std::chrono::milliseconds max_wait{30000};  // cap on a long-poll's timeout_ms
 };
 

@@ -21,6 +21,8 @@ const nlohmann::json& openapi_document() {
                "properties": {"x_m": {"type": "number"}, "y_m": {"type": "number"}, "heading_deg": {"type": "number"}}},
       "Balls": {"type": "object", "required": ["balls"], "additionalProperties": false,
                 "properties": {"balls": {"type": "array", "items": {"$ref": "#/components/schemas/Point"}}}},
+      "Drive": {"type": "object", "required": ["seq", "speed_mps", "turn_rate_dps"], "additionalProperties": false,
+                "properties": {"seq": {"type": "integer", "minimum": 0}, "speed_mps": {"type": "number"}, "turn_rate_dps": {"type": "number", "description": "counter-clockwise"}}},
       "Ack": {"type": "object", "required": ["seq"], "additionalProperties": false,
               "properties": {"seq": {"type": "integer", "minimum": 0, "description": "an update published already (else 409)"}}},
       "Update": {"type": "object", "required": ["seq", "service_id", "capture_time_ns", "published_ns", "world", "route"],
@@ -61,6 +63,11 @@ const nlohmann::json& openapi_document() {
       "post": {"summary": "Balls the robot picked up (positions): they leave the plan at once (re-planned and published), until the cameras confirm them gone", "security": [{"bearer": []}],
                "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Balls"}}}},
                "responses": {"200": {"description": "accepted"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "422": {"description": "outside the field"}}}
+    },
+    "/api/v1/sim/drive": {
+      "put": {"summary": "The simulated court only: the simulated robot's command for update 'seq' (it drives the next vision period; the court waits for it). Answers {\"collected\": balls its collector took since its previous command, \"time_s\": simulated time}", "security": [{"bearer": []}],
+              "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Drive"}}}},
+              "responses": {"200": {"description": "driving"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "404": {"description": "not a simulated court"}}}
     },
     "/api/v1/world": {
       "get": {"summary": "The latest world model: balls, collection sites, robot, cameras; its seq, service id, capture and publish times",

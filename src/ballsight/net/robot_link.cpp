@@ -159,7 +159,7 @@ struct RobotLink::Impl {
   awaitable<void> receive();
   awaitable<void> receive_stream();
   awaitable<void> receive_polls();
-  bool write(http::verb verb, const std::string& target, const json& body);
+  std::optional<json> call(http::verb verb, const std::string& target, const json& body);
   /// The oldest update not taken (or the newest, dropping the rest), waiting up to `timeout`.
   std::optional<LinkUpdate> take(std::chrono::milliseconds timeout, bool newest);
 };
@@ -334,7 +334,8 @@ std::optional<LinkUpdate> RobotLink::latest(std::chrono::milliseconds timeout) {
   return impl_->take(timeout, true);
 }
 
-bool RobotLink::Impl::write(http::verb verb, const std::string& target, const json& body) {
+std::optional<json> RobotLink::Impl::call(http::verb verb, const std::string& target,
+                                          const json& body) {
   const std::lock_guard lock(write_mutex);
   std::string error;
   try {
@@ -343,31 +344,43 @@ bool RobotLink::Impl::write(http::verb verb, const std::string& target, const js
     write_io.restart();
     write_io.run();
     const Response res = done.get();
-    if (res.result_int() == 200) return true;
-    error = target + " answered " + std::to_string(res.result_int()) + ": " + res.body();
+    if (res.result_int() == 200) {
+      const json answer = json::parse(res.body(), nullptr, false);
+      if (!answer.is_discarded()) return answer;
+      error = target + " answered 200 with no JSON";
+    } else {
+      error = target + " answered " + std::to_string(res.result_int()) + ": " + res.body();
+    }
   } catch (const std::exception& e) {
     error = target + ": " + e.what();
   }
   const std::lock_guard status_lock(mutex);
   status.last_error = error;
-  return false;
+  return std::nullopt;
+}
+
+std::optional<json> RobotLink::call(const std::string& method, const std::string& target,
+                                    const json& body) {
+  return impl_->call(http::string_to_verb(method), target, body);
 }
 
 bool RobotLink::acknowledge(std::uint64_t seq) {
-  return impl_->write(http::verb::post, "/api/v1/navigation/ack", {{"seq", seq}});
+  return impl_->call(http::verb::post, "/api/v1/navigation/ack", {{"seq", seq}}).has_value();
 }
 
 bool RobotLink::report_collected(const std::vector<Vec2>& positions) {
   json balls = json::array();
   for (const Vec2& p : positions) balls.push_back({{"x_m", p.x()}, {"y_m", p.y()}});
-  return impl_->write(http::verb::post, "/api/v1/collected", {{"balls", balls}});
+  return impl_->call(http::verb::post, "/api/v1/collected", {{"balls", balls}}).has_value();
 }
 
 bool RobotLink::set_pose(const Pose2D& pose) {
-  return impl_->write(http::verb::put, "/api/v1/robot",
-                      {{"x_m", pose.position.x()},
-                       {"y_m", pose.position.y()},
-                       {"heading_deg", deg_from_rad(pose.heading_rad)}});
+  return impl_
+      ->call(http::verb::put, "/api/v1/robot",
+             {{"x_m", pose.position.x()},
+              {"y_m", pose.position.y()},
+              {"heading_deg", deg_from_rad(pose.heading_rad)}})
+      .has_value();
 }
 
 LinkStatus RobotLink::status() const {

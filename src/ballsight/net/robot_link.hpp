@@ -69,6 +69,11 @@ class RobotLink {
   /// PUT /api/v1/robot.
   bool set_pose(const Pose2D& pose);
 
+  /// Any other request of API v1 ("PUT", "/api/v1/sim/drive", body): the answer's JSON on 200,
+  /// else nullopt (and last_error says why).
+  std::optional<nlohmann::json> call(const std::string& method, const std::string& target,
+                                     const nlohmann::json& body);
+
   LinkStatus status() const;
   void stop();
 

@@ -42,10 +42,17 @@ PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
                                       std::vector<Vec2> balls) {
   PlanningProblem problem;
   problem.court = drivable_court(site.court);
-  require(!problem.court->in_net_zone(robot.position), "robot pose",
+  const std::optional<CourtNet>& net = problem.court->net;
+  require(!(net && std::abs(robot.position.x()) < net->clearance_m &&
+            std::abs(robot.position.y()) < net->half_length_m),
+          "robot pose",
           fixed_pair(robot.position.x(), robot.position.y(), 3) + " is inside the net");
   const Vec2 forward(std::cos(robot.heading_rad), std::sin(robot.heading_rad));
-  problem.robot = {robot.position + site.robot.collector_x_m * forward, robot.heading_rad};
+  // Beyond a post but within the room the route keeps round it (the robot drove round it there):
+  // the route starts from the nearest point outside that room.
+  problem.robot = {
+      problem.court->outside_net_zone(robot.position + site.robot.collector_x_m * forward),
+      robot.heading_rad};
   problem.balls = std::move(balls);
   problem.limits = {site.robot.max_speed_mps, site.robot.turn_rate_dps};
   problem.collector_width_m = site.robot.collector_width_m;

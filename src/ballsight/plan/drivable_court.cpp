@@ -98,6 +98,14 @@ bool DrivableCourt::in_net_zone(const Vec2& p) const {
          std::abs(p.y()) < net->half_length_m + net->post_clearance_m - kEps;
 }
 
+Vec2 DrivableCourt::outside_net_zone(const Vec2& p) const {
+  if (!in_net_zone(p)) return p;
+  const double x_edge = net->clearance_m, y_edge = net->half_length_m + net->post_clearance_m;
+  // Out through the nearer edge: a side of the net, or past a post's end.
+  if (x_edge - std::abs(p.x()) <= y_edge - std::abs(p.y())) return {side_of(p) * x_edge, p.y()};
+  return {p.x(), std::copysign(y_edge, p.y())};
+}
+
 Vec2 DrivableCourt::approach_point(const Vec2& ball) const {
   if (!in_net_zone(ball)) return ball;
   return {side_of(ball) * net->clearance_m, ball.y()};

@@ -35,6 +35,8 @@ struct DrivableCourt {
   bool in_area(const Vec2& p) const;
   /// Inside the net's keep-out rectangle (|x| < clearance, |y| < half length + post clearance).
   bool in_net_zone(const Vec2& p) const;
+  /// `p`, or, inside the net's keep-out, the nearest point on its edge.
+  Vec2 outside_net_zone(const Vec2& p) const;
   /// Where the robot's collector picks up a ball at `ball`: the ball itself, or, for a ball inside
   /// the net's keep-out, the nearest point on the keep-out's edge on the ball's side of the net.
   Vec2 approach_point(const Vec2& ball) const;

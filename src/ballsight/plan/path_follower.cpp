@@ -20,6 +20,7 @@ void FollowerOptions::validate() const {
   require(positive(max_turn_rate_rps), "max_turn_rate_rps", "must be positive");
   require(positive(arrive_m), "arrive_m", "must be positive");
   require(positive(slow_down_m), "slow_down_m", "must be positive");
+  require(std::isfinite(overshoot_m) && overshoot_m >= 0.0, "overshoot_m", "must not be negative");
 }
 
 PathFollower::PathFollower(const FollowerOptions& options) : options_(options) {
@@ -28,6 +29,11 @@ PathFollower::PathFollower(const FollowerOptions& options) : options_(options) {
 
 void PathFollower::set_path(std::vector<Vec2> waypoints) {
   path_ = std::move(waypoints);
+  if (path_.size() >= 2 && options_.overshoot_m > 0.0) {
+    const Vec2 last = path_.back() - path_[path_.size() - 2];
+    if (last.norm() > 1e-9)
+      path_.push_back(path_.back() + options_.overshoot_m * last.normalized());
+  }
   cumulative_.assign(path_.size(), 0.0);
   for (std::size_t i = 1; i < path_.size(); ++i) {
     cumulative_[i] = cumulative_[i - 1] + (path_[i] - path_[i - 1]).norm();

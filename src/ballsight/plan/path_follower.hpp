@@ -23,6 +23,8 @@ struct FollowerOptions {
   double max_turn_rate_rps = 1.5707963267948966;  // 90 deg/s
   double arrive_m = 0.05;           // the end of the path is reached within this
   double slow_down_m = 0.6;         // full speed until this close to the end
+  double overshoot_m = 0.25;        // the path goes on this far past its last waypoint: the
+                                    // mouth must cross the last ball, not stop at it
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -39,7 +41,7 @@ class PathFollower {
   explicit PathFollower(const FollowerOptions& options = {});
 
   /// A new path (the latest route's waypoints, starting near the robot): progress starts again
-  /// at its beginning.
+  /// at its beginning. `path()` is it with the overshoot added.
   void set_path(std::vector<Vec2> waypoints);
   const std::vector<Vec2>& path() const { return path_; }
 

@@ -112,13 +112,23 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
     move = r * Vec2(std::sin(h0 + dh) - std::sin(h0), std::cos(h0) - std::cos(h0 + dh));
   }
   next.pose = {motion.pose.position + move, wrap_rad_pi(h0 + dh)};
-  if (footprint_blocked(footprint, next.pose, court)) {
-    RobotMotion stopped = motion;
-    stopped.speed_mps = 0.0;
-    stopped.turn_rate_rps = 0.0;
-    return {stopped, true};
-  }
-  return {next, false};
+  if (!footprint_blocked(footprint, next.pose, court)) return {next, false};
+  // In contact: the part of the motion the obstacle allows (sliding straight on, or turning on
+  // the spot), else none.
+  RobotMotion slide = motion;
+  slide.turn_rate_rps = 0.0;
+  slide.speed_mps = next.speed_mps;
+  slide.pose.position += v * dt * Vec2(std::cos(h0), std::sin(h0));
+  if (std::abs(v) > 1e-9 && !footprint_blocked(footprint, slide.pose, court)) return {slide, true};
+  RobotMotion turn = motion;
+  turn.speed_mps = 0.0;
+  turn.turn_rate_rps = next.turn_rate_rps;
+  turn.pose.heading_rad = wrap_rad_pi(h0 + dh);
+  if (std::abs(dh) > 1e-12 && !footprint_blocked(footprint, turn.pose, court)) return {turn, true};
+  RobotMotion stopped = motion;
+  stopped.speed_mps = 0.0;
+  stopped.turn_rate_rps = 0.0;
+  return {stopped, true};
 }
 
 std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Pose2D& after,

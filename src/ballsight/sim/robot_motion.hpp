@@ -52,12 +52,13 @@ bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
 
 struct DriveStep {
   RobotMotion motion;
-  bool blocked = false;  // the step was refused: the robot stopped where it was
+  bool blocked = false;  // the net or the fence was in the way of the commanded motion
 };
 
 /// One step of `dt` seconds: speed and turn rate move towards the command within the limits, the
-/// pose follows the arc they describe. A step that would put the footprint into the net or the
-/// fence is not taken: the robot stays and stops.
+/// pose follows the arc they describe. Where that would put the footprint into the net or the
+/// fence, the robot only slides straight on, or only turns on the spot, whichever is clear, or
+/// stops: it never overlaps them.
 DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, double dt,
                      const DriveLimits& limits, const RobotFootprint& footprint,
                      const TennisCourtSpec& court);

@@ -1,0 +1,60 @@
+#pragma once
+// The simulated court in time: the scene, the collector driving in it (robot_motion.hpp), the
+// simulated clock and the record of what really happened, so that a run can be scored afterwards.
+
+#include <cstdint>
+#include <vector>
+
+#include "ballsight/sim/robot_motion.hpp"
+
+namespace ballsight::sim {
+
+/// One advance of the world: when it ended, where the robot really was, what it collected.
+struct WorldTick {
+  double time_s = 0.0;
+  Pose2D robot;
+  std::vector<int> collected;  // tennis ball ids collected during this advance
+  int balls_left = 0;
+  bool blocked = false;  // the net or the fence stopped the robot during it
+};
+
+class CourtWorld {
+ public:
+  CourtWorld(CourtScene scene, const TennisCourtSpec& court, const DriveLimits& limits,
+             const RobotFootprint& footprint);
+
+  const CourtScene& scene() const { return scene_; }
+  const RobotMotion& motion() const { return motion_; }
+  double time_s() const { return time_s_; }
+  int balls_left() const;
+  const std::vector<WorldTick>& history() const { return history_; }
+
+  /// Drives with `command` for `seconds` in steps of kStepS (the robot's box moves with it);
+  /// records and returns the tick.
+  const WorldTick& advance(const DriveCommand& command, double seconds);
+  /// Removes the tennis balls for which `taken` holds (a hand picking them up, as in the
+  /// report's own test); their ids.
+  template <class Pred>
+  std::vector<int> remove_balls_if(Pred taken) {
+    std::vector<int> ids;
+    std::erase_if(scene_.balls, [&](const SceneSphere& b) {
+      const bool t = b.kind == ObjectKind::tennis_ball && taken(b);
+      if (t) ids.push_back(b.id);
+      return t;
+    });
+    return ids;
+  }
+
+  static constexpr double kStepS = 0.01;
+
+ private:
+  CourtScene scene_;
+  TennisCourtSpec court_;
+  DriveLimits limits_;
+  RobotFootprint footprint_;
+  RobotMotion motion_;
+  double time_s_ = 0.0;
+  std::vector<WorldTick> history_;
+};
+
+}  // namespace ballsight::sim
