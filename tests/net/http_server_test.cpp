@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
+#include "sample_update.hpp"
 
 namespace ballsight {
 namespace {
@@ -80,6 +81,38 @@ TEST(HttpServer, RoutesTokenAndKeepAlive) {
   EXPECT_EQ(client.send(http::verb::get, "/api/v1/robot").result_int(), 200);
   EXPECT_EQ(client.send(http::verb::get, "/nothing").result_int(), 404);
   EXPECT_EQ(service.server.connections(), 1);
+}
+
+TEST(HttpServer, EveryDocumentedRouteAnswersAsDocumentedOverTheWire) {
+  Service service;
+  service.hub.publish(test::sample_update({Vec2(1, 1), 0.0}));
+  Client client(service.server.port());
+  const nlohmann::json doc =
+      nlohmann::json::parse(client.send(http::verb::get, "/api/v1/openapi.json").body());
+  const auto verb_of = [](const std::string& method) { return http::string_to_verb(method); };
+  int operations = 0;
+  for (const auto& [path, item] : doc["paths"].items()) {
+    for (const auto& [method, operation] : item.items()) {
+      std::string upper = method;
+      for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+      for (const bool token : {false, true}) {
+        const auto res = client.send(verb_of(upper), path, "{}", token);
+        EXPECT_TRUE(operation["responses"].contains(std::to_string(res.result_int())))
+            << upper << " " << path << " answered " << res.result_int() << " " << res.body();
+        if (res.result_int() >= 400) {
+          const auto body = nlohmann::json::parse(res.body(), nullptr, false);
+          EXPECT_TRUE(body.is_object() && body.contains("error") && body.contains("where"))
+              << upper << " " << path << ": " << res.body();
+        }
+      }
+      ++operations;
+    }
+  }
+  EXPECT_EQ(operations, 13);
+  // The errors' own headers.
+  const auto refused = client.send(http::verb::put, "/api/v1/robot", "{}");
+  EXPECT_EQ(refused[http::field::www_authenticate], "Bearer");
+  EXPECT_EQ(client.send(http::verb::get, "/api/v1/stream")[http::field::upgrade], "websocket");
 }
 
 TEST(HttpServer, LongPollWakesOnPublish) {
