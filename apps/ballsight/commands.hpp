@@ -43,6 +43,8 @@ void add_robot_command(CLI::App& app);
 void add_plan_command(CLI::App& app);
 /// `eval plan` (eval_plan_command.cpp), registered on the `eval` group.
 void add_eval_plan_command(CLI::App& eval);
+/// `eval loop` (eval_loop_command.cpp), registered on the `eval` group.
+void add_eval_loop_command(CLI::App& eval);
 /// `eval tsplib` (eval_tsplib_command.cpp), registered on the `eval` group.
 void add_eval_tsplib_command(CLI::App& eval);
 

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   ballsight::app::add_eval_commands(*eval);
   ballsight::app::add_eval_court_command(*eval);
   ballsight::app::add_eval_plan_command(*eval);
+  ballsight::app::add_eval_loop_command(*eval);
   ballsight::app::add_eval_tsplib_command(*eval);
   ballsight::app::add_demo_command(app);
 

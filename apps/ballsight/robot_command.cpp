@@ -1,22 +1,16 @@
-// `ballsight robot`: the simulated collector's controller, its own program. It knows only what
-// the navigation service sends (its pose as the cameras saw it, the route), over RobotLink: it
-// follows the route's waypoints with its collector's mouth (plan/path_follower.hpp), sends its
-// wheels' command for every update to the simulated court (PUT /api/v1/sim/drive), acknowledges
-// the update and reports the balls its collector took. It stops when the service has seen no
-// ball for a while (all collected), on SIGINT/SIGTERM, or after --max-time seconds.
+// `ballsight robot`: the simulated collector's controller as its own program
+// (net/collector_robot.hpp). It stops when the service has seen no ball for a while (all
+// collected), on SIGINT/SIGTERM, or after --max-time seconds.
 
 #include <atomic>
-#include <cmath>
 #include <csignal>
 #include <iostream>
 #include <memory>
 #include <string>
 
-#include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
-#include "ballsight/net/robot_link.hpp"
-#include "ballsight/plan/path_follower.hpp"
+#include "ballsight/net/collector_robot.hpp"
 #include "commands.hpp"
 
 namespace ballsight::app {
@@ -31,75 +25,30 @@ extern "C" void stop_robot(int) {
 struct RobotArgs {
   std::string server = "http://127.0.0.1:8080";
   std::string token_file = "ballsight-token";
-  double max_time_s = 0.0;  // 0: until done or a signal
   bool long_poll = false;
-  int done_after = 10;  // updates with no ball seen and no route: all collected
+  CollectorOptions collector;
 };
 
 void run_robot(const RobotArgs& args) {
-  require(args.max_time_s >= 0.0, "--max-time", "must not be negative");
-  require(args.done_after >= 1, "--done-after", "must be at least 1");
+  args.collector.validate();
   RobotLinkOptions options = RobotLinkOptions::from_url(args.server, "--server");
-  std::string token = read_file(args.token_file);  // throws naming the file when it is missing
+  const std::string token = read_file(args.token_file);  // names the file when it is missing
   options.token = token.substr(0, token.find_first_of("\r\n"));
   options.websocket = !args.long_poll;
   std::signal(SIGINT, stop_robot);
   std::signal(SIGTERM, stop_robot);
-  const FollowerOptions follow;  // the site's defaults: mouth 0.30 m ahead, 1 m/s, 90 deg/s
-  PathFollower follower(follow);
   RobotLink link(options);
-  const auto started = std::chrono::steady_clock::now();
-  int empty = 0, updates = 0, collected = 0;
-  std::vector<Vec2> planned;  // the route's waypoints being followed
-  while (!g_stop) {
-    if (args.max_time_s > 0.0 &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
-            args.max_time_s) {
-      std::cout << "ballsight robot: --max-time reached" << std::endl;
-      break;
-    }
-    const std::optional<LinkUpdate> u = link.next(std::chrono::milliseconds(500));
-    if (!u) continue;
-    ++updates;
-    FollowCommand command;
-    if (u->robot) {
-      if (u->waypoints_m != planned) {
-        planned = u->waypoints_m;
-        follower.set_path(planned);
-      }
-      command = follower.command(*u->robot);
-    }
-    const std::optional<nlohmann::json> drove =
-        link.call("PUT", "/api/v1/sim/drive",
-                  {{"seq", u->seq},
-                   {"speed_mps", command.speed_mps},
-                   {"turn_rate_dps", deg_from_rad(command.turn_rate_rps)}});
-    link.acknowledge(u->seq);
-    const int taken = drove ? drove->value("collected", 0) : 0;
-    if (taken > 0 && u->robot) {
-      // The collector's sensor counts balls; they were at its mouth.
-      const Pose2D& p = *u->robot;
-      const Vec2 mouth = p.position + follow.mouth_ahead_m *
-                                          Vec2(std::cos(p.heading_rad), std::sin(p.heading_rad));
-      link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken), mouth));
-      collected += taken;
-    }
-    if (updates % 100 == 0) {
-      std::cout << "ballsight robot: update " << u->seq << ", " << u->balls_m.size()
-                << " balls seen, " << collected << " collected"
-                << (drove ? ", simulated time " + std::to_string(drove->value("time_s", 0.0)) + " s"
-                          : "")
-                << std::endl;
-    }
-    empty = u->balls_m.empty() && u->visits_m.empty() ? empty + 1 : 0;
-    if (empty >= args.done_after) {
-      std::cout << "ballsight robot: no ball left after " << updates << " updates; " << collected
-                << " collected; " << link.status().gaps << " updates missed, "
-                << link.status().reconnects << " reconnects" << std::endl;
-      break;
-    }
-  }
+  const CollectorResult r = run_collector(
+      link, args.collector, g_stop,
+      [](const std::string& line) { std::cout << "ballsight robot: " << line << std::endl; });
   link.stop();
+  std::cout << "ballsight robot: "
+            << (r.done   ? "no ball left"
+                : g_stop ? "stopped"
+                         : "--max-time reached")
+            << " after " << r.updates << " updates; " << r.collected << " collected; " << r.gaps
+            << " updates missed, " << r.reconnects << " reconnects; simulated time " << r.sim_time_s
+            << " s" << std::endl;
 }
 
 }  // namespace
@@ -114,9 +63,10 @@ void add_robot_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--token-file", args->token_file, "The service's token (its --token-file)")
       ->capture_default_str();
-  cmd->add_option("--max-time", args->max_time_s, "Stop after this many seconds (0: when done)")
+  cmd->add_option("--max-time", args->collector.max_time_s,
+                  "Stop after this many seconds (0: when done)")
       ->capture_default_str();
-  cmd->add_option("--done-after", args->done_after,
+  cmd->add_option("--done-after", args->collector.done_after,
                   "Stop after this many updates with no ball and no route")
       ->capture_default_str();
   cmd->add_flag("--long-poll", args->long_poll, "Long-poll instead of the WebSocket stream");

@@ -153,6 +153,8 @@ void add_serve_command(CLI::App& app) {
   cmd->add_option("--balls", args->balls, "Simulated court: tennis balls on it (default 20-60)");
   cmd->add_flag("--realtime", args->service.realtime,
                 "Simulated court: simulated time at wall time (default: as fast as it goes)");
+  cmd->add_flag("--report-pipeline", args->service.report_pipeline,
+                "Simulated court: the report's court pipeline instead of ballsight's");
   cmd->add_option("--truth-out", args->service.truth_out,
                   "Simulated court: write every tick's truth here (JSON lines)");
   cmd->add_option("--duration", args->duration_s, "Stop after this many seconds (0: on a signal)")

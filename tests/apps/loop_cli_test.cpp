@@ -46,5 +46,20 @@ TEST(LoopCli, TheRobotCollectsEveryBallDrivenByTheService) {
   EXPECT_EQ(balls_left, 0);
 }
 
+TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {
+  const CliResult r = run_cli({"eval", "loop", "--scenes", "1", "--min-balls", "6", "--max-balls",
+                               "6", "--max-time", "60", "--systems", "ballsight", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const nlohmann::json j = nlohmann::json::parse(r.stdout_text);
+  const nlohmann::json& s = j["systems"]["ballsight"];
+  EXPECT_EQ(s["collected_fraction"], 1.0) << s;
+  EXPECT_EQ(s["runs"][0]["balls"], 6);
+  EXPECT_TRUE(s["runs"][0]["never_overlapped"].get<bool>());
+  EXPECT_GT(s["distance_m_mean"].get<double>(), 1.0);
+  EXPECT_LT(s["time_s_mean"].get<double>(), 60.0);
+  EXPECT_EQ(s["time_ratio_to_ballsight"], 1.0);
+  expect_one_line_error(run_cli({"eval", "loop", "--systems", "magic"}), "--systems");
+}
+
 }  // namespace
 }  // namespace ballsight::test

@@ -15,7 +15,6 @@
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
-#include "ballsight/sim/court_world.hpp"
 #include "ballsight/sim/seeding.hpp"
 
 namespace ballsight {
@@ -86,7 +85,10 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
     cameras.push_back({c.camera, c.camera_from_field});
   }
   s.publisher = std::make_unique<UpdatePublisher>(
-      s.site, make_ballsight_pipeline(cameras, ballsight_options_for_site(s.site)),
+      s.site,
+      options.report_pipeline
+          ? make_seed_pipeline(std::move(cameras), seed_options_for_site(s.site))
+          : make_ballsight_pipeline(std::move(cameras), ballsight_options_for_site(s.site)),
       options.planner);
 }
 
@@ -120,7 +122,6 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     truth.open(s.options.truth_out);
     require(truth.good(), s.options.truth_out.string(), "cannot open for writing");
   }
-  const auto wall_start = Clock::now();
   std::uint64_t tick = 0;
   while (!stop) {
     const auto started = Clock::now();
@@ -182,12 +183,16 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
             << std::flush;
     }
     ++tick;
-    if (s.options.realtime) {
-      std::this_thread::sleep_until(wall_start +
-                                    std::chrono::duration_cast<Clock::duration>(
-                                        std::chrono::duration<double>(s.world->time_s())));
+    // Racing ahead is for a robot that drives; a court nobody drives keeps to the wall clock.
+    if (s.options.realtime || !driving) {
+      std::this_thread::sleep_until(started + std::chrono::duration_cast<Clock::duration>(
+                                                  std::chrono::duration<double>(period_s)));
     }
   }
+}
+
+const std::vector<sim::WorldTick>& SimulatedCourtService::history() const {
+  return impl_->world->history();
 }
 
 void SimulatedCourtService::republish(NavigationHub& hub) {

@@ -6,10 +6,11 @@
 // the frames, not the truth, are what the service sees. Then the court advances one vision
 // period: the simulated robot (`ballsight robot`) drives with the command it sent for that update
 // (PUT /api/v1/sim/drive; the service waits for it, so simulated time runs as fast as the two
-// programs allow, or at wall time with `realtime`), its collector picks up the balls it passes
-// over, the net and the fence stop it. With no robot driving, a ball reported collected is taken
-// off the court by hand, as in the report's own test. The cameras' calibration is the
-// simulator's (calibrating from rendered chessboards is `eval court`'s business).
+// programs allow, or at wall time with `realtime` or while no robot drives), its collector picks
+// up the balls it passes over, the net and the fence stop it. With no robot driving, a ball
+// reported collected is taken off the court by hand, as in the report's own test. The cameras'
+// calibration is the simulator's (calibrating from rendered chessboards is `eval court`'s
+// business).
 
 #include <cstdint>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include <optional>
 
 #include "ballsight/net/court_service.hpp"
+#include "ballsight/sim/court_world.hpp"
 
 namespace ballsight {
 
@@ -27,6 +29,7 @@ struct SimulatedServiceOptions {
   bool realtime = false;            // simulated time at wall time (else as fast as possible)
   double robot_wait_s = 1.0;        // for a driving robot's command, at most (wall)
   std::filesystem::path truth_out;  // JSON lines, one per tick (empty: not written)
+  bool report_pipeline = false;     // the report's court pipeline instead of ballsight's
   PlannerOptions planner;
 
   /// Throws InputError naming the first invalid field.
@@ -50,6 +53,9 @@ class SimulatedCourtService : public CourtService {
   /// it drives the next vision period. Returns {"collected": balls its collector took since its
   /// previous command (the collector's sensor), "time_s": simulated time}. Any thread.
   nlohmann::json drive(std::uint64_t seq, double speed_mps, double turn_rate_rps);
+
+  /// What really happened, one tick per vision period; read it once run() has returned.
+  const std::vector<sim::WorldTick>& history() const;
 
  private:
   struct Impl;

@@ -1,0 +1,80 @@
+// `ballsight eval loop`: the closed loop per system on simulated scenes (eval/loop_eval.hpp).
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "ballsight/eval/loop_eval.hpp"
+#include "commands.hpp"
+#include "option_parsing.hpp"
+
+namespace ballsight::app {
+namespace {
+
+struct EvalLoopArgs {
+  eval::LoopEvalOptions options;
+  std::string systems;
+  bool json = false;
+};
+
+void run_eval_loop(const EvalLoopArgs& args) {
+  eval::LoopEvalOptions options = args.options;
+  std::size_t start = 0;
+  while (!args.systems.empty() && start <= args.systems.size()) {
+    const std::size_t comma = std::min(args.systems.find(',', start), args.systems.size());
+    options.systems.push_back(args.systems.substr(start, comma - start));
+    start = comma + 1;
+  }
+  const std::vector<eval::LoopRun> runs = eval::run_loop_eval(options, [](const eval::LoopRun& r) {
+    std::fprintf(stderr, "eval loop: %-18s seed %llu: %d of %d balls in %.1f s, %.1f m%s\n",
+                 r.system.c_str(), static_cast<unsigned long long>(r.seed), r.collected, r.balls,
+                 r.time_s, r.distance_m,
+                 r.never_overlapped ? "" : " (overlapped the net or fence!)");
+  });
+  const nlohmann::json j = eval::loop_eval_json(runs);
+  if (args.json) {
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("%-18s %10s %12s %12s %10s\n", "system", "collected", "time_s_mean", "distance_m",
+              "vs ballsight");
+  for (const auto& [name, s] : j["systems"].items()) {
+    std::printf(
+        "%-18s %9.1f%% %12.1f %12.1f %10s\n", name.c_str(),
+        100.0 * s["collected_fraction"].get<double>(), s["time_s_mean"].get<double>(),
+        s["distance_m_mean"].get<double>(),
+        s.contains("time_ratio_to_ballsight")
+            ? (std::to_string(s["time_ratio_to_ballsight"].get<double>()).substr(0, 5) + "x")
+                  .c_str()
+            : "-");
+  }
+}
+
+}  // namespace
+
+void add_eval_loop_command(CLI::App& eval) {
+  auto args = std::make_shared<EvalLoopArgs>();
+  CLI::App* cmd = eval.add_subcommand(
+      "loop",
+      "The closed loop on simulated scenes, per system (report: the report's pipeline and "
+      "priority planner; ballsight-priority; ballsight): balls collected, simulated time to "
+      "collect them all, distance driven");
+  add_seed_option(*cmd, args->options.seed, "Seed of the first scene (scene k: seed + k)");
+  cmd->add_option("--scenes", args->options.scenes, "Scenes (ball counts spread over the range)")
+      ->capture_default_str();
+  cmd->add_option("--min-balls", args->options.min_balls, "Balls in the first scene")
+      ->capture_default_str();
+  cmd->add_option("--max-balls", args->options.max_balls, "Balls in the last scene")
+      ->capture_default_str();
+  cmd->add_option("--max-time", args->options.max_time_s, "Simulated seconds per run at most")
+      ->capture_default_str();
+  cmd->add_option("--systems", args->systems,
+                  "Comma-separated subset of report,ballsight-priority,ballsight");
+  cmd->add_flag("--json", args->json,
+                "JSON: {\"systems\": {\"<name>\": {\"collected_fraction\", \"time_s_mean\", "
+                "\"distance_m_mean\", \"time_ratio_to_ballsight\", \"runs\"}}}");
+  cmd->callback([args] { run_eval_loop(*args); });
+}
+
+}  // namespace ballsight::app

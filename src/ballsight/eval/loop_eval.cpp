@@ -1,0 +1,158 @@
+#include "ballsight/eval/loop_eval.hpp"
+
+#include <cmath>
+#include <map>
+#include <thread>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/net/collector_robot.hpp"
+#include "ballsight/net/http_server.hpp"
+
+namespace ballsight::eval {
+
+const std::vector<LoopSystem>& loop_systems() {
+  static const std::vector<LoopSystem> kSystems{
+      {"report", true, PlannerKind::priority},
+      {"ballsight-priority", false, PlannerKind::priority},
+      {"ballsight", false, PlannerKind::ballsight},
+  };
+  return kSystems;
+}
+
+LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double max_time_s) {
+  SimulatedServiceOptions options;
+  options.seed = seed;
+  options.balls = balls;
+  options.report_pipeline = system.report_pipeline;
+  options.planner.kind = system.planner;
+  SimulatedCourtService service(options);
+  NavigationHub hub;
+  ApiContext context{hub, service.camera_names(), service.site().court,
+                     service.site().ball_radius_m};
+  context.on_collected = [&] { service.republish(hub); };
+  context.drive = [&](std::uint64_t seq, double speed_mps, double turn_rate_rps) {
+    return service.drive(seq, speed_mps, turn_rate_rps);
+  };
+  HttpServerOptions server_options;
+  server_options.port = 0;
+  server_options.token = random_hex(32);
+  HttpServer server(server_options, context);
+  RobotLinkOptions link_options;
+  link_options.port = server.port();
+  link_options.token = server_options.token;
+  RobotLink link(link_options);
+  std::atomic<bool> stop{false};
+  std::thread court([&] { service.run(hub, stop); });
+  std::thread robot([&] { run_collector(link, {}, stop); });
+  // Until the court is empty or out of time (simulated).
+  while (true) {
+    const nlohmann::json sim = service.health()["sim"];
+    if (sim["balls_left"] == 0 || sim["time_s"].get<double>() >= max_time_s) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  stop = true;
+  robot.join();
+  court.join();
+  link.stop();
+  server.stop();
+
+  LoopRun run;
+  run.system = system.name;
+  run.seed = seed;
+  const std::vector<sim::WorldTick>& history = service.history();
+  run.balls = history.empty()
+                  ? 0
+                  : history.front().balls_left + static_cast<int>(history.front().collected.size());
+  const sim::RobotFootprint footprint = sim::RobotFootprint::of(
+      sim::RobotBox{}, service.site().robot.collector_x_m, service.site().robot.collector_width_m);
+  const sim::TennisCourtSpec court_spec;
+  Pose2D last = history.empty() ? Pose2D{} : history.front().robot;
+  for (const sim::WorldTick& t : history) {
+    run.distance_m += (t.robot.position - last.position).norm();
+    last = t.robot;
+    run.collected += static_cast<int>(t.collected.size());
+    run.never_overlapped =
+        run.never_overlapped && !sim::footprint_blocked(footprint, t.robot, court_spec);
+    run.time_s = t.time_s;
+    if (t.balls_left == 0) {
+      run.all = true;
+      break;
+    }
+  }
+  return run;
+}
+
+void LoopEvalOptions::validate() const {
+  require(scenes >= 1 && scenes <= 100, "--scenes", "must be in [1, 100]");
+  require(min_balls >= 1 && min_balls <= max_balls && max_balls <= 200, "balls",
+          "need 1 <= min <= max <= 200");
+  require(std::isfinite(max_time_s) && max_time_s > 0.0, "--max-time", "must be positive");
+  for (const std::string& name : systems) {
+    require(std::any_of(loop_systems().begin(), loop_systems().end(),
+                        [&](const LoopSystem& s) { return s.name == name; }),
+            "--systems", "unknown system '" + name + "' (report, ballsight-priority, ballsight)");
+  }
+}
+
+std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options,
+                                   const std::function<void(const LoopRun&)>& progress) {
+  options.validate();
+  std::vector<LoopRun> runs;
+  for (int k = 0; k < options.scenes; ++k) {
+    const int balls = options.scenes == 1
+                          ? options.min_balls
+                          : options.min_balls +
+                                (options.max_balls - options.min_balls) * k / (options.scenes - 1);
+    for (const LoopSystem& system : loop_systems()) {
+      if (!options.systems.empty() && std::find(options.systems.begin(), options.systems.end(),
+                                                system.name) == options.systems.end()) {
+        continue;
+      }
+      runs.push_back(run_loop(system, options.seed + static_cast<std::uint64_t>(k), balls,
+                              options.max_time_s));
+      if (progress) progress(runs.back());
+    }
+  }
+  return runs;
+}
+
+nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
+  std::map<std::string, std::vector<const LoopRun*>> by_system;
+  for (const LoopRun& r : runs) by_system[r.system].push_back(&r);
+  const auto mean_time = [&](const std::string& name) {
+    double sum = 0.0;
+    for (const LoopRun* r : by_system[name]) sum += r->time_s;
+    return by_system[name].empty() ? 0.0 : sum / static_cast<double>(by_system[name].size());
+  };
+  nlohmann::json systems = nlohmann::json::object();
+  for (const auto& [name, list] : by_system) {
+    int balls = 0, collected = 0;
+    double distance = 0.0;
+    nlohmann::json rows = nlohmann::json::array();
+    for (const LoopRun* r : list) {
+      balls += r->balls;
+      collected += r->collected;
+      distance += r->distance_m;
+      rows.push_back({{"seed", r->seed},
+                      {"balls", r->balls},
+                      {"collected", r->collected},
+                      {"all", r->all},
+                      {"time_s", r->time_s},
+                      {"distance_m", r->distance_m},
+                      {"never_overlapped", r->never_overlapped}});
+    }
+    const double n = static_cast<double>(list.size());
+    nlohmann::json s{
+        {"collected_fraction", balls > 0 ? static_cast<double>(collected) / balls : 0.0},
+        {"time_s_mean", mean_time(name)},
+        {"distance_m_mean", distance / n},
+        {"runs", rows}};
+    if (by_system.count("ballsight") && mean_time("ballsight") > 0.0) {
+      s["time_ratio_to_ballsight"] = mean_time(name) / mean_time("ballsight");
+    }
+    systems[name] = s;
+  }
+  return {{"systems", systems}};
+}
+
+}  // namespace ballsight::eval

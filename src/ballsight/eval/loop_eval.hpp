@@ -1,0 +1,60 @@
+#pragma once
+// `ballsight eval loop`: the closed loop on simulated scenes, per system: the report's pipeline
+// with its priority planner ("report"), ballsight's pipeline with the priority planner
+// ("ballsight-priority"), and ballsight's pipeline and planner ("ballsight"). Each run is the real
+// loop in one process: the simulated court service, the HTTP server on a free loopback port and
+// the collector driving over RobotLink, scored on the court's recorded truth.
+
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ballsight/eval/simulated_service.hpp"
+
+namespace ballsight::eval {
+
+struct LoopSystem {
+  std::string name;
+  bool report_pipeline = false;
+  PlannerKind planner = PlannerKind::ballsight;
+};
+
+/// report, ballsight-priority, ballsight.
+const std::vector<LoopSystem>& loop_systems();
+
+struct LoopRun {
+  std::string system;
+  std::uint64_t seed = 0;
+  int balls = 0;
+  int collected = 0;
+  double time_s = 0.0;      // simulated: when the last ball was collected, or the limit
+  double distance_m = 0.0;  // driven until then
+  bool all = false;
+  bool never_overlapped = true;  // the net and the fence (checked on every tick's true pose)
+};
+
+/// One scene, one system, until every ball is collected or `max_time_s` of simulated time.
+LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double max_time_s);
+
+struct LoopEvalOptions {
+  std::uint64_t seed = 1;
+  int scenes = 3;  // ball counts spread over [min_balls, max_balls]
+  int min_balls = 10, max_balls = 30;
+  double max_time_s = 150.0;         // simulated, per run
+  std::vector<std::string> systems;  // empty: all three
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+/// Every system on every scene; `progress` hears each run as it ends.
+std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options,
+                                   const std::function<void(const LoopRun&)>& progress = {});
+
+/// {"systems": {"<name>": {"collected_fraction", "time_s_mean", "distance_m_mean",
+///  "time_ratio_to_ballsight", "runs": [...]}}}
+nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs);
+
+}  // namespace ballsight::eval

@@ -1,0 +1,75 @@
+#include "ballsight/net/collector_robot.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "ballsight/core/angle.hpp"
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+void CollectorOptions::validate() const {
+  follow.validate();
+  require(done_after >= 1, "done_after", "must be at least 1");
+  require(std::isfinite(max_time_s) && max_time_s >= 0.0, "max_time_s", "must not be negative");
+}
+
+CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
+                              const std::atomic<bool>& stop,
+                              const std::function<void(const std::string&)>& progress) {
+  options.validate();
+  PathFollower follower(options.follow);
+  std::vector<Vec2> planned;  // the route's waypoints being followed
+  CollectorResult result;
+  int empty = 0;
+  const auto started = std::chrono::steady_clock::now();
+  while (!stop) {
+    if (options.max_time_s > 0.0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+            options.max_time_s) {
+      break;
+    }
+    const std::optional<LinkUpdate> u = link.next(std::chrono::milliseconds(500));
+    if (!u) continue;
+    ++result.updates;
+    FollowCommand command;
+    if (u->robot) {
+      if (u->waypoints_m != planned) {
+        planned = u->waypoints_m;
+        follower.set_path(planned);
+      }
+      command = follower.command(*u->robot);
+    }
+    const std::optional<nlohmann::json> drove =
+        link.call("PUT", "/api/v1/sim/drive",
+                  {{"seq", u->seq},
+                   {"speed_mps", command.speed_mps},
+                   {"turn_rate_dps", deg_from_rad(command.turn_rate_rps)}});
+    link.acknowledge(u->seq);
+    if (drove) result.sim_time_s = drove->value("time_s", result.sim_time_s);
+    const int taken = drove ? drove->value("collected", 0) : 0;
+    if (taken > 0 && u->robot) {
+      const Pose2D& p = *u->robot;
+      const Vec2 mouth = p.position + options.follow.mouth_ahead_m *
+                                          Vec2(std::cos(p.heading_rad), std::sin(p.heading_rad));
+      link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken), mouth));
+      result.collected += taken;
+    }
+    if (progress && result.updates % 100 == 0) {
+      progress("update " + std::to_string(u->seq) + ", " + std::to_string(u->balls_m.size()) +
+               " balls seen, " + std::to_string(result.collected) + " collected, simulated time " +
+               std::to_string(static_cast<int>(result.sim_time_s)) + " s");
+    }
+    empty = u->balls_m.empty() && u->visits_m.empty() ? empty + 1 : 0;
+    if (empty >= options.done_after) {
+      result.done = true;
+      break;
+    }
+  }
+  const LinkStatus status = link.status();
+  result.gaps = status.gaps;
+  result.reconnects = status.reconnects;
+  return result;
+}
+
+}  // namespace ballsight
