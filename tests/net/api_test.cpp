@@ -57,6 +57,13 @@ TEST(Api, TheReportsFourMethodsAndItsFlag) {
   EXPECT_EQ(f.call("POST", "/api/v1/collected", R"({"balls": [{"x_m": 3, "y_m": 4}]})").status,
             200);
   EXPECT_EQ(f.hub.collected(), std::vector<Vec2>{Vec2(3, 4)});
+  // Or by the ball's index in an update's world model.
+  EXPECT_EQ(f.call("POST", "/api/v1/collected", R"({"seq": 1, "ids": [0]})").status, 200);
+  EXPECT_EQ(f.hub.collected().size(), 2u);
+  expect_error(f.call("POST", "/api/v1/collected", R"({"seq": 1, "ids": [5]})"), 422,
+               "body.ids[0]");
+  expect_error(f.call("POST", "/api/v1/collected", R"({"seq": 9, "ids": [0]})"), 409, "body.seq");
+  expect_error(f.call("POST", "/api/v1/collected", R"({"ids": [0]})"), 400, "body.seq");
 }
 
 TEST(Api, LongPollAnswersTheFirstNewerUpdateOrAsksTheTransportToWait) {

@@ -226,9 +226,39 @@ ApiResponse ack_route(const ApiRequest& request, const std::string&, const ApiCo
   return ok({{"acknowledged_seq", c.hub.acknowledged()}});
 }
 
+/// The body {"seq": N, "ids": [i, ...]}: balls by their index in update N's world model.
+std::vector<Vec2> balls_by_id(const json& body, const NavigationHub& hub) {
+  const auto seq = body.find("seq");
+  if (seq == body.end() || !seq->is_number_unsigned()) {
+    fail(400, "expected the update's seq the ids belong to", "body.seq");
+  }
+  const std::uint64_t n = seq->get<std::uint64_t>();
+  const std::optional<NavigationUpdate> u = n > 0 ? hub.first_after(n - 1) : std::nullopt;
+  if (!u || u->seq != n) fail(409, "update " + std::to_string(n) + " is not kept", "body.seq");
+  const auto ids = body.find("ids");
+  if (ids == body.end() || !ids->is_array()) fail(400, "expected a list", "body.ids");
+  std::vector<Vec2> positions;
+  for (std::size_t i = 0; i < ids->size(); ++i) {
+    const json& id = (*ids)[i];
+    if (!id.is_number_unsigned() || id.get<std::uint64_t>() >= u->world.balls.size()) {
+      fail(422, "no such ball in update " + std::to_string(n),
+           "body.ids[" + std::to_string(i) + "]");
+    }
+    positions.push_back(u->world.balls[id.get<std::size_t>()].position_m);
+  }
+  return positions;
+}
+
 ApiResponse collected_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
   require_write(request);
-  const std::vector<Vec2> positions = ball_list(request, c.area);
+  const json body = parse_body(request.body);
+  std::vector<Vec2> positions;
+  if (body.contains("ids")) {
+    only_keys(body, {"seq", "ids"}, "body");
+    positions = balls_by_id(body, c.hub);
+  } else {
+    positions = ball_list(request, c.area);
+  }
   c.hub.add_collected(positions);
   if (c.on_collected) c.on_collected();
   return ok({{"accepted", positions.size()}});
