@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "ballsight/core/csv_fields.hpp"
 #include "ballsight/eval/loop_eval.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
@@ -20,11 +21,10 @@ struct EvalLoopArgs {
 
 void run_eval_loop(const EvalLoopArgs& args) {
   eval::LoopEvalOptions options = args.options;
-  std::size_t start = 0;
-  while (!args.systems.empty() && start <= args.systems.size()) {
-    const std::size_t comma = std::min(args.systems.find(',', start), args.systems.size());
-    options.systems.push_back(args.systems.substr(start, comma - start));
-    start = comma + 1;
+  if (!args.systems.empty()) {
+    for (const CsvField& item : split_csv_fields(args.systems)) {
+      options.systems.emplace_back(item.text);
+    }
   }
   const std::vector<eval::LoopRun> runs = eval::run_loop_eval(options, [](const eval::LoopRun& r) {
     std::fprintf(stderr, "eval loop: %-18s seed %llu: %d of %d balls in %.1f s, %.1f m%s\n",

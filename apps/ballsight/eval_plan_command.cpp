@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "ballsight/core/csv_fields.hpp"
 #include "ballsight/eval/plan_eval.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
@@ -23,12 +24,9 @@ void run_eval_plan(const EvalPlanArgs& args) {
   eval::PlanEvalOptions options = args.options;
   if (!args.sizes.empty()) {
     options.sizes.clear();
-    std::size_t start = 0;
-    while (start <= args.sizes.size()) {
-      const std::size_t comma = std::min(args.sizes.find(',', start), args.sizes.size());
-      const std::string item = args.sizes.substr(start, comma - start);
-      options.sizes.push_back(static_cast<int>(parse_numbers(item, 1, "--sizes", "N,N,...")[0]));
-      start = comma + 1;
+    for (const CsvField& item : split_csv_fields(args.sizes)) {
+      options.sizes.push_back(
+          static_cast<int>(parse_numbers(std::string(item.text), 1, "--sizes", "N,N,...")[0]));
     }
   }
   if (!args.plot_dir.empty()) options.plot_dir = args.plot_dir;

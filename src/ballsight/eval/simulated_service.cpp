@@ -25,11 +25,11 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 void SimulatedServiceOptions::validate() const {
-  require(std::isfinite(vision_hz) && vision_hz > 0.0 && vision_hz <= 100.0, "rate",
+  require(std::isfinite(vision_hz) && vision_hz > 0.0 && vision_hz <= 100.0, "--rate",
           "must be in (0, 100] Hz");
   require(std::isfinite(robot_wait_s) && robot_wait_s > 0.0, "robot_wait_s", "must be positive");
   if (balls) {
-    require(*balls >= 0 && *balls <= sim::CourtScenarioOptions::kMaxBalls, "balls",
+    require(*balls >= 0 && *balls <= sim::CourtScenarioOptions::kMaxBalls, "--balls",
             "must be in [0, " + std::to_string(sim::CourtScenarioOptions::kMaxBalls) + "]");
   }
   planner.validate();

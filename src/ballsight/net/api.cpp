@@ -6,6 +6,7 @@
 #include <set>
 
 #include "ballsight/core/angle.hpp"
+#include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 #include "ballsight/pipeline/world_model_json.hpp"
@@ -333,10 +334,8 @@ std::variant<StreamSubscription, ApiResponse> stream_subscription(const ApiReque
     s.after = resume_after(query, c);
     if (const std::optional<std::string> topics = query_text(query, "topics")) {
       s.navigation = false;
-      std::size_t start = 0;
-      while (start <= topics->size()) {
-        const std::size_t end = std::min(topics->find(',', start), topics->size());
-        const std::string topic = topics->substr(start, end - start);
+      for (const CsvField& field : split_csv_fields(*topics)) {
+        const std::string topic(field.text);
         if (topic == "navigation") {
           s.navigation = true;
         } else if (topic == "world") {
@@ -346,7 +345,6 @@ std::variant<StreamSubscription, ApiResponse> stream_subscription(const ApiReque
         } else {
           fail(400, "unknown topic '" + topic + "' (navigation, world or health)", "query topics");
         }
-        start = end + 1;
       }
     }
     return s;

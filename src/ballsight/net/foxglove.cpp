@@ -1,7 +1,9 @@
 #include "ballsight/net/foxglove.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "ballsight/core/csv_fields.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 
 namespace ballsight {
@@ -181,21 +183,12 @@ json route_poses(const NavigationUpdate& u) {
 }  // namespace
 
 std::string foxglove_subprotocol(std::string_view offered) {
-  // A comma-separated list of tokens.
-  const auto has = [&](std::string_view name) {
-    std::size_t start = 0;
-    while (start <= offered.size()) {
-      const std::size_t end = std::min(offered.find(',', start), offered.size());
-      std::string_view token = offered.substr(start, end - start);
-      while (!token.empty() && token.front() == ' ') token.remove_prefix(1);
-      while (!token.empty() && token.back() == ' ') token.remove_suffix(1);
-      if (token == name) return true;
-      start = end + 1;
-    }
-    return false;
-  };
+  const std::vector<CsvField> tokens = split_csv_fields(offered);  // a comma-separated list
   for (const char* name : {"foxglove.sdk.v1", "foxglove.websocket.v1"}) {
-    if (has(name)) return name;
+    if (std::any_of(tokens.begin(), tokens.end(),
+                    [&](const CsvField& t) { return t.text == name; })) {
+      return name;
+    }
   }
   return "";
 }
