@@ -45,7 +45,8 @@ TEST(PathFollower, TheMouthPassesOverEveryWaypointAndStopsAtTheEnd) {
   const std::vector<double> closest = drive(follower, {Vec2(0, 0), 0.0}, 60.0, arrived);
   EXPECT_TRUE(arrived);
   for (std::size_t i = 0; i < closest.size(); ++i) EXPECT_LT(closest[i], 0.12) << "waypoint " << i;
-  EXPECT_NEAR(follower.progress_m(), 2.7 + 2.0 + std::sqrt(5.0) + 4.0 + 0.25, 0.06);  // and past the end
+  EXPECT_NEAR(follower.progress_m(), 2.7 + 2.0 + std::sqrt(5.0) + 4.0 + 0.25,
+              0.06);  // and past the end
 }
 
 TEST(PathFollower, BallsInALineAreDrivenOverAtFullSpeed) {

@@ -21,10 +21,10 @@ struct FollowerOptions {
   double lookahead_m = 0.40;    // carrot distance along the path
   double max_speed_mps = 1.0;
   double max_turn_rate_rps = 1.5707963267948966;  // 90 deg/s
-  double arrive_m = 0.05;           // the end of the path is reached within this
-  double slow_down_m = 0.6;         // full speed until this close to the end
-  double overshoot_m = 0.25;        // the path goes on this far past its last waypoint: the
-                                    // mouth must cross the last ball, not stop at it
+  double arrive_m = 0.05;                         // the end of the path is reached within this
+  double slow_down_m = 0.6;                       // full speed until this close to the end
+  double overshoot_m = 0.25;  // the path goes on this far past its last waypoint: the
+                              // mouth must cross the last ball, not stop at it
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
