@@ -185,8 +185,7 @@ void BM_WholeChain(benchmark::State& state) {
   SimulatedServiceOptions options;
   SimulatedCourtService simulated(options);
   NavigationHub hub;
-  ApiContext context{hub, simulated.camera_names(), simulated.site().court,
-                     simulated.site().ball_radius_m};
+  ApiContext context = simulated.api_context(hub);
   HttpServerOptions o;
   o.port = 0;
   o.token = kToken;

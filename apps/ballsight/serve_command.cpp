@@ -48,14 +48,11 @@ void run_serve(const ServeArgs& args) {
   require(kind && *kind != PlannerKind::exact, "--planner",
           "expected priority, nearest or ballsight, got '" + args.planner + "'");
   std::unique_ptr<CourtService> court;
-  SimulatedCourtService* simulated = nullptr;
   if (args.sim) {
     SimulatedServiceOptions options = args.service;
     options.planner.kind = *kind;
     if (args.balls >= 0) options.balls = args.balls;
-    auto service = std::make_unique<SimulatedCourtService>(options);
-    simulated = service.get();
-    court = std::move(service);
+    court = std::make_unique<SimulatedCourtService>(options);
   } else {
     SiteServiceOptions options;
     options.planner.kind = *kind;
@@ -78,8 +75,7 @@ void run_serve(const ServeArgs& args) {
   NavigationHub hub;
   const auto started = std::chrono::steady_clock::now();
   std::atomic<HttpServer*> server{nullptr};  // health is asked on the server's thread
-  ApiContext context{hub, service.camera_names(), service.site().court,
-                     service.site().ball_radius_m};
+  ApiContext context = service.api_context(hub);
   context.health = [&] {
     nlohmann::json h = service.health();
     h["uptime_s"] =
@@ -91,12 +87,6 @@ void run_serve(const ServeArgs& args) {
     h["service_id"] = hub.service_id();
     return h;
   };
-  context.on_collected = [&] { service.republish(hub); };
-  if (simulated) {
-    context.drive = [simulated](std::uint64_t seq, double speed_mps, double turn_rate_rps) {
-      return simulated->drive(seq, speed_mps, turn_rate_rps);
-    };
-  }
   HttpServer http(server_options, context);
   server = &http;
   std::cout << "ballsight serve: http://" << server_options.address << ":" << http.port()

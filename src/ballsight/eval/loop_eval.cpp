@@ -27,12 +27,7 @@ LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double
   options.planner.kind = system.planner;
   SimulatedCourtService service(options);
   NavigationHub hub;
-  ApiContext context{hub, service.camera_names(), service.site().court,
-                     service.site().ball_radius_m};
-  context.on_collected = [&] { service.republish(hub); };
-  context.drive = [&](std::uint64_t seq, double speed_mps, double turn_rate_rps) {
-    return service.drive(seq, speed_mps, turn_rate_rps);
-  };
+  ApiContext context = service.api_context(hub);
   HttpServerOptions server_options;
   server_options.port = 0;
   server_options.token = random_hex(32);

@@ -143,8 +143,7 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     }
     const std::int64_t capture_ns = utc_now_ns();  // the frames exist from now: "captured"
     s.render_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
-    s.publisher->publish(frames, capture_ns, hub);
-    const std::uint64_t seq = hub.latest() ? hub.latest()->seq : 0;
+    const std::uint64_t seq = s.publisher->publish(frames, capture_ns, hub);
     // A driving robot answers this update with its command; the court waits for it.
     sim::DriveCommand command;
     {
@@ -193,6 +192,14 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
 
 const std::vector<sim::WorldTick>& SimulatedCourtService::history() const {
   return impl_->world->history();
+}
+
+ApiContext SimulatedCourtService::api_context(NavigationHub& hub) {
+  ApiContext context = CourtService::api_context(hub);
+  context.drive = [this](std::uint64_t seq, double speed_mps, double turn_rate_rps) {
+    return drive(seq, speed_mps, turn_rate_rps);
+  };
+  return context;
 }
 
 void SimulatedCourtService::republish(NavigationHub& hub) {

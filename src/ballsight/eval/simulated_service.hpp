@@ -44,6 +44,8 @@ class SimulatedCourtService : public CourtService {
   const Site& site() const override;
   void run(NavigationHub& hub, const std::atomic<bool>& stop) override;
   void republish(NavigationHub& hub) override;
+  /// With the simulated robot's drive (PUT /api/v1/sim/drive -> drive()).
+  ApiContext api_context(NavigationHub& hub) override;
   /// {"cameras": [{"name", "state": "simulated", "frames"}], "render_ms", "sim": {"time_s",
   /// "balls_left", "collected", "robot", "driving", "blocked_ticks"}, and the figures of
   /// UpdatePublisher::health()}.

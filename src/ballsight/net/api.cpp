@@ -186,18 +186,17 @@ ApiResponse balls_route(const ApiRequest& request, const std::string&, const Api
 std::uint64_t resume_after(const std::string& query, const ApiContext& c) {
   const std::uint64_t after = query_number(query, "after", 0);
   const std::optional<std::string> service = query_text(query, "service");
-  const std::optional<NavigationUpdate> latest = c.hub.latest();
+  const std::uint64_t latest = c.hub.latest_seq();
   // Beyond the latest: a seq of an earlier run, though the client did not say so.
   const bool restarted =
-      (service && *service != c.hub.service_id()) || (latest && after > latest->seq);
+      (service && *service != c.hub.service_id()) || (latest > 0 && after > latest);
   if (after != 0 && !restarted) return after;
-  return latest ? latest->seq - 1 : 0;
+  return latest > 0 ? latest - 1 : 0;
 }
 
 ApiResponse navigation_route(const ApiRequest&, const std::string& query, const ApiContext& c) {
   if (!query_text(query, "after")) {
-    const std::optional<NavigationUpdate> u = c.hub.latest();
-    return ok({{"latest_seq", u ? u->seq : 0},
+    return ok({{"latest_seq", c.hub.latest_seq()},
                {"acknowledged_seq", c.hub.acknowledged()},
                {"service_id", c.hub.service_id()}});
   }

@@ -24,14 +24,20 @@ std::vector<std::string> CourtService::camera_names() const {
   return names;
 }
 
+ApiContext CourtService::api_context(NavigationHub& hub) {
+  ApiContext context{hub, camera_names(), site().court, site().ball_radius_m};
+  context.on_collected = [this, &hub] { republish(hub); };
+  return context;
+}
+
 UpdatePublisher::UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
                                  const PlannerOptions& planner)
     : site_(site), pipeline_(std::move(pipeline)), planner_(planner) {
   planner_.validate();
 }
 
-FrameSetResult UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
-                                        NavigationHub& hub) {
+std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
+                                       NavigationHub& hub) {
   const auto started = Clock::now();
   FrameSetResult result;
   try {
@@ -40,7 +46,7 @@ FrameSetResult UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std:
     const std::lock_guard lock(mutex_);
     ++failed_;
     last_error_ = std::string("pipeline: ") + e.what();
-    return result;
+    return 0;
   }
   const double pipeline_ms = ms_since(started);
   std::vector<Vec2> seen;
@@ -49,7 +55,9 @@ FrameSetResult UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std:
   const std::lock_guard plan_lock(plan_mutex_);
   last_world_ = result.world;
   last_capture_ns_ = capture_ns;
-  const double plan_ms = plan_and_publish(hub);
+  const auto plan_started = Clock::now();
+  const std::uint64_t seq = plan_and_publish(hub);
+  const double plan_ms = ms_since(plan_started);
   const std::lock_guard lock(mutex_);
   ++frame_sets_;
   pipeline_ms_ = pipeline_ms;
@@ -60,7 +68,7 @@ FrameSetResult UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std:
     rate_hz_ = smoothed_rate(rate_hz_, hz);
   }
   last_ = now;
-  return result;
+  return seq;
 }
 
 void UpdatePublisher::republish(NavigationHub& hub) {
@@ -69,8 +77,7 @@ void UpdatePublisher::republish(NavigationHub& hub) {
   plan_and_publish(hub);
 }
 
-double UpdatePublisher::plan_and_publish(NavigationHub& hub) {
-  const auto started = Clock::now();
+std::uint64_t UpdatePublisher::plan_and_publish(NavigationHub& hub) {
   std::string error;
   NavigationUpdate update;
   try {
@@ -82,10 +89,10 @@ double UpdatePublisher::plan_and_publish(NavigationHub& hub) {
     update.world = last_world_;
   }
   previous_ = update.route;
-  hub.publish(std::move(update));
+  const std::uint64_t seq = hub.publish(std::move(update));
   const std::lock_guard lock(mutex_);
   last_error_ = error;
-  return ms_since(started);
+  return seq;
 }
 
 nlohmann::json UpdatePublisher::health() const {

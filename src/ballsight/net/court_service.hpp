@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "ballsight/net/api.hpp"
 #include "ballsight/net/navigation_hub.hpp"
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/plan/planning_problem.hpp"
@@ -34,6 +35,9 @@ class CourtService {
   virtual nlohmann::json health() const = 0;
 
   std::vector<std::string> camera_names() const;
+  /// API v1's view of this service over `hub` (which must outlive it): its cameras and court,
+  /// and balls reported collected re-planned at once. The simulated court adds its robot's drive.
+  virtual ApiContext api_context(NavigationHub& hub);
 };
 
 /// A rate (frames or frame sets per second) smoothed over the last few samples; 0: none yet.
@@ -46,11 +50,11 @@ class UpdatePublisher {
   UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
                   const PlannerOptions& planner);
 
-  /// Frames captured at `capture_ns` (UTC; empty images for missing cameras) -> one update.
-  /// Reports of collected balls the frames confirm are forgotten. A pipeline failure publishes
-  /// nothing and is counted (health).
-  FrameSetResult publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
-                         NavigationHub& hub);
+  /// Frames captured at `capture_ns` (UTC; empty images for missing cameras) -> one update; its
+  /// seq. Reports of collected balls the frames confirm are forgotten. A pipeline failure
+  /// publishes nothing (0) and is counted (health).
+  std::uint64_t publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
+                        NavigationHub& hub);
   /// The last world model planned again and published; nothing before the first frame set.
   void republish(NavigationHub& hub);
 
@@ -59,7 +63,7 @@ class UpdatePublisher {
   nlohmann::json health() const;
 
  private:
-  double plan_and_publish(NavigationHub& hub);  // plan_mutex_ held; its time in ms
+  std::uint64_t plan_and_publish(NavigationHub& hub);  // plan_mutex_ held; the update's seq
 
   const Site& site_;
   std::unique_ptr<CourtPipeline> pipeline_;

@@ -352,7 +352,7 @@ awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Requ
   } else {
     peer->foxglove = std::make_unique<FoxgloveSession>(context);
     for (std::string& m : peer->foxglove->greeting()) peer->push(text(std::move(m)));
-    peer->last_seq = context.hub.latest() ? context.hub.latest()->seq : 0;
+    peer->last_seq = context.hub.latest_seq();
   }
   {
     const std::lock_guard lock(peers_mutex);
@@ -486,7 +486,7 @@ HttpServer::HttpServer(const HttpServerOptions& options, ApiContext& context)
           "cannot listen on " + options.address + ":" + std::to_string(options.port) + ": " +
               ec.message());
   Impl& s = *impl_;
-  s.broadcast_seq = context.hub.latest() ? context.hub.latest()->seq : 0;
+  s.broadcast_seq = context.hub.latest_seq();
   s.listener =
       context.hub.add_listener([&s](std::uint64_t) { asio::post(s.io, [&s] { s.broadcast(); }); });
   asio::co_spawn(s.io, s.accept_loop(), asio::detached);

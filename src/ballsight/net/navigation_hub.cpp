@@ -81,9 +81,14 @@ std::vector<NavigationUpdate> NavigationHub::all_after(std::uint64_t after) cons
   return {first, recent_.end()};
 }
 
+std::uint64_t NavigationHub::latest_seq() const {
+  const std::lock_guard lock(mutex_);
+  return newest_seq();
+}
+
 void NavigationHub::acknowledge(std::uint64_t seq) {
   const std::lock_guard lock(mutex_);
-  const std::uint64_t newest = recent_.empty() ? 0 : recent_.back().seq;
+  const std::uint64_t newest = newest_seq();
   require(seq >= 1 && seq <= newest, "seq",
           "update " + std::to_string(seq) + " was not published (latest " + std::to_string(newest) +
               ")");

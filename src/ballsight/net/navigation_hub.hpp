@@ -52,6 +52,8 @@ class NavigationHub {
   /// Publishes `update` (its seq and published time are assigned) and tells every listener.
   std::uint64_t publish(NavigationUpdate update);
   std::optional<NavigationUpdate> latest() const;
+  /// The latest update's seq without copying it; 0 before the first.
+  std::uint64_t latest_seq() const;
   /// The first update newer than `after` (the oldest one kept, when `after` is older than
   /// that); nullopt when there is none yet.
   std::optional<NavigationUpdate> first_after(std::uint64_t after) const;
@@ -89,6 +91,8 @@ class NavigationHub {
   static constexpr double kCollectedMatchM = 0.30;
 
  private:
+  std::uint64_t newest_seq() const { return recent_.empty() ? 0 : recent_.back().seq; }  // locked
+
   std::string service_id_;
   mutable std::mutex mutex_;
   std::mutex listeners_mutex_;  // publish calls listeners outside mutex_
