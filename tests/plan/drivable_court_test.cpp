@@ -12,6 +12,7 @@ namespace {
 
 const DrivableCourt kCourt = DrivableCourt::standard();
 const double kEnd = 10.97 / 2.0 + 0.914 + 0.5;  // keep-out's end beyond the post
+const double kLane = 0.45;                      // half the lane's width
 
 TEST(DrivableCourt, StraightWhereTheNetIsNotInTheWay) {
   const DrivablePath p = shortest_path(kCourt, Vec2(-5, 2), Vec2(-1, -3));
@@ -26,9 +27,10 @@ TEST(DrivableCourt, AcrossTheNetGoesRoundTheNearerPost) {
   const DrivablePath p = shortest_path(kCourt, a, b);
   ASSERT_EQ(p.via_count, 2);
   EXPECT_NEAR(p.via[0].y(), kEnd, 1e-12);
-  EXPECT_NEAR(p.via[0].x(), -0.1, 1e-12);
-  EXPECT_NEAR(p.via[1].x(), 0.1, 1e-12);
-  const double expected = (Vec2(-0.1, kEnd) - a).norm() + 0.2 + (b - Vec2(0.1, kEnd)).norm();
+  EXPECT_NEAR(p.via[0].x(), -kLane, 1e-12);
+  EXPECT_NEAR(p.via[1].x(), kLane, 1e-12);
+  const double expected =
+      (Vec2(-kLane, kEnd) - a).norm() + 2 * kLane + (b - Vec2(kLane, kEnd)).norm();
   EXPECT_NEAR(p.length_m, expected, 1e-12);
   // And round the other post when that one is nearer.
   EXPECT_LT(shortest_path(kCourt, Vec2(-4, -5), Vec2(4, -5)).via[0].y(), 0.0);
@@ -38,8 +40,8 @@ TEST(DrivableCourt, BetweenTheStripsBeyondBothPostsAlongTheNet) {
   // Both ends level with the net, beyond opposite posts: the way runs down one side of the net.
   const DrivablePath p = shortest_path(kCourt, Vec2(0, 8), Vec2(0, -8));
   ASSERT_EQ(p.via_count, 2);
-  EXPECT_NEAR(p.length_m, 2.0 * std::hypot(0.1, 8.0 - kEnd) + 2.0 * kEnd, 1e-9);
-  EXPECT_NEAR(std::abs(p.via[0].x()), 0.1, 1e-12);
+  EXPECT_NEAR(p.length_m, 2.0 * std::hypot(kLane, 8.0 - kEnd) + 2.0 * kEnd, 1e-9);
+  EXPECT_NEAR(std::abs(p.via[0].x()), kLane, 1e-12);
   EXPECT_EQ(p.via[0].x(), p.via[1].x());
 }
 
@@ -48,7 +50,10 @@ TEST(DrivableCourt, PathsAreSymmetricAndNeverShorterThanTheStraightLine) {
   std::uniform_real_distribution<double> x(-18, 18), y(-9, 9);
   for (int trial = 0; trial < 2000; ++trial) {
     // Every other pair level with the net's keep-out, where the paths are hardest.
-    const Vec2 a(trial % 2 ? x(rng) : 0.3 * x(rng) / 18.0, y(rng)), b(x(rng), y(rng));
+    Vec2 a(trial % 2 ? x(rng) : 0.3 * x(rng) / 18.0, y(rng));
+    const Vec2 b(x(rng), y(rng));
+    // Every fourth pair from a ball against the net (in the lane, outside the reach keep-out).
+    if (trial % 4 == 1) a.x() = std::copysign(0.1 + 0.35 * (a.x() + 18) / 36, a.x());
     if (kCourt.in_net_zone(a) || kCourt.in_net_zone(b)) continue;
     const DrivablePath ab = shortest_path(kCourt, a, b), ba = shortest_path(kCourt, b, a);
     SCOPED_TRACE(testing::Message() << "seed 7 trial " << trial);
@@ -66,6 +71,24 @@ TEST(DrivableCourt, PathsAreSymmetricAndNeverShorterThanTheStraightLine) {
   }
 }
 
+TEST(DrivableCourt, AlongTheNetTheRouteKeepsToTheLaneAndReachesInStraight) {
+  // Two balls against the net on one side: out to the lane's edge, along it, straight back in.
+  const Vec2 a(0.1, 1.0), b(0.1, 3.0);
+  EXPECT_TRUE(kCourt.blocked(a, b));
+  const DrivablePath p = shortest_path(kCourt, a, b);
+  ASSERT_EQ(p.via_count, 2);
+  EXPECT_EQ(p.via[0], Vec2(kLane, 1.0));
+  EXPECT_EQ(p.via[1], Vec2(kLane, 3.0));
+  EXPECT_NEAR(p.length_m, 2.0 + 2 * (kLane - 0.1), 1e-12);
+  // Straight away from the net is drivable; through the reach keep-out never is.
+  EXPECT_FALSE(kCourt.blocked(a, Vec2(5.0, 1.0)));
+  EXPECT_TRUE(kCourt.blocked(a, Vec2(-0.1, 1.0)));
+  // To a ball away from the net: straight out first, then the shortest way.
+  const DrivablePath out = shortest_path(kCourt, a, Vec2(4.0, 3.0));
+  ASSERT_EQ(out.via_count, 1);
+  EXPECT_EQ(out.via[0], Vec2(kLane, 1.0));
+}
+
 TEST(DrivableCourt, BallAgainstTheNetIsApproachedFromItsSide) {
   EXPECT_TRUE(kCourt.in_net_zone(Vec2(0.04, 2.0)));
   EXPECT_EQ(kCourt.approach_point(Vec2(0.04, 2.0)), Vec2(0.1, 2.0));
@@ -78,6 +101,9 @@ TEST(DrivableCourt, ValidateNamesTheProblem) {
   small.area_min_m = Vec2(-18, -6);
   small.area_max_m = Vec2(18, 6);
   EXPECT_THROW(small.validate(), InputError);
+  DrivableCourt narrow = kCourt;
+  narrow.net->travel_clearance_m = 0.05;
+  EXPECT_THROW(narrow.validate(), InputError);
   DrivableCourt bad = kCourt;
   bad.net->clearance_m = -1;
   try {

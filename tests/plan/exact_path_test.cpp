@@ -77,6 +77,21 @@ TEST(PathSearch, ReachesTheExactOptimumOnSmallProblems) {
   EXPECT_LT(worst_gap, 0.02);
 }
 
+TEST(PathSearch, AnOpenPathTurnsRoundWhenItsFarEndIsNearerTheStart) {
+  // Robot beyond the net's north post, balls out east and west (eval plan, seed 1, n = 8): the
+  // nearest-neighbour start heads east; the optimum goes west first, the whole path reversed,
+  // which joins the start to the last ball (the open end is no neighbour of anything).
+  const std::vector<Vec2> nodes{{-8.287, 8.387},   {-1.321, 1.081}, {0.705, 6.390},
+                                {14.123, -3.962},  {0.953, -1.965}, {-12.537, 0.148},
+                                {-14.391, -0.723}, {-2.506, 4.189}, {-14.160, 2.592}};
+  const TravelModel model(nodes, 0.090, DrivableCourt::standard(), RobotLimits{}, CostKind::time);
+  std::vector<int> path = nearest_neighbour_path(model, model.size());
+  PathSearch<TravelModel> search(model, PathSearchOptions{});
+  Improvement how;
+  how.kicks = 100;
+  EXPECT_NEAR(search.improve(path, how), path_cost(model, exact_path(model, false)), 1e-9);
+}
+
 TEST(PathSearch, FixedEndAndFixedTargetStayAndTheCostIsTracked) {
   const PlanningProblem problem = test::random_court_problem(30, 9);
   std::vector<Vec2> nodes{problem.robot.position};

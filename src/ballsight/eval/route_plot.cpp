@@ -52,10 +52,11 @@ cv::Mat draw_route_map(const PlanningProblem& problem, const std::vector<RouteLa
     draw_court_floor(image, px, court);
     cv::rectangle(image, px(problem.court->area_min_m), px(problem.court->area_max_m),
                   cv::Scalar(60, 60, 60), 2);
-    if (const auto& net = problem.court->net) {  // the keep-out round the net drawn above
+    if (const auto& net = problem.court->net) {  // the lane round the net drawn above
       const double y_end = net->half_length_m + net->post_clearance_m;
-      cv::rectangle(image, px({-net->clearance_m, y_end}), px({net->clearance_m, -y_end}),
-                    cv::Scalar(120, 120, 120), 1, cv::LINE_AA);
+      cv::rectangle(image, px({-net->travel_clearance_m, y_end}),
+                    px({net->travel_clearance_m, -y_end}), cv::Scalar(120, 120, 120), 1,
+                    cv::LINE_AA);
     }
   }
   const int ball_px =

@@ -74,6 +74,8 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   sim::DriveLimits limits;
   limits.max_speed_mps = s.site.robot.max_speed_mps;
   limits.max_turn_rate_dps = s.site.robot.turn_rate_dps;
+  limits.max_accel_mps2 = s.site.robot.max_accel_mps2;
+  limits.max_turn_accel_dps2 = s.site.robot.turn_accel_dps2;
   const sim::RobotFootprint footprint = sim::RobotFootprint::of(
       scene.robot, s.site.robot.collector_x_m, s.site.robot.collector_width_m);
   s.world = std::make_unique<sim::CourtWorld>(std::move(scene), s.rig.court, limits, footprint);

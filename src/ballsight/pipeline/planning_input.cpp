@@ -31,7 +31,7 @@ DrivableCourt drivable_court(const SiteCourt& court) {
   out.area_min_m = -out.area_max_m;
   if (court.net) {
     out.net = CourtNet{court.width_m / 2.0 + court.net_posts_outside_m, court.net_clearance_m,
-                       court.net_post_clearance_m};
+                       court.net_post_clearance_m, court.net_travel_clearance_m};
   } else {
     out.net.reset();
   }

@@ -21,17 +21,51 @@ double side_of(const Vec2& p) {
   return p.x() >= 0.0 ? 1.0 : -1.0;
 }
 
+/// The open segment a-b passes through the open rectangle |x| < half.x, |y| < half.y.
+bool crosses(const Vec2& half, const Vec2& a, const Vec2& b) {
+  // Both ends on one side of it: clear (most pairs of a court; no clipping needed).
+  for (int axis = 0; axis < 2; ++axis) {
+    if ((a[axis] >= half[axis] && b[axis] >= half[axis]) ||
+        (a[axis] <= -half[axis] && b[axis] <= -half[axis])) {
+      return false;
+    }
+  }
+  // Liang-Barsky clip of the segment against the rectangle.
+  const Vec2 d = b - a;
+  double t_in = 0.0, t_out = 1.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (std::abs(d[axis]) < 1e-15) {
+      if (std::abs(a[axis]) >= half[axis] - kEps) return false;
+      continue;
+    }
+    double t0 = (-half[axis] - a[axis]) / d[axis];
+    double t1 = (half[axis] - a[axis]) / d[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    t_in = std::max(t_in, t0);
+    t_out = std::min(t_out, t1);
+  }
+  return (t_out - t_in) * d.norm() > kEps;
+}
+
+/// Where a path from `p` inside the lane leaves it: straight away from the net.
+Vec2 lane_exit(const DrivableCourt& court, const Vec2& p) {
+  if (!court.in_net_lane(p)) return p;
+  return {side_of(p) * court.net->travel_clearance_m, p.y()};
+}
+
 /// Shortest path with a before b in lexicographic order, so that a path and its reverse bend at
-/// the same corners: Dijkstra over a, b and the keep-out's four corners, joined where the segment
-/// between them is clear (the shortest path round a convex obstacle bends only at its corners).
+/// the same points: out of the lane straight from a, Dijkstra over that exit, the lane's four
+/// corners and b's exit, joined where the segment between them is clear (the shortest path round
+/// a convex obstacle bends only at its corners), and into the lane straight to b.
 DrivablePath canonical_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {
   DrivablePath best;
   best.length_m = (b - a).norm();
   if (!court.blocked(a, b)) return best;
-  const double c = court.net->clearance_m;
+  const double c = court.net->travel_clearance_m;
   const double y_end = court.net->half_length_m + court.net->post_clearance_m;
-  const std::array<Vec2, 6> node{
-      a, Vec2(c, y_end), Vec2(-c, y_end), Vec2(-c, -y_end), Vec2(c, -y_end), b};
+  const Vec2 a_exit = lane_exit(court, a), b_exit = lane_exit(court, b);
+  const std::array<Vec2, 6> node{a_exit,           Vec2(c, y_end),  Vec2(-c, y_end),
+                                 Vec2(-c, -y_end), Vec2(c, -y_end), b_exit};
   constexpr std::size_t kB = 5;
   std::array<double, 6> dist;
   dist.fill(INFINITY);
@@ -57,16 +91,18 @@ DrivablePath canonical_path(const DrivableCourt& court, const Vec2& a, const Vec
   }
   // Inside a convex fence round a rectangle there is always a way; assert it was found.
   assert(dist[kB] < INFINITY);
-  best.length_m = dist[kB];
-  std::array<Vec2, 4> reversed{};
+  best.length_m = (a_exit - a).norm() + dist[kB] + (b - b_exit).norm();
+  std::array<Vec2, 4> corners{};
   int count = 0;
   for (int v = prev[kB]; v > 0; v = prev[static_cast<std::size_t>(v)]) {
-    reversed[static_cast<std::size_t>(count++)] = node[static_cast<std::size_t>(v)];
+    corners[static_cast<std::size_t>(count++)] = node[static_cast<std::size_t>(v)];
   }
-  best.via_count = count;
-  for (int i = 0; i < count; ++i) {
-    best.via[static_cast<std::size_t>(i)] = reversed[static_cast<std::size_t>(count - 1 - i)];
-  }
+  const auto add = [&best](const Vec2& p) {
+    best.via[static_cast<std::size_t>(best.via_count++)] = p;
+  };
+  if (a_exit != a) add(a_exit);
+  for (int i = count - 1; i >= 0; --i) add(corners[static_cast<std::size_t>(i)]);
+  if (b_exit != b) add(b_exit);
   return best;
 }
 
@@ -80,8 +116,10 @@ void DrivableCourt::validate() const {
   require(net->half_length_m > 0.0, "net.half_length_m", "must be positive");
   require(net->clearance_m >= 0.0, "net.clearance_m", "must not be negative");
   require(net->post_clearance_m >= 0.0, "net.post_clearance_m", "must not be negative");
+  require(net->travel_clearance_m >= net->clearance_m, "net.travel_clearance_m",
+          "must not be less than net.clearance_m (the lane holds the reach keep-out)");
   const double y_end = net->half_length_m + net->post_clearance_m;
-  require(area_min_m.x() < -net->clearance_m && area_max_m.x() > net->clearance_m &&
+  require(area_min_m.x() < -net->travel_clearance_m && area_max_m.x() > net->travel_clearance_m &&
               area_min_m.y() < -y_end && area_max_m.y() > y_end,
           "drivable area",
           "must contain the net's keep-out with room to drive round both posts (" +
@@ -95,6 +133,11 @@ bool DrivableCourt::in_area(const Vec2& p) const {
 
 bool DrivableCourt::in_net_zone(const Vec2& p) const {
   return net && std::abs(p.x()) < net->clearance_m - kEps &&
+         std::abs(p.y()) < net->half_length_m + net->post_clearance_m - kEps;
+}
+
+bool DrivableCourt::in_net_lane(const Vec2& p) const {
+  return net && std::abs(p.x()) < net->travel_clearance_m - kEps &&
          std::abs(p.y()) < net->half_length_m + net->post_clearance_m - kEps;
 }
 
@@ -113,29 +156,11 @@ Vec2 DrivableCourt::approach_point(const Vec2& ball) const {
 
 bool DrivableCourt::blocked(const Vec2& a, const Vec2& b) const {
   if (!net) return false;
-  const Vec2 half(net->clearance_m, net->half_length_m + net->post_clearance_m);
-  // Both ends on one side of the keep-out: clear (most pairs of a court; no clipping needed).
-  for (int axis = 0; axis < 2; ++axis) {
-    if ((a[axis] >= half[axis] && b[axis] >= half[axis]) ||
-        (a[axis] <= -half[axis] && b[axis] <= -half[axis])) {
-      return false;
-    }
-  }
-  // Liang-Barsky clip of the segment against the open keep-out rectangle.
-  const Vec2 d = b - a;
-  double t_in = 0.0, t_out = 1.0;
-  for (int axis = 0; axis < 2; ++axis) {
-    if (std::abs(d[axis]) < 1e-15) {
-      if (std::abs(a[axis]) >= half[axis] - kEps) return false;
-      continue;
-    }
-    double t0 = (-half[axis] - a[axis]) / d[axis];
-    double t1 = (half[axis] - a[axis]) / d[axis];
-    if (t0 > t1) std::swap(t0, t1);
-    t_in = std::max(t_in, t0);
-    t_out = std::min(t_out, t1);
-  }
-  return (t_out - t_in) * d.norm() > kEps;
+  const double y_end = net->half_length_m + net->post_clearance_m;
+  if (crosses(Vec2(net->clearance_m, y_end), a, b)) return true;
+  if (!crosses(Vec2(net->travel_clearance_m, y_end), a, b)) return false;
+  const bool straight_away = std::abs(a.y() - b.y()) <= kEps && side_of(a) == side_of(b);
+  return !straight_away;
 }
 
 DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {

@@ -1,9 +1,12 @@
 #pragma once
 // Where the collecting robot may drive: the fenced area around a tennis court, with the net
 // across its middle as an obstacle the robot goes around. Travel between two points is the
-// shortest drivable path: the straight segment, or a detour round the corners of the net's keep-
-// out rectangle (a convex obstacle inside a convex fence: the shortest path bends only at its
-// corners). Field frame: origin at the court centre on the net line, x along the length.
+// shortest drivable path: the straight segment, or a detour round the corners of the net's travel
+// lane (a convex obstacle inside a convex fence: the shortest path bends only at its corners).
+// The collector may reach closer to the mesh than the lane: a point between the two (where a ball
+// against the net is picked up) is left and entered straight away from the net, as a robot backs
+// off the net before it turns. Field frame: origin at the court centre on the net line, x along
+// the length.
 
 #include <array>
 #include <optional>
@@ -12,13 +15,15 @@
 
 namespace ballsight {
 
-/// The net as the robot sees it: a segment on x = 0 from post to post, kept out of by
-/// `clearance_m` in x (the collector mouth may come this close to the mesh) and by
-/// `post_clearance_m` beyond each post (the body swings round it).
+/// The net as the robot sees it: a segment on x = 0 from post to post. The collector mouth comes
+/// no closer than `clearance_m` in x (the reach keep-out); driving along the net it keeps
+/// `travel_clearance_m` (the lane: half the body's width and room), and `post_clearance_m` beyond
+/// each post (the body swings round it).
 struct CourtNet {
   double half_length_m = 10.97 / 2.0 + 0.914;  // centre to post: ITF posts 0.914 m outside
   double clearance_m = 0.10;
   double post_clearance_m = 0.50;
+  double travel_clearance_m = 0.45;
 };
 
 struct DrivableCourt {
@@ -33,26 +38,29 @@ struct DrivableCourt {
   void validate() const;
 
   bool in_area(const Vec2& p) const;
-  /// Inside the net's keep-out rectangle (|x| < clearance, |y| < half length + post clearance).
+  /// Inside the net's reach keep-out (|x| < clearance, |y| < half length + post clearance).
   bool in_net_zone(const Vec2& p) const;
+  /// Inside the net's travel lane (|x| < travel clearance, |y| as the reach keep-out).
+  bool in_net_lane(const Vec2& p) const;
   /// `p`, or, inside the net's keep-out, the nearest point on its edge.
   Vec2 outside_net_zone(const Vec2& p) const;
   /// Where the robot's collector picks up a ball at `ball`: the ball itself, or, for a ball inside
   /// the net's keep-out, the nearest point on the keep-out's edge on the ball's side of the net.
   Vec2 approach_point(const Vec2& ball) const;
-  /// The open segment a-b passes through the net's keep-out.
+  /// The open segment a-b may not be driven: it passes through the reach keep-out, or through
+  /// the lane other than straight away from the net (both ends on one side at the same y).
   bool blocked(const Vec2& a, const Vec2& b) const;
 };
 
-/// The shortest drivable path from a to b: `via` holds the corners it bends at (at most 2 on a
-/// shortest path; room for all four).
+/// The shortest drivable path from a to b: `via` holds the points it bends at (at most two of
+/// the lane's corners, and where it leaves and enters the lane straight from and to a or b).
 struct DrivablePath {
   double length_m = 0.0;
   std::array<Vec2, 4> via{};
   int via_count = 0;
 };
 
-/// Shortest path between two points of the area outside the net's keep-out.
+/// Shortest path between two points of the area outside the net's reach keep-out.
 DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2& b);
 
 }  // namespace ballsight

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <deque>
 #include <initializer_list>
@@ -285,6 +286,28 @@ class PathSearch {
                                      {i - 1, i, after_a},
                                      {i, i + 2, before_a},
                                      {i - 2, i, after_a}}};
+    if (!options_.fixed_end) {
+      // An open path's end is a neighbour of every node, joined for free: a becomes the last
+      // node, by turning the rest of the path round or moving a's segment there.
+      if (i < hi()) {
+        const double d = reversal_delta(i, hi());
+        if (d < kGain) {
+          reverse(i, hi());
+          return d;
+        }
+      }
+      for (Segment& seg : segments) {
+        if (seg.s < lo() || seg.e >= hi()) continue;
+        seg.saved = removal_delta(seg.s, seg.e);
+        seg.priced = true;
+        if (seg.saved >= 0.0) continue;
+        const double d = move_delta(seg.s, seg.e, hi(), seg.s == i && seg.e != i, seg.saved);
+        if (d < kGain) {
+          move(seg.s, seg.e, hi(), seg.s == i && seg.e != i);
+          return d;
+        }
+      }
+    }
     for (const int c : neighbours_[static_cast<std::size_t>(a)]) {
       const double joined = model_.leg(a, c);
       if (joined >= longest) break;

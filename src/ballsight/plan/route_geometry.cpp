@@ -146,7 +146,13 @@ std::vector<Visit> pull_visits(const PlanningProblem& problem, std::vector<Visit
       const Vec2 c = drive(problem, {v.point_m, 0.0}, *next).points_m.front();
       const Vec2 q = closest_on_segment(a, c, v.centre_m).first;
       const double off = (q - v.centre_m).norm();
-      const Vec2 target = off <= v.reach_m ? q : v.centre_m + (q - v.centre_m) * (v.reach_m / off);
+      Vec2 target = off <= v.reach_m ? q : v.centre_m + (q - v.centre_m) * (v.reach_m / off);
+      // In the net's lane the robot drives in and backs out: from the lane's edge if it reaches.
+      if (problem.court && problem.court->in_net_lane(target)) {
+        const Vec2 edge(std::copysign(problem.court->net->travel_clearance_m, v.centre_m.x()),
+                        target.y());
+        if ((edge - v.centre_m).norm() <= v.reach_m) target = edge;
+      }
       if (drivable(problem, target)) v.point_m = target;
     }
   }

@@ -66,14 +66,18 @@ SiteCourt read_court(YamlMap map) {
   read_length(map, "net_height_centre_m", court.net_height_centre_m);
   read_non_negative(map, "net_clearance_m", court.net_clearance_m);
   read_non_negative(map, "net_post_clearance_m", court.net_post_clearance_m);
+  read_non_negative(map, "net_travel_clearance_m", court.net_travel_clearance_m);
   map.finish();
+  if (court.net_travel_clearance_m < court.net_clearance_m) {
+    map.value().fail("net_travel_clearance_m must not be less than net_clearance_m");
+  }
   if (court.area_length_m < court.length_m || court.area_width_m < court.width_m) {
     map.value().fail("area_length_m x area_width_m must contain the court");
   }
   const double beyond_post =
       court.width_m / 2.0 + court.net_posts_outside_m + court.net_post_clearance_m;
   if (court.net && (court.area_width_m / 2.0 <= beyond_post ||
-                    court.area_length_m / 2.0 <= court.net_clearance_m)) {
+                    court.area_length_m / 2.0 <= court.net_travel_clearance_m)) {
     map.value().fail("area_width_m must leave room to drive round the net posts (more than " +
                      fixed(2.0 * beyond_post, 2) + " m)");
   }
@@ -98,6 +102,8 @@ SiteRobot read_robot(YamlMap map) {
   read_non_negative(map, "collector_x_m", robot.collector_x_m);
   read_length(map, "max_speed_mps", robot.max_speed_mps);
   read_length(map, "turn_rate_dps", robot.turn_rate_dps);
+  read_length(map, "max_accel_mps2", robot.max_accel_mps2);
+  read_length(map, "turn_accel_dps2", robot.turn_accel_dps2);
   map.finish();
   return robot;
 }

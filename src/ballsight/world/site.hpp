@@ -73,6 +73,9 @@ struct SiteCourt {
   double net_height_centre_m = 0.914;
   double net_clearance_m = 0.10;       // closest the collector comes to the net's mesh
   double net_post_clearance_m = 0.50;  // room the robot keeps beyond each post
+  /// Closest the route comes to the mesh when the robot drives along the net: half its body's
+  /// width and room (a ball nearer is reached straight from the lane's edge).
+  double net_travel_clearance_m = 0.45;
 };
 
 struct SiteRobot {
@@ -82,6 +85,8 @@ struct SiteRobot {
   double collector_x_m = 0.30;      // collector mouth ahead of the robot's reference point
   double max_speed_mps = 1.0;       // driving speed of a small differential-drive collector
   double turn_rate_dps = 90.0;      // turning on the spot
+  double max_accel_mps2 = 1.0;      // speeding up and braking
+  double turn_accel_dps2 = 360.0;   // turn rate's change
 };
 
 struct Site {
