@@ -26,8 +26,18 @@ void add_demo_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--court-scenes", args->options.court_scenes, "Court scenes, 1..20")
       ->capture_default_str();
+  cmd->add_option("--loop-balls", args->options.loop_balls,
+                  "Closed loop: balls on the court, 1..60")
+      ->capture_default_str();
+  cmd->add_option("--loop-max-time", args->options.loop_max_time_s,
+                  "Closed loop: simulated seconds per system at most")
+      ->capture_default_str();
+  cmd->add_flag("!--no-faults", args->options.loop_faults,
+                "Closed loop: skip the run with a camera failure and restarts");
   cmd->callback([args] {
-    const DemoResult result = run_demo(args->options, args->out);
+    const DemoResult result = run_demo(args->options, args->out, [](const std::string& line) {
+      std::cout << "ballsight demo: " << line << std::endl;
+    });
     std::cout << "ballsight demo: " << result.images_written << " images; report "
               << result.report_html.string() << "\n";
   });

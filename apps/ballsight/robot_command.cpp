@@ -6,6 +6,7 @@
 #include <csignal>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "ballsight/core/error.hpp"
@@ -26,6 +27,7 @@ struct RobotArgs {
   std::string server = "http://127.0.0.1:8080";
   std::string token_file = "ballsight-token";
   bool long_poll = false;
+  std::string summary;
   CollectorOptions collector;
 };
 
@@ -49,6 +51,13 @@ void run_robot(const RobotArgs& args) {
             << " after " << r.updates << " updates; " << r.collected << " collected; " << r.gaps
             << " updates missed, " << r.reconnects << " reconnects; simulated time " << r.sim_time_s
             << " s" << std::endl;
+  if (!args.summary.empty()) {
+    const nlohmann::json summary{
+        {"done", r.done}, {"updates", r.updates},       {"collected", r.collected},
+        {"gaps", r.gaps}, {"reconnects", r.reconnects}, {"sim_time_s", r.sim_time_s},
+        {"seqs", r.seqs}, {"latency_ms", r.latency_ms}};
+    write_file_atomic(args.summary, summary.dump() + "\n");
+  }
 }
 
 }  // namespace
@@ -70,6 +79,9 @@ void add_robot_command(CLI::App& app) {
                   "Stop after this many updates with no ball and no route")
       ->capture_default_str();
   cmd->add_flag("--long-poll", args->long_poll, "Long-poll instead of the WebSocket stream");
+  cmd->add_option("--summary", args->summary,
+                  "Write what happened here at the end (JSON: done, updates, collected, gaps, "
+                  "reconnects, sim_time_s, seqs, latency_ms per update)");
   cmd->callback([args] { run_robot(*args); });
 }
 

@@ -31,6 +31,7 @@ struct ServeArgs {
   bool open_reads = false;
   int balls = -1;           // simulated court: tennis balls (-1: the scenario's)
   double duration_s = 0.0;  // 0: until SIGINT or SIGTERM
+  std::string fail_camera;  // K@T
   SimulatedServiceOptions service;
 };
 
@@ -52,6 +53,17 @@ void run_serve(const ServeArgs& args) {
     SimulatedServiceOptions options = args.service;
     options.planner.kind = *kind;
     if (args.balls >= 0) options.balls = args.balls;
+    if (!args.fail_camera.empty()) {
+      const std::size_t at = args.fail_camera.find('@');
+      require(at != std::string::npos, "--sim-fail-camera",
+              "expected K@T (camera index @ simulated seconds), got '" + args.fail_camera + "'");
+      const std::vector<double> k =
+          parse_numbers(args.fail_camera.substr(0, at), 1, "--sim-fail-camera", "K@T");
+      const std::vector<double> t =
+          parse_numbers(args.fail_camera.substr(at + 1), 1, "--sim-fail-camera", "K@T");
+      require(k[0] == std::floor(k[0]), "--sim-fail-camera", "camera K must be an integer");
+      options.fail_camera = CameraFailure{static_cast<int>(k[0]), t[0]};
+    }
     court = std::make_unique<SimulatedCourtService>(options);
   } else {
     SiteServiceOptions options;
@@ -146,7 +158,14 @@ void add_serve_command(CLI::App& app) {
   cmd->add_flag("--report-pipeline", args->service.report_pipeline,
                 "Simulated court: the report's court pipeline instead of ballsight's");
   cmd->add_option("--truth-out", args->service.truth_out,
-                  "Simulated court: write every tick's truth here (JSON lines)");
+                  "Simulated court: write every tick's truth here (JSON lines; "
+                  "docs/robot-link.md)");
+  cmd->add_flag("--resume", args->service.resume,
+                "Simulated court: continue the court recorded in --truth-out (a restarted "
+                "service; the robot where it stood, collected balls gone)");
+  cmd->add_option("--sim-fail-camera", args->fail_camera,
+                  "Simulated court: camera K (0-3) delivers no frames from simulated second T "
+                  "on (K@T)");
   cmd->add_option("--duration", args->duration_s, "Stop after this many seconds (0: on a signal)")
       ->capture_default_str();
   cmd->callback([args] { run_serve(*args); });

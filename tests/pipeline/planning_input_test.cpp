@@ -34,7 +34,7 @@ TEST(PlanningInput, TheSiteGivesTheCourtTheNetAndTheCollector) {
   const PlanningProblem round =
       site_planning_problem(Site{}, {Vec2(-0.02, 6.6), rad_from_deg(-90.0)}, {Vec2(5, 5)});
   EXPECT_FALSE(round.court->in_net_zone(round.robot.position));
-  EXPECT_NEAR(round.robot.position.x(), -0.10, 1e-12);  // the mouth out through the net's side
+  EXPECT_NEAR(round.robot.position.x(), -Site{}.court.net_clearance_m, 1e-12);  // out sideways
   EXPECT_NEAR(round.robot.position.y(), 6.3, 1e-12);
 }
 

@@ -91,8 +91,8 @@ TEST(DrivableCourt, AlongTheNetTheRouteKeepsToTheLaneAndReachesInStraight) {
 
 TEST(DrivableCourt, BallAgainstTheNetIsApproachedFromItsSide) {
   EXPECT_TRUE(kCourt.in_net_zone(Vec2(0.04, 2.0)));
-  EXPECT_EQ(kCourt.approach_point(Vec2(0.04, 2.0)), Vec2(0.1, 2.0));
-  EXPECT_EQ(kCourt.approach_point(Vec2(-0.04, 2.0)), Vec2(-0.1, 2.0));
+  EXPECT_EQ(kCourt.approach_point(Vec2(0.04, 2.0)), Vec2(0.06, 2.0));
+  EXPECT_EQ(kCourt.approach_point(Vec2(-0.04, 2.0)), Vec2(-0.06, 2.0));
   EXPECT_EQ(kCourt.approach_point(Vec2(3, 2)), Vec2(3, 2));
 }
 

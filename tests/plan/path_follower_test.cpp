@@ -14,7 +14,8 @@ namespace {
 
 /// Drives an ideal differential drive (no inertia) with the follower's commands at 100 Hz;
 /// the closest the mouth came to each waypoint.
-std::vector<double> drive(PathFollower& follower, Pose2D pose, double seconds, bool& arrived) {
+std::vector<double> drive(PathFollower& follower, Pose2D pose, double seconds, bool& arrived,
+                          bool forwards_only = true) {
   const std::vector<Vec2>& path = follower.path();
   std::vector<double> closest(path.size(), 1e9);
   arrived = false;
@@ -23,7 +24,9 @@ std::vector<double> drive(PathFollower& follower, Pose2D pose, double seconds, b
     const FollowCommand c = follower.command(pose);
     EXPECT_LE(std::abs(c.speed_mps), 1.0 + 1e-9);
     EXPECT_LE(std::abs(c.turn_rate_rps), max_turn + 1e-9);
-    EXPECT_GE(c.speed_mps, 0.0);  // forwards only: the mouth collects driving forwards
+    if (forwards_only) {
+      EXPECT_GE(c.speed_mps, 0.0);  // the mouth collects driving forwards
+    }
     arrived = c.arrived;
     pose.heading_rad += c.turn_rate_rps * dt;
     pose.position +=
@@ -68,6 +71,25 @@ TEST(PathFollower, APathBehindIsTurnedToOnTheSpot) {
   const std::vector<double> closest = drive(follower, {Vec2(0, 0), 0.0}, 30.0, arrived);
   EXPECT_TRUE(arrived);
   EXPECT_LT(closest.back(), 0.06);
+}
+
+TEST(PathFollower, AShortLegStraightBehindIsBackedAlong) {
+  // The mouth at a ball against the net, facing it; the route backs off to the lane's edge, then
+  // goes along it: the robot reverses out before it turns (no room to turn at the net).
+  PathFollower follower;
+  const std::vector<Vec2> path{Vec2(0.06, 2), Vec2(0.45, 2), Vec2(0.45, 4), Vec2(3, 4)};
+  follower.set_path(path);
+  const FollowCommand back = follower.command({Vec2(0.36, 2), kPi});
+  EXPECT_LT(back.speed_mps, 0.0);
+  EXPECT_NEAR(back.turn_rate_rps, 0.0, 1e-9);
+  bool arrived = false;
+  follower.set_path(path);
+  const std::vector<double> closest = drive(follower, {Vec2(0.36, 2), kPi}, 30.0, arrived, false);
+  EXPECT_TRUE(arrived);
+  for (std::size_t i = 0; i < closest.size(); ++i) EXPECT_LT(closest[i], 0.12) << "waypoint " << i;
+  // A long leg behind is still turned to on the spot: the mouth collects driving forwards.
+  follower.set_path({Vec2(0.06, 2), Vec2(3, 2)});
+  EXPECT_EQ(follower.command({Vec2(0.36, 2), kPi}).speed_mps, 0.0);
 }
 
 TEST(PathFollower, NoPathMeansStandStill) {

@@ -110,6 +110,27 @@ TEST(RobotMotion, TheMouthCollectsTheBallsItPassesOver) {
   EXPECT_TRUE(collect_swept(scene, {Vec2(1.0, 0), 0.0}, {Vec2(0.5, 0), 0.0}, f).empty());
 }
 
+TEST(RobotMotion, TheMouthTakesABallItTouches) {
+  // A ball against the net, its centre 0.05 m ahead of where the mouth stops: the mouth touches
+  // it (within its radius) and takes it; one a radius further stays.
+  CourtScene scene;
+  SceneSphere near, far;
+  near.kind = far.kind = ObjectKind::tennis_ball;
+  near.radius_m = far.radius_m = 0.0335;
+  near.id = 1;
+  far.id = 2;
+  near.center_in_field = Vec3(0.03, 0.0, 0.0335);
+  far.center_in_field = Vec3(-0.01, 0.2, 0.0335);
+  scene.balls = {near, far};
+  const RobotFootprint f = RobotFootprint::of(RobotBox{}, 0.30, 0.70);
+  // Facing -x, the mouth moving from x = 0.30 to x = 0.06.
+  const std::vector<int> taken =
+      collect_swept(scene, {Vec2(0.60, 0.0), kPi}, {Vec2(0.36, 0.0), kPi}, f);
+  EXPECT_EQ(taken, std::vector<int>{1});
+  ASSERT_EQ(scene.balls.size(), 1u);
+  EXPECT_EQ(scene.balls[0].id, 2);
+}
+
 TEST(RobotMotion, FootprintOfTheReportsRobot) {
   const RobotFootprint f = RobotFootprint::of(RobotBox{}, 0.30, 0.70);
   EXPECT_DOUBLE_EQ(f.front_m, 0.30);

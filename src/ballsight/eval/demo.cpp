@@ -11,9 +11,12 @@
 #include "ballsight/calib/polynomial_model.hpp"
 #include "ballsight/camera/ground_map_io.hpp"
 #include "ballsight/camera/image_file.hpp"
+#include "ballsight/core/child_process.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/eval/court_eval.hpp"
+#include "ballsight/eval/loop_demo.hpp"
+#include "ballsight/eval/loop_plot.hpp"
 #include "ballsight/eval/omni_auto_calibration.hpp"
 #include "ballsight/eval/plan_eval.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
@@ -28,6 +31,9 @@ namespace fs = std::filesystem;
 void DemoOptions::validate() const {
   require(omni_frames >= 1 && omni_frames <= 100, "demo", "omni_frames must be 1..100");
   require(court_scenes >= 1 && court_scenes <= 20, "demo", "court_scenes must be 1..20");
+  require(loop_balls >= 1 && loop_balls <= 60, "--loop-balls", "must be 1..60");
+  require(std::isfinite(loop_max_time_s) && loop_max_time_s > 0.0, "--loop-max-time",
+          "must be positive");
 }
 
 namespace {
@@ -194,7 +200,36 @@ std::string markdown_section(const std::string& title, const std::string& intro,
 
 }  // namespace
 
-DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir) {
+/// The closed loop's section: each run's map and latency chart, the table, what happened when.
+std::string loop_section(const std::vector<LoopDemoRun>& runs, const fs::path& out_dir,
+                         std::vector<Figure>& figures) {
+  std::string events;
+  for (const LoopDemoRun& r : runs) {
+    const std::string map = "loop/" + r.name + "/map.png";
+    const std::string latency = "loop/" + r.name + "/latency.png";
+    const std::string outcome =
+        std::to_string(r.score.collected) + " of " + std::to_string(r.score.balls) + " balls" +
+        (r.score.all ? " in " + fixed(r.score.time_s, 1) + " s" : " (not all)") + ", " +
+        fixed(r.score.distance_m, 1) + " m driven";
+    write_png_atomic(out_dir / map, draw_loop_map(r.truth, r.name + ": " + outcome));
+    write_png_atomic(out_dir / latency,
+                     draw_latency_chart(r.seqs, r.latency_ms,
+                                        r.name + ": frames captured -> update at the robot"));
+    figures.push_back({map,
+                       "true path, routes as published, balls by the time they were "
+                       "collected (grey, red cross: never); " +
+                           outcome});
+    figures.push_back({latency, "per-update latency at the robot (wall ms)"});
+    for (const TruthEvent& e : r.events) {
+      events += r.name + " at " + fixed(e.time_s, 1) + " s: " + e.what + "\n";
+    }
+  }
+  return "<pre>" + loop_demo_table(runs) +
+         "</pre><p>What happened, and when (simulated):</p><pre>" + events + "</pre>";
+}
+
+DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
+                    const std::function<void(const std::string&)>& progress) {
   options.validate();
   ensure_directory(out_dir);
 
@@ -258,6 +293,28 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir) {
       eval::plan_comparison(eval::BallLayout::practice, 50, options.seed,
                             out_dir / plan_figs[0].image) +
       "</pre>";
+  LoopDemoOptions loop;
+  loop.seed = options.seed;
+  loop.balls = options.loop_balls;
+  loop.max_time_s = options.loop_max_time_s;
+  loop.faults = options.loop_faults;
+  loop.program = own_executable();
+  const auto loop_start = Clock::now();
+  const std::vector<LoopDemoRun> runs = run_loop_demo(loop, out_dir, progress);
+  std::vector<Figure> loop_figs;
+  const std::string loop_results = loop_section(runs, out_dir, loop_figs);
+  const std::string loop_intro =
+      "The closed loop: the navigation service on the simulated court (<code>ballsight serve "
+      "--sim</code>: four cameras rendered every 0.1 s of simulated time from the truth, the "
+      "pipeline, the planner) and the robot (<code>ballsight robot</code>: it knows only what the "
+      "service sends) as two processes over loopback HTTP/WebSocket, " +
+      std::to_string(options.loop_balls) +
+      " balls, until all are collected, the robot sees none left, or " +
+      fixed(options.loop_max_time_s, 0) +
+      " s. Systems: the report's pipeline and priority rule (report), ballsight's pipeline with "
+      "the priority rule, ballsight; then ballsight with faults (a camera dies, the service and "
+      "the robot are killed and started again). Scored on the court's record; " +
+      fixed(seconds_since(loop_start), 1) + " s wall (docs/robot-link.md):" + loop_results;
   const std::string title = "ballsight demo (seed " + std::to_string(options.seed) + ")";
 
   std::ostringstream html;
@@ -270,16 +327,18 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir) {
        << html_section("Omnidirectional rig", omni_intro, omni_figs)
        << html_section("Court rig", court_intro, court_figs)
        << html_section("Court: calibration, detection and world model", eval_intro, eval_figs)
-       << html_section("Court: collection route", plan_intro, plan_figs) << "</body></html>\n";
+       << html_section("Court: collection route", plan_intro, plan_figs)
+       << html_section("Court: the closed loop", loop_intro, loop_figs) << "</body></html>\n";
   const std::string markdown =
       "# " + title + "\n\n" + markdown_section("Omnidirectional rig", omni_intro, omni_figs) +
       markdown_section("Court rig", court_intro, court_figs) +
       markdown_section("Court: calibration, detection and world model", eval_intro, eval_figs) +
-      markdown_section("Court: collection route", plan_intro, plan_figs);
+      markdown_section("Court: collection route", plan_intro, plan_figs) +
+      markdown_section("Court: the closed loop", loop_intro, loop_figs);
 
-  DemoResult result{
-      out_dir / "report.html", out_dir / "report.md",
-      static_cast<int>(omni_figs.size() + court_figs.size() + eval_figs.size() + plan_figs.size())};
+  DemoResult result{out_dir / "report.html", out_dir / "report.md",
+                    static_cast<int>(omni_figs.size() + court_figs.size() + eval_figs.size() +
+                                     plan_figs.size() + loop_figs.size())};
   write_file_atomic(result.report_html, html.str());
   write_file_atomic(result.report_markdown, markdown);
   return result;

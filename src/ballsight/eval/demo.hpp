@@ -2,18 +2,23 @@
 // The main job: ballsight end to end on built-in simulated data, with a report a person can read.
 // It renders both simulated rigs, calibrates the omni camera from the markers it finds and places
 // the ball in every frame (ballsight's pipeline beside the paper's), and calibrates and runs both
-// court methods against the truth; later stages (routes, service) add their sections here.
+// court methods against the truth, plans a collection route, and closes the loop: the service
+// and the robot as two processes collect a simulated court's balls (eval/loop_demo.hpp).
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace ballsight {
 
 struct DemoOptions {
   std::uint64_t seed = 1;
-  int omni_frames = 4;   // frame 0 is the calibration frame with floor markers
-  int court_scenes = 1;  // four camera views each
+  int omni_frames = 4;             // frame 0 is the calibration frame with floor markers
+  int court_scenes = 1;            // four camera views each
+  int loop_balls = 20;             // the closed loop's scene
+  double loop_max_time_s = 150.0;  // simulated, per system
+  bool loop_faults = true;         // the closed loop once more with faults
   /// Throws InputError naming the first invalid field.
   void validate() const;
 };
@@ -26,6 +31,8 @@ struct DemoResult {
 
 /// Runs the demo into `out_dir` (created if missing): omni/ and court/ data sets, report.html and
 /// report.md.
-DemoResult run_demo(const DemoOptions& options, const std::filesystem::path& out_dir);
+/// `progress` hears what the demo is doing (the closed loop's simulated time, balls left).
+DemoResult run_demo(const DemoOptions& options, const std::filesystem::path& out_dir,
+                    const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace ballsight

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/eval/loop_truth.hpp"
 #include "ballsight/net/collector_robot.hpp"
 #include "ballsight/net/http_server.hpp"
 
@@ -36,6 +37,7 @@ LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double
   link_options.port = server.port();
   link_options.token = server_options.token;
   RobotLink link(link_options);
+  const Pose2D start = service.robot_start();
   std::atomic<bool> stop{false};
   std::thread court([&] { service.run(hub, stop); });
   std::thread robot([&] { run_collector(link, {}, stop); });
@@ -51,30 +53,13 @@ LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double
   link.stop();
   server.stop();
 
-  LoopRun run;
-  run.system = system.name;
-  run.seed = seed;
-  const std::vector<sim::WorldTick>& history = service.history();
-  run.balls = history.empty()
-                  ? 0
-                  : history.front().balls_left + static_cast<int>(history.front().collected.size());
-  const sim::RobotFootprint footprint = sim::RobotFootprint::of(
-      sim::RobotBox{}, service.site().robot.collector_x_m, service.site().robot.collector_width_m);
-  const sim::TennisCourtSpec court_spec;
-  Pose2D last = history.empty() ? Pose2D{} : history.front().robot;
-  for (const sim::WorldTick& t : history) {
-    run.distance_m += (t.robot.position - last.position).norm();
-    last = t.robot;
-    run.collected += static_cast<int>(t.collected.size());
-    run.never_overlapped =
-        run.never_overlapped && !sim::footprint_blocked(footprint, t.robot, court_spec);
-    run.time_s = t.time_s;
-    if (t.balls_left == 0) {
-      run.all = true;
-      break;
-    }
-  }
-  return run;
+  const Site& site = service.site();
+  const LoopScore score =
+      score_loop(balls, start, service.history(),
+                 sim::RobotFootprint::of(sim::RobotBox{}, site.robot.collector_x_m,
+                                         site.robot.collector_width_m));
+  return {system.name,      seed,      score.balls,           score.collected, score.time_s,
+          score.distance_m, score.all, score.never_overlapped};
 }
 
 void LoopEvalOptions::validate() const {

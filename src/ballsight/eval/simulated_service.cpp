@@ -5,11 +5,13 @@
 #include <condition_variable>
 #include <fstream>
 #include <mutex>
+#include <opencv2/core/utility.hpp>
 #include <thread>
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/court_eval_calibration.hpp"
+#include "ballsight/eval/loop_truth.hpp"
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/sim/court_renderer.hpp"
@@ -33,6 +35,13 @@ void SimulatedServiceOptions::validate() const {
             "must be in [0, " + std::to_string(sim::CourtScenarioOptions::kMaxBalls) + "]");
   }
   planner.validate();
+  require(!resume || !truth_out.empty(), "--resume", "needs --truth-out (the court to resume)");
+  if (fail_camera) {
+    require(fail_camera->camera >= 0 && fail_camera->camera < 4, "--sim-fail-camera",
+            "camera must be 0..3 (the court's four cameras)");
+    require(std::isfinite(fail_camera->at_s) && fail_camera->at_s >= 0.0, "--sim-fail-camera",
+            "time must be a non-negative number of simulated seconds");
+  }
 }
 
 struct SimulatedCourtService::Impl {
@@ -41,6 +50,7 @@ struct SimulatedCourtService::Impl {
   Site site;
   std::unique_ptr<sim::CourtWorld> world;
   std::vector<sim::CourtRenderer> renderers;
+  std::vector<cv::Mat> lit;  // each camera's background under the scene's (fixed) lighting
   std::unique_ptr<UpdatePublisher> publisher;
   std::atomic<double> render_ms{0.0};
 
@@ -54,6 +64,11 @@ struct SimulatedCourtService::Impl {
   int collected = 0, blocked_ticks = 0, balls_left = 0;
   double time_s = 0.0;
   Pose2D robot;
+  bool camera_failed = false;
+  Pose2D start;  // the robot when this service began
+  // The court's record: the scene as it began (written first), or the run this one resumes.
+  std::optional<LoopTruth> resumed;
+  std::vector<SceneBall> scene_balls;
 
   bool driving(Clock::time_point now) const {  // mutex held
     return last_command && now - *last_command < std::chrono::seconds(3);
@@ -71,6 +86,18 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   scenario.ball_count = options.balls;
   sim::CourtScene scene =
       sim::make_court_scene(s.rig.court, scenario, sim::derive_seed(options.seed, 1));
+  for (const sim::SceneSphere& b : scene.balls) {
+    if (b.kind == sim::ObjectKind::tennis_ball) {
+      s.scene_balls.push_back({b.id, b.center_in_field.head<2>()});
+    }
+  }
+  if (options.resume && std::filesystem::exists(options.truth_out)) {
+    drop_unfinished_line(options.truth_out);
+    s.resumed = read_loop_truth(options.truth_out);
+    require(s.resumed->seed == options.seed, options.truth_out.string(),
+            "records seed " + std::to_string(s.resumed->seed) + ", not --seed " +
+                std::to_string(options.seed));
+  }
   sim::DriveLimits limits;
   limits.max_speed_mps = s.site.robot.max_speed_mps;
   limits.max_turn_rate_dps = s.site.robot.turn_rate_dps;
@@ -78,12 +105,25 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   limits.max_turn_accel_dps2 = s.site.robot.turn_accel_dps2;
   const sim::RobotFootprint footprint = sim::RobotFootprint::of(
       scene.robot, s.site.robot.collector_x_m, s.site.robot.collector_width_m);
+  scene.effects.quantile_noise = true;  // 40 views a simulated second
   s.world = std::make_unique<sim::CourtWorld>(std::move(scene), s.rig.court, limits, footprint);
+  if (s.resumed && !s.resumed->ticks.empty()) {
+    std::vector<int> gone;
+    for (const TruthTick& t : s.resumed->ticks) {
+      gone.insert(gone.end(), t.world.collected.begin(), t.world.collected.end());
+    }
+    const TruthTick& last = s.resumed->ticks.back();
+    s.world->resume(last.world.time_s, last.world.robot, gone);
+    s.collected = static_cast<int>(gone.size());
+    s.time_s = last.world.time_s;
+  }
   s.balls_left = s.world->balls_left();
+  s.start = s.world->motion().pose;
   s.robot = s.world->motion().pose;
   std::vector<FieldCamera> cameras;
   for (const sim::CourtCamera& c : s.rig.cameras) {
     s.renderers.emplace_back(c, s.rig.court);
+    s.lit.push_back(s.renderers.back().lit_background(s.world->scene().lighting));  // one sun
     cameras.push_back({c.camera, c.camera_from_field});
   }
   s.publisher = std::make_unique<UpdatePublisher>(
@@ -120,10 +160,16 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
   Impl& s = *impl_;
   const double period_s = 1.0 / s.options.vision_hz;
   std::ofstream truth;
+  const auto record = [&truth](const nlohmann::json& line) {
+    if (truth.is_open()) truth << line.dump() << "\n" << std::flush;
+  };
   if (!s.options.truth_out.empty()) {
-    truth.open(s.options.truth_out);
+    truth.open(s.options.truth_out, s.resumed ? std::ios::app : std::ios::trunc);
     require(truth.good(), s.options.truth_out.string(), "cannot open for writing");
   }
+  if (!s.resumed) record(scene_record(s.options.seed, s.scene_balls, s.world->motion().pose));
+  record(event_record(
+      {s.world->time_s(), s.resumed ? "service restarted: the court resumed" : "service started"}));
   std::uint64_t tick = 0;
   while (!stop) {
     const auto started = Clock::now();
@@ -137,12 +183,26 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
         return hub.was_collected(b.center_in_field.head<2>());
       });
     }
-    std::vector<cv::Mat> frames;
-    for (std::size_t c = 0; c < s.renderers.size(); ++c) {
-      frames.push_back(s.renderers[c]
-                           .render(s.world->scene(), sim::derive_seed(s.options.seed + tick, c + 2))
-                           .bgr);
+    // The cameras rendered side by side (the pipeline after them is a few ms).
+    std::vector<cv::Mat> frames(s.renderers.size());
+    const sim::CourtScene& scene = s.world->scene();
+    const std::optional<CameraFailure>& failure = s.options.fail_camera;
+    const bool failed = failure && s.world->time_s() >= failure->at_s;
+    if (failed && !s.camera_failed) {
+      record(event_record(
+          {s.world->time_s(), s.site.cameras[static_cast<std::size_t>(failure->camera)].name +
+                                  " failed: no more frames"}));
     }
+    s.camera_failed = failed;
+    cv::parallel_for_(cv::Range(0, static_cast<int>(frames.size())), [&](const cv::Range& r) {
+      for (int c = r.start; c < r.end; ++c) {
+        const auto k = static_cast<std::size_t>(c);
+        if (failed && c == failure->camera) continue;  // an empty frame: the camera is gone
+        frames[k] = s.renderers[k]
+                        .render(scene, sim::derive_seed(s.options.seed + tick, k + 2), s.lit[k])
+                        .bgr;
+      }
+    });
     const std::int64_t capture_ns = utc_now_ns();  // the frames exist from now: "captured"
     s.render_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
     const std::uint64_t seq = s.publisher->publish(frames, capture_ns, hub);
@@ -166,23 +226,14 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       s.time_s = t.time_s;
       s.robot = t.robot;
     }
-    if (truth.is_open()) {
-      truth << nlohmann::json{{"time_s", t.time_s},
-                              {"seq", seq},
-                              {"robot",
-                               {{"x_m", t.robot.position.x()},
-                                {"y_m", t.robot.position.y()},
-                                {"heading_deg", deg_from_rad(t.robot.heading_rad)}}},
-                              {"command",
-                               {{"speed_mps", command.speed_mps},
-                                {"turn_rate_dps", deg_from_rad(command.turn_rate_rps)}}},
-                              {"collected", t.collected},
-                              {"balls_left", t.balls_left},
-                              {"blocked", t.blocked}}
-                   .dump()
-            << "\n"
-            << std::flush;
+    TruthTick line{t, seq, command, {}};
+    if (const std::optional<NavigationUpdate> u = seq > 0 ? hub.first_after(seq - 1) : std::nullopt;
+        u && u->seq == seq) {
+      if (u->world.robot) line.published.robot = u->world.robot->pose;
+      line.published.balls_seen = static_cast<int>(u->world.balls.size());
+      line.published.waypoints_m = u->route.waypoints_m;
     }
+    record(tick_record(line));
     ++tick;
     // Racing ahead is for a robot that drives; a court nobody drives keeps to the wall clock.
     if (s.options.realtime || !driving) {
@@ -190,6 +241,10 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
                                                   std::chrono::duration<double>(period_s)));
     }
   }
+}
+
+Pose2D SimulatedCourtService::robot_start() const {
+  return impl_->start;
 }
 
 const std::vector<sim::WorldTick>& SimulatedCourtService::history() const {
@@ -214,6 +269,9 @@ nlohmann::json SimulatedCourtService::health() const {
   nlohmann::json cameras = nlohmann::json::array();
   for (const SiteCamera& c : s.site.cameras) {
     cameras.push_back({{"name", c.name}, {"state", "simulated"}, {"frames", h["frame_sets"]}});
+  }
+  if (s.camera_failed) {
+    cameras[static_cast<std::size_t>(s.options.fail_camera->camera)]["state"] = "failed";
   }
   h["cameras"] = cameras;
   h["render_ms"] = s.render_ms.load();

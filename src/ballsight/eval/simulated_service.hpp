@@ -10,7 +10,9 @@
 // up the balls it passes over, the net and the fence stop it. With no robot driving, a ball
 // reported collected is taken off the court by hand, as in the report's own test. The cameras'
 // calibration is the simulator's (calibrating from rendered chessboards is `eval court`'s
-// business).
+// business). The court's record (`truth_out`, eval/loop_truth.hpp) is the physical world: a
+// service started again with `resume` continues the court from it (robot where it stood,
+// collected balls gone, the clock on), as a real court outlives its service.
 
 #include <cstdint>
 #include <filesystem>
@@ -22,6 +24,12 @@
 
 namespace ballsight {
 
+/// A camera that stops delivering frames at a moment of simulated time.
+struct CameraFailure {
+  int camera = 0;  // index in the site's cameras
+  double at_s = 0.0;
+};
+
 struct SimulatedServiceOptions {
   std::uint64_t seed = 1;
   std::optional<int> balls;         // tennis balls on the court; nullopt: the scenario's 20-60
@@ -29,7 +37,9 @@ struct SimulatedServiceOptions {
   bool realtime = false;            // simulated time at wall time (else as fast as possible)
   double robot_wait_s = 1.0;        // for a driving robot's command, at most (wall)
   std::filesystem::path truth_out;  // JSON lines, one per tick (empty: not written)
-  bool report_pipeline = false;     // the report's court pipeline instead of ballsight's
+  bool resume = false;              // continue the court recorded in truth_out (when it exists)
+  std::optional<CameraFailure> fail_camera;
+  bool report_pipeline = false;  // the report's court pipeline instead of ballsight's
   PlannerOptions planner;
 
   /// Throws InputError naming the first invalid field.
@@ -56,6 +66,8 @@ class SimulatedCourtService : public CourtService {
   /// previous command (the collector's sensor), "time_s": simulated time}. Any thread.
   nlohmann::json drive(std::uint64_t seq, double speed_mps, double turn_rate_rps);
 
+  /// Where the robot stood when this service began (or resumed).
+  Pose2D robot_start() const;
   /// What really happened, one tick per vision period; read it once run() has returned.
   const std::vector<sim::WorldTick>& history() const;
 

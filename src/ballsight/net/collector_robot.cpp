@@ -32,6 +32,8 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
     const std::optional<LinkUpdate> u = link.next(std::chrono::milliseconds(500));
     if (!u) continue;
     ++result.updates;
+    result.latency_ms.push_back(static_cast<double>(u->received_ns - u->capture_time_ns) * 1e-6);
+    result.seqs.push_back(u->seq);
     FollowCommand command;
     if (u->robot) {
       if (u->waypoints_m != planned) {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "ballsight/net/robot_link.hpp"
 #include "ballsight/plan/path_follower.hpp"
@@ -31,6 +32,10 @@ struct CollectorResult {
   std::uint64_t gaps = 0;
   int reconnects = 0;
   double sim_time_s = 0.0;  // the simulated court's clock at the last command
+  /// Per update, in arrival order: frames captured -> update parsed here (wall ms, UTC clocks
+  /// of one machine), and its sequence number.
+  std::vector<double> latency_ms;
+  std::vector<std::uint64_t> seqs;
 };
 
 /// Drives until done, `stop`, or the time limit; `progress` hears a line every 100 updates.

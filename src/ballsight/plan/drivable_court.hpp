@@ -21,7 +21,7 @@ namespace ballsight {
 /// each post (the body swings round it).
 struct CourtNet {
   double half_length_m = 10.97 / 2.0 + 0.914;  // centre to post: ITF posts 0.914 m outside
-  double clearance_m = 0.10;
+  double clearance_m = 0.06;
   double post_clearance_m = 0.50;
   double travel_clearance_m = 0.45;
 };

@@ -9,6 +9,8 @@ namespace ballsight {
 namespace {
 
 constexpr double kStraightRad = 0.35;  // 20 degrees: a turn smaller than this is no corner
+constexpr double kBackOffM = 0.6;      // a leg this short straight behind is reversed along
+constexpr double kBehindCos = 0.7071;  // "straight behind": within 45 degrees
 
 }  // namespace
 
@@ -97,8 +99,11 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
   const double speed =
       options_.max_speed_mps * std::clamp(remaining / options_.slow_down_m, 0.15, 1.0);
   const Vec2 u = speed * towards / distance;
-  if (u.dot(h) < 0.0) {  // the carrot is behind: turn on the spot towards it (the mouth collects
-                         // only driving forwards)
+  // A short leg straight behind (backing off the net after a ball against it, where the body has
+  // no room to turn): reversed along, the same linearisation steering the mouth.
+  const bool back_off = u.dot(h) < -kBehindCos * speed && corner - progress_ < kBackOffM;
+  if (u.dot(h) < 0.0 && !back_off) {  // the carrot is behind: turn on the spot towards it (the
+                                      // mouth collects only driving forwards)
     return {0.0, std::copysign(options_.max_turn_rate_rps, u.dot(h_perp)), false};
   }
   double v = u.dot(h);

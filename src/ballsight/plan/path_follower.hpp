@@ -7,7 +7,8 @@
 // the mouth tracks the path itself, where pure pursuit cuts corners). u points at a carrot a
 // look-ahead along the path from the mouth's progress, but never past the next waypoint (a ball
 // is there: the mouth goes over it, not round the corner), and slows for the waypoint ahead and
-// for the end of the path; a carrot behind the robot is turned to on the spot.
+// for the end of the path; a carrot behind the robot is turned to on the spot, except at the end
+// of a short leg straight behind, which is reversed along (backing off the net).
 
 #include <cstddef>
 #include <vector>

@@ -1,5 +1,6 @@
 #include "ballsight/sim/court_renderer.hpp"
 
+#include "ballsight/core/error.hpp"
 #include "ballsight/core/raycast_box.hpp"
 #include "ballsight/sim/pixel_box.hpp"
 #include "ballsight/sim/raycast.hpp"
@@ -32,13 +33,26 @@ CourtRenderer::CourtRenderer(const CourtCamera& camera, const TennisCourtSpec& c
       rays_(camera.camera, camera.camera_from_field.rotation.transpose()),
       background_(camera, rays_, court, kSamplesPerAxis) {}
 
+cv::Mat CourtRenderer::lit_background(const Lighting& lighting) const {
+  cv::Mat bgr(rays_.height(), rays_.width(), CV_8UC3);
+  background_.light(lighting, bgr);
+  return bgr;
+}
+
 CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_seed) const {
   scene.validate();
+  return render(scene, noise_seed, lit_background(scene.lighting));
+}
+
+CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_seed,
+                                  const cv::Mat& lit_background) const {
+  scene.validate();
   const cv::Size size(rays_.width(), rays_.height());
+  require(lit_background.type() == CV_8UC3 && lit_background.size() == size, "lit background",
+          "must be the camera's image size, CV_8UC3 (CourtRenderer::lit_background)");
   CourtRender out;
-  out.bgr.create(size, CV_8UC3);
+  lit_background.copyTo(out.bgr);
   out.object_ids = cv::Mat(size, CV_32S, cv::Scalar(-1));
-  background_.light(scene.lighting, out.bgr);
 
   const std::vector<SceneSphere> spheres = scene.spheres();
   const FloorBox robot{scene.robot.pose,

@@ -51,6 +51,12 @@ class CourtRenderer {
 
   /// Renders the scene; `noise_seed` seeds the sensor noise of scene.effects.
   CourtRender render(const CourtScene& scene, std::uint64_t noise_seed) const;
+  /// The same from the background already lit by scene.lighting (lit_background): a sequence of
+  /// views under one sun lights it once.
+  CourtRender render(const CourtScene& scene, std::uint64_t noise_seed,
+                     const cv::Mat& lit_background) const;
+  /// The background under `lighting` (CV_8UC3, the camera's image size).
+  cv::Mat lit_background(const Lighting& lighting) const;
 
  private:
   CourtCamera camera_;

@@ -18,6 +18,15 @@ int CourtWorld::balls_left() const {
                     [](const SceneSphere& b) { return b.kind == ObjectKind::tennis_ball; }));
 }
 
+void CourtWorld::resume(double time_s, const Pose2D& pose, const std::vector<int>& collected) {
+  time_s_ = time_s;
+  motion_ = RobotMotion{pose, 0.0, 0.0};
+  scene_.robot.pose = pose;
+  remove_balls_if([&](const SceneSphere& b) {
+    return std::find(collected.begin(), collected.end(), b.id) != collected.end();
+  });
+}
+
 const WorldTick& CourtWorld::advance(const DriveCommand& command, double seconds) {
   WorldTick tick;
   const int steps = std::max(1, static_cast<int>(std::lround(seconds / kStepS)));

@@ -32,6 +32,9 @@ class CourtWorld {
   /// Drives with `command` for `seconds` in steps of kStepS (the robot's box moves with it);
   /// records and returns the tick.
   const WorldTick& advance(const DriveCommand& command, double seconds);
+  /// Continues a run recorded earlier: the clock at `time_s`, the robot standing at `pose`, the
+  /// tennis balls `collected` gone.
+  void resume(double time_s, const Pose2D& pose, const std::vector<int>& collected);
   /// Removes the tennis balls for which `taken` holds (a hand picking them up, as in the
   /// report's own test); their ids.
   template <class Pred>

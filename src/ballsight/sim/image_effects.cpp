@@ -1,11 +1,61 @@
 #include "ballsight/sim/image_effects.hpp"
 
+#include <array>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
 #include "ballsight/core/error.hpp"
 
 namespace ballsight::sim {
+namespace {
+
+constexpr int kQuantileBits = 16;
+constexpr std::size_t kQuantiles = std::size_t{1} << kQuantileBits;
+
+/// Standard normal quantiles at the midpoints of kQuantiles equal-probability bins (bisection on
+/// the CDF, once).
+const std::array<float, kQuantiles>& normal_quantiles() {
+  static const auto table = [] {
+    std::array<float, kQuantiles> q{};
+    for (std::size_t i = 0; i < kQuantiles; ++i) {
+      const double p = (static_cast<double>(i) + 0.5) / static_cast<double>(kQuantiles);
+      double lo = -8.0, hi = 8.0;
+      for (int it = 0; it < 40; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+      }
+      q[i] = static_cast<float>(0.5 * (lo + hi));
+    }
+    return q;
+  }();
+  return table;
+}
+
+std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+void add_quantile_noise(cv::Mat& bgr, double sigma, std::uint64_t seed) {
+  const std::array<float, kQuantiles>& z = normal_quantiles();
+  const auto s = static_cast<float>(sigma);
+  std::uint64_t state = seed;
+  for (int y = 0; y < bgr.rows; ++y) {
+    uchar* p = bgr.ptr<uchar>(y);
+    const int n = bgr.cols * bgr.channels();
+    std::uint64_t bits = 0;
+    for (int i = 0; i < n; ++i) {
+      if (i % 4 == 0) bits = splitmix64(state);
+      const float v = static_cast<float>(p[i]) + s * z[bits & (kQuantiles - 1)];
+      bits >>= kQuantileBits;
+      p[i] = cv::saturate_cast<uchar>(v);
+    }
+  }
+}
+
+}  // namespace
 
 void ImageEffects::validate() const {
   require(std::isfinite(brightness_gain) && brightness_gain > 0.0 && brightness_gain <= 4.0,
@@ -22,7 +72,9 @@ void apply_image_effects(cv::Mat& bgr, const ImageEffects& effects, std::uint64_
   if (effects.blur_sigma_px > 0.0) {
     cv::GaussianBlur(bgr, bgr, cv::Size(), effects.blur_sigma_px);
   }
-  if (effects.noise_sigma > 0.0) {
+  if (effects.noise_sigma > 0.0 && effects.quantile_noise) {
+    add_quantile_noise(bgr, effects.noise_sigma, seed);
+  } else if (effects.noise_sigma > 0.0) {
     cv::Mat noise(bgr.size(), CV_16SC3);
     cv::RNG rng(seed);
     rng.fill(noise, cv::RNG::NORMAL, 0.0, effects.noise_sigma);

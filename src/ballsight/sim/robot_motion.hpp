@@ -1,7 +1,7 @@
 #pragma once
 // The simulated collector's truth: a differential-drive robot that speeds up, turns and stops
 // within its limits, cannot pass through the net or the fence, and picks up every tennis ball
-// its collector mouth passes over (the tennis-ball report's 70 cm collector, section 7.8).
+// its collector mouth reaches (the tennis-ball report's 70 cm collector, section 7.8).
 
 #include <vector>
 
@@ -63,8 +63,9 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
                      const DriveLimits& limits, const RobotFootprint& footprint,
                      const TennisCourtSpec& court);
 
-/// Removes from `scene` the tennis balls whose centre crossed the collector's mouth while the
-/// robot moved from `before` to `after` (forwards, within the mouth's width); their ids.
+/// Removes from `scene` the tennis balls the collector's mouth reached while the robot moved from
+/// `before` to `after` (forwards, within the mouth's width): the mouth touched the ball (its
+/// centre came within a radius of the mouth's line), as a roller takes it in; their ids.
 std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Pose2D& after,
                                const RobotFootprint& footprint);
 

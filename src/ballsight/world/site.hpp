@@ -71,7 +71,7 @@ struct SiteCourt {
   double net_posts_outside_m = 0.914;
   double net_height_posts_m = 1.07;
   double net_height_centre_m = 0.914;
-  double net_clearance_m = 0.10;       // closest the collector comes to the net's mesh
+  double net_clearance_m = 0.06;       // closest the collector comes to the net's mesh
   double net_post_clearance_m = 0.50;  // room the robot keeps beyond each post
   /// Closest the route comes to the mesh when the robot drives along the net: half its body's
   /// width and room (a ball nearer is reached straight from the lane's edge).

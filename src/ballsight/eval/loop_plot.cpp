@@ -1,0 +1,105 @@
+#include "ballsight/eval/loop_plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <opencv2/imgproc.hpp>
+
+#include "ballsight/core/text_format.hpp"
+#include "ballsight/eval/chart.hpp"
+#include "ballsight/eval/court_map.hpp"
+
+namespace ballsight {
+namespace {
+
+constexpr double kPixelsPerM = 32.0;
+constexpr int kColormap = cv::COLORMAP_VIRIDIS;
+
+cv::Scalar colormap_colour(double share) {
+  cv::Mat1b v(1, 1, static_cast<uchar>(std::clamp(share, 0.0, 1.0) * 255.0));
+  cv::Mat c;
+  cv::applyColorMap(v, c, kColormap);
+  const cv::Vec3b bgr = c.at<cv::Vec3b>(0, 0);
+  return {static_cast<double>(bgr[0]), static_cast<double>(bgr[1]), static_cast<double>(bgr[2])};
+}
+
+}  // namespace
+
+cv::Mat draw_loop_map(const LoopTruth& truth, const std::string& title, int route_snapshots) {
+  const Vec2 lo(-19.0, -10.0), hi(19.0, 10.0);  // the 36 x 18 m fence and a metre round it
+  const cv::Scalar route_colours[] = {
+      {200, 120, 40}, {40, 140, 230}, {160, 60, 200}, {60, 170, 60}};
+  constexpr int kColours = 4;
+  route_snapshots = std::clamp(route_snapshots, 0, kColours);
+  const int top = 36 + 22 * (route_snapshots + 1);
+  const int bar = 90;
+  const int width = static_cast<int>(std::lround((hi.x() - lo.x()) * kPixelsPerM)) + bar;
+  const int height = top + static_cast<int>(std::lround((hi.y() - lo.y()) * kPixelsPerM));
+  cv::Mat image(height, width, CV_8UC3, cv::Scalar(235, 235, 235));
+  const MapView px{Vec2(lo.x(), hi.y()), kPixelsPerM, {0.0, static_cast<double>(top)}};
+  draw_court_floor(image, px, sim::TennisCourtSpec{});
+  cv::rectangle(image, px({-18, -9}), px({18, 9}), cv::Scalar(60, 60, 60), 2);
+
+  // The published route at evenly spaced moments of the run (the first with a route).
+  std::vector<LegendEntry> legend{{"true path", cv::Scalar(20, 20, 20)}};
+  std::vector<const TruthTick*> with_route;
+  for (const TruthTick& t : truth.ticks) {
+    if (t.published.waypoints_m.size() > 1) with_route.push_back(&t);
+  }
+  for (int k = 0; k < route_snapshots && !with_route.empty(); ++k) {
+    const TruthTick& t = *with_route[with_route.size() * static_cast<std::size_t>(k) /
+                                     static_cast<std::size_t>(route_snapshots)];
+    std::vector<cv::Point> path;
+    for (const Vec2& w : t.published.waypoints_m) path.emplace_back(px(w));
+    cv::polylines(image, path, false, route_colours[k], 1, cv::LINE_AA);
+    legend.push_back({"route published at " + fixed(t.world.time_s, 1) + " s", route_colours[k]});
+  }
+  std::vector<cv::Point> driven{px(truth.robot_start.position)};
+  for (const TruthTick& t : truth.ticks) driven.emplace_back(px(t.world.robot.position));
+  cv::polylines(image, driven, false, cv::Scalar(20, 20, 20), 2, cv::LINE_AA);
+
+  // Balls by the time they were collected.
+  std::map<int, double> collected_at;
+  for (const TruthTick& t : truth.ticks) {
+    for (const int id : t.world.collected) collected_at.emplace(id, t.world.time_s);
+  }
+  const double end_s = truth.ticks.empty() ? 1.0 : std::max(1.0, truth.ticks.back().world.time_s);
+  const int r = 5;
+  for (const SceneBall& b : truth.balls) {
+    const cv::Point2d at = px(b.position_m);
+    const auto it = collected_at.find(b.id);
+    if (it == collected_at.end()) {
+      cv::circle(image, at, r, cv::Scalar(160, 160, 160), cv::FILLED, cv::LINE_AA);
+      cv::drawMarker(image, at, cv::Scalar(0, 0, 220), cv::MARKER_TILTED_CROSS, 12, 2);
+    } else {
+      cv::circle(image, at, r, colormap_colour(it->second / end_s), cv::FILLED, cv::LINE_AA);
+      cv::circle(image, at, r, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
+    }
+  }
+  const Vec2 forward(std::cos(truth.robot_start.heading_rad),
+                     std::sin(truth.robot_start.heading_rad));
+  cv::arrowedLine(image, px(truth.robot_start.position),
+                  px(truth.robot_start.position + 1.2 * forward), cv::Scalar(20, 20, 20), 3,
+                  cv::LINE_AA, 0, 0.3);
+  draw_color_bar(image, {width - bar + 20, top + 20, 20, height - top - 80}, kColormap, 0.0, end_s,
+                 "collected (s)");
+  cv::rectangle(image, {0, 0, image.cols, top}, cv::Scalar::all(255), cv::FILLED);
+  draw_text(image, title, {10, 24}, 0.6);
+  draw_legend(image, {10, 32}, legend);
+  return image;
+}
+
+cv::Mat draw_latency_chart(const std::vector<std::uint64_t>& seqs,
+                           const std::vector<double>& latency_ms, const std::string& title) {
+  cv::Mat image(360, 900, CV_8UC3, cv::Scalar::all(255));
+  std::vector<double> xs(seqs.begin(), seqs.end());
+  const double y_max = nice_ceil(std::max(
+      10.0, latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end())));
+  const ChartAxes axes{
+      {70, 40, 800, 270}, 0.0, xs.empty() ? 1.0 : std::max(1.0, xs.back()), 0.0, y_max};
+  draw_axes(image, axes, "update (sequence number)", "ms", title);
+  draw_series(image, axes, xs, latency_ms, cv::Scalar(180, 90, 30), 1);
+  return image;
+}
+
+}  // namespace ballsight
