@@ -27,10 +27,10 @@ void run_eval_loop(const EvalLoopArgs& args) {
     }
   }
   const std::vector<eval::LoopRun> runs = eval::run_loop_eval(options, [](const eval::LoopRun& r) {
-    std::fprintf(stderr, "eval loop: %-18s seed %llu: %d of %d balls in %.1f s, %.1f m%s\n",
-                 r.system.c_str(), static_cast<unsigned long long>(r.seed), r.collected, r.balls,
-                 r.time_s, r.distance_m,
-                 r.never_overlapped ? "" : " (overlapped the net or fence!)");
+    std::fprintf(stderr, "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m%s\n",
+                 r.system.c_str(), static_cast<unsigned long long>(r.seed),
+                 r.clustered ? "clustered" : "uniform", r.collected, r.balls, r.time_s,
+                 r.distance_m, r.never_overlapped ? "" : " (overlapped the net or fence!)");
   });
   const nlohmann::json j = eval::loop_eval_json(runs);
   if (args.json) {
@@ -61,8 +61,11 @@ void add_eval_loop_command(CLI::App& eval) {
       "priority planner; ballsight-priority; ballsight): balls collected, simulated time to "
       "collect them all, distance driven");
   add_seed_option(*cmd, args->options.seed, "Seed of the first scene (scene k: seed + k)");
-  cmd->add_option("--scenes", args->options.scenes, "Scenes (ball counts spread over the range)")
+  cmd->add_option("--scenes", args->options.scenes,
+                  "Scenes (ball counts spread over the range; uniform and clustered in turn)")
       ->capture_default_str();
+  cmd->add_option("--record-dir", args->options.record_dir,
+                  "Write each run's record of the court here (<system>-<seed>.jsonl)");
   cmd->add_option("--min-balls", args->options.min_balls, "Balls in the first scene")
       ->capture_default_str();
   cmd->add_option("--max-balls", args->options.max_balls, "Balls in the last scene")

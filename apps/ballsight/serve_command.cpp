@@ -153,6 +153,9 @@ void add_serve_command(CLI::App& app) {
                   "Simulated court: frame sets per second of simulated time")
       ->capture_default_str();
   cmd->add_option("--balls", args->balls, "Simulated court: tennis balls on it (default 20-60)");
+  cmd->add_option("--cluster-share", args->service.cluster_share,
+                  "Simulated court: of the balls, the share in clusters of 2-4 touching balls")
+      ->capture_default_str();
   cmd->add_flag("--realtime", args->service.realtime,
                 "Simulated court: simulated time at wall time (default: as fast as it goes)");
   cmd->add_flag("--report-pipeline", args->service.report_pipeline,

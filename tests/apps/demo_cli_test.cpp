@@ -14,7 +14,8 @@ namespace fs = std::filesystem;
 TEST(DemoCli, WritesAReportThatShowsEveryImage) {
   const TempDir dir;
   const fs::path out = dir / "demo";
-  const CliResult r = run_cli({"demo", "--out", out.string(), "--omni-frames", "2"});
+  const CliResult r =
+      run_cli({"demo", "--out", out.string(), "--omni-frames", "2", "--loop-balls", "10"});
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   const std::string html = read_file(out / "report.html");
   int images = 0;
@@ -24,9 +25,9 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
     const std::string relative = fs::relative(entry.path(), out).string();
     EXPECT_NE(html.find("src=\"" + relative + "\""), std::string::npos) << relative;
   }
-  // Two omni frames, four court views, the court evaluation's four views and field map, and the
-  // collection route.
-  EXPECT_EQ(images, 2 + 4 + 5 + 1);
+  // Two omni frames, four court views, the court evaluation's four views and field map, the
+  // collection route, and the closed loop's map and latency chart for each of its four runs.
+  EXPECT_EQ(images, 2 + 4 + 5 + 1 + 4 * 2);
   const std::string markdown = read_file(out / "report.md");
   EXPECT_NE(markdown.find("calibration markers"), std::string::npos);
   // The omni run time: calibrated from the markers found, the ball placed and scored.
@@ -46,6 +47,25 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
   };
   EXPECT_LT(seconds("ballsight"), seconds("nearest"));
   EXPECT_LT(seconds("nearest"), seconds("priority"));
+
+  // The closed loop, service and robot as processes: ballsight collects all ten, with no update
+  // lost at the robot, and so it does through a camera failure and both processes restarted.
+  const std::size_t loop = markdown.find("## Court: the closed loop");
+  ASSERT_NE(loop, std::string::npos) << markdown;
+  const auto row = [&](const std::string& system) {
+    const std::size_t at = markdown.find("\n" + system + " ", loop);
+    EXPECT_NE(at, std::string::npos) << system;
+    return at == std::string::npos ? std::string()
+                                   : markdown.substr(at + 1, markdown.find('\n', at + 1) - at - 1);
+  };
+  EXPECT_NE(row("ballsight").find("10 / 10"), std::string::npos) << row("ballsight");
+  EXPECT_NE(row("ballsight-faults").find("10 / 10"), std::string::npos) << markdown;
+  EXPECT_EQ(row("report").find("10 / 10"), std::string::npos) << "the report's pipeline misses";
+  for (const char* event :
+       {"camera 1 failed", "service killed", "the court resumed", "robot killed"}) {
+    EXPECT_NE(markdown.find(event, loop), std::string::npos) << event;
+  }
+  EXPECT_NE(r.stdout_text.find("balls left"), std::string::npos) << "progress while it runs";
 }
 
 TEST(DemoCli, BadOptionsFailWithOneLine) {
@@ -54,7 +74,9 @@ TEST(DemoCli, BadOptionsFailWithOneLine) {
        {std::vector<std::string>{"demo"},
         {"demo", "--out", (dir / "x").string(), "--omni-frames", "0"},
         {"demo", "--out", (dir / "x").string(), "--seed", "abc"},
-        {"demo", "--out", (dir / "x").string(), "--seed", "-5"}}) {
+        {"demo", "--out", (dir / "x").string(), "--seed", "-5"},
+        {"demo", "--out", (dir / "x").string(), "--loop-balls", "0"},
+        {"demo", "--out", (dir / "x").string(), "--loop-max-time", "-1"}}) {
     const CliResult r = run_cli(args);
     EXPECT_EQ(r.exit_code, 2) << args.back();
     EXPECT_EQ(line_count(r.stderr_text), 1) << r.stderr_text;

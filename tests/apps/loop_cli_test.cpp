@@ -8,6 +8,7 @@
 
 #include "apps/run_cli.hpp"
 #include "ballsight/core/angle.hpp"
+#include "ballsight/eval/loop_truth.hpp"
 #include "ballsight/sim/robot_motion.hpp"
 #include "serve_process.hpp"
 #include "temp_dir.hpp"
@@ -30,20 +31,19 @@ TEST(LoopCli, TheRobotCollectsEveryBallDrivenByTheService) {
       << robot.stdout_text;
   service.kill(SIGTERM);  // the truth file is complete once it has stopped
 
-  std::ifstream in(truth);
+  const LoopTruth record = read_loop_truth(truth);
+  EXPECT_EQ(record.balls.size(), 10u);
   const sim::RobotFootprint footprint = sim::RobotFootprint::of(sim::RobotBox{}, 0.30, 0.70);
   const sim::TennisCourtSpec court;
-  int ticks = 0, balls_left = -1;
-  for (std::string row; std::getline(in, row);) {
-    const nlohmann::json t = nlohmann::json::parse(row);
-    const Pose2D pose{Vec2(t["robot"]["x_m"], t["robot"]["y_m"]),
-                      rad_from_deg(t["robot"]["heading_deg"].get<double>())};
-    ASSERT_FALSE(sim::footprint_blocked(footprint, pose, court)) << row;
-    balls_left = t["balls_left"];
-    ++ticks;
+  std::uint64_t seq = 0;
+  for (const TruthTick& t : record.ticks) {
+    ASSERT_FALSE(sim::footprint_blocked(footprint, t.world.robot, court)) << t.world.time_s;
+    EXPECT_GT(t.seq, seq) << "every tick published an update (reports of collected balls too)";
+    seq = t.seq;
   }
-  EXPECT_GT(ticks, 50);
-  EXPECT_EQ(balls_left, 0);
+  EXPECT_GT(record.ticks.size(), 50u);
+  ASSERT_FALSE(record.ticks.empty());
+  EXPECT_EQ(record.ticks.back().world.balls_left, 0);
 }
 
 TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {

@@ -76,7 +76,9 @@ TEST(PathFollower, APathBehindIsTurnedToOnTheSpot) {
 TEST(PathFollower, AShortLegStraightBehindIsBackedAlong) {
   // The mouth at a ball against the net, facing it; the route backs off to the lane's edge, then
   // goes along it: the robot reverses out before it turns (no room to turn at the net).
-  PathFollower follower;
+  FollowerOptions options;
+  options.back_off_zone = FieldRect{Vec2(-0.45, -6.9), Vec2(0.45, 6.9)};
+  PathFollower follower(options);
   const std::vector<Vec2> path{Vec2(0.06, 2), Vec2(0.45, 2), Vec2(0.45, 4), Vec2(3, 4)};
   follower.set_path(path);
   const FollowCommand back = follower.command({Vec2(0.36, 2), kPi});
@@ -87,9 +89,41 @@ TEST(PathFollower, AShortLegStraightBehindIsBackedAlong) {
   const std::vector<double> closest = drive(follower, {Vec2(0.36, 2), kPi}, 30.0, arrived, false);
   EXPECT_TRUE(arrived);
   for (std::size_t i = 0; i < closest.size(); ++i) EXPECT_LT(closest[i], 0.12) << "waypoint " << i;
-  // A long leg behind is still turned to on the spot: the mouth collects driving forwards.
+  // A long leg behind is still turned to on the spot: the mouth collects driving forwards; and
+  // a short one where there is room to turn is not reversed along.
   follower.set_path({Vec2(0.06, 2), Vec2(3, 2)});
   EXPECT_EQ(follower.command({Vec2(0.36, 2), kPi}).speed_mps, 0.0);
+  follower.set_path({Vec2(4.06, 2), Vec2(4.45, 2), Vec2(4.45, 4)});
+  EXPECT_GE(follower.command({Vec2(4.36, 2), kPi}).speed_mps, 0.0);
+}
+
+TEST(PathFollower, ATurnOnTheSpotKeepsItsDirection) {
+  // The carrot straight behind, the pose noisy and the route new at every update: the turn
+  // must not flip from side to side (the robot would stand there for ever).
+  PathFollower follower;
+  double sign = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    const double noise = (k % 2 ? 1.0 : -1.0) * 0.01;
+    follower.set_path({Vec2(0.3, noise), Vec2(-3, -noise)});
+    const FollowCommand c = follower.command({Vec2(0, 0), noise});
+    EXPECT_EQ(c.speed_mps, 0.0);
+    if (k == 0) sign = std::copysign(1.0, c.turn_rate_rps);
+    EXPECT_EQ(std::copysign(1.0, c.turn_rate_rps), sign) << "update " << k;
+  }
+}
+
+TEST(PathFollower, ABallBesideTheBodyIsReachedByMovingAwayFirst) {
+  // The next waypoint beside the robot, inside the circle the mouth turns on: turning on the
+  // spot would never bring the mouth over it; the robot creeps forward, then turns.
+  PathFollower follower;
+  follower.set_path({Vec2(0.3, 0), Vec2(0.05, 0.2), Vec2(-3, 0.2)});
+  const FollowCommand away = follower.command({Vec2(0, 0), 0.0});
+  EXPECT_GT(away.speed_mps, 0.0);
+  EXPECT_EQ(away.turn_rate_rps, 0.0);
+  bool arrived = false;
+  follower.set_path({Vec2(0.3, 0), Vec2(0.05, 0.2), Vec2(-3, 0.2)});
+  const std::vector<double> closest = drive(follower, {Vec2(0, 0), 0.0}, 30.0, arrived);
+  EXPECT_LT(closest[1], 0.12);
 }
 
 TEST(PathFollower, NoPathMeansStandStill) {

@@ -116,7 +116,7 @@ class DemoRun {
         start_robot();
         robot_restarted = true;
       }
-      if (t >= next_report_s && progress) {
+      if (t >= next_report_s && record_.balls_left() >= 0 && progress) {
         progress(plan_.name + ": simulated " + fixed(t, 1) + " s, " +
                  std::to_string(std::max(0, record_.balls_left())) + " balls left");
         next_report_s = t + 10.0;
@@ -136,8 +136,8 @@ class DemoRun {
     out.latency_ms = latency_ms_;
     out.gaps = gaps_;
     out.reconnects = reconnects_;
-    out.events = out.truth.events;
-    out.events.insert(out.events.end(), events_.begin(), events_.end());
+    out.events = events_;  // what the demo did first, then what the court recorded of it
+    out.events.insert(out.events.end(), out.truth.events.begin(), out.truth.events.end());
     std::stable_sort(out.events.begin(), out.events.end(),
                      [](const TruthEvent& a, const TruthEvent& b) { return a.time_s < b.time_s; });
     out.wall_s = std::chrono::duration<double>(Clock::now() - started).count();

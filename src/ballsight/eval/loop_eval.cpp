@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/file_io.hpp"
 #include "ballsight/eval/loop_truth.hpp"
 #include "ballsight/net/collector_robot.hpp"
 #include "ballsight/net/http_server.hpp"
@@ -20,10 +21,13 @@ const std::vector<LoopSystem>& loop_systems() {
   return kSystems;
 }
 
-LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double max_time_s) {
+LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
+                 const std::filesystem::path& record) {
   SimulatedServiceOptions options;
-  options.seed = seed;
-  options.balls = balls;
+  options.truth_out = record;
+  options.seed = scene.seed;
+  options.balls = scene.balls;
+  options.cluster_share = scene.clustered ? 0.75 : 0.0;
   options.report_pipeline = system.report_pipeline;
   options.planner.kind = system.planner;
   SimulatedCourtService service(options);
@@ -40,9 +44,13 @@ LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double
   const Pose2D start = service.robot_start();
   std::atomic<bool> stop{false};
   std::thread court([&] { service.run(hub, stop); });
-  std::thread robot([&] { run_collector(link, {}, stop); });
-  // Until the court is empty or out of time (simulated).
-  while (true) {
+  std::atomic<bool> robot_done{false};
+  std::thread robot([&] {
+    run_collector(link, {}, stop);
+    robot_done = true;
+  });
+  // Until the court is empty, out of time (simulated), or the robot sees no ball left.
+  while (!robot_done) {
     const nlohmann::json sim = service.health()["sim"];
     if (sim["balls_left"] == 0 || sim["time_s"].get<double>() >= max_time_s) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -55,11 +63,12 @@ LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double
 
   const Site& site = service.site();
   const LoopScore score =
-      score_loop(balls, start, service.history(),
+      score_loop(scene.balls, start, service.history(),
                  sim::RobotFootprint::of(sim::RobotBox{}, site.robot.collector_x_m,
                                          site.robot.collector_width_m));
-  return {system.name,      seed,      score.balls,           score.collected, score.time_s,
-          score.distance_m, score.all, score.never_overlapped};
+  return {system.name,      scene.seed,      scene.clustered,
+          score.balls,      score.collected, score.all ? score.time_s : max_time_s,
+          score.distance_m, score.all,       score.never_overlapped};
 }
 
 void LoopEvalOptions::validate() const {
@@ -88,8 +97,13 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options,
                                                 system.name) == options.systems.end()) {
         continue;
       }
-      runs.push_back(run_loop(system, options.seed + static_cast<std::uint64_t>(k), balls,
-                              options.max_time_s));
+      const LoopScene scene{options.seed + static_cast<std::uint64_t>(k), balls, k % 2 == 1};
+      const std::filesystem::path record =
+          options.record_dir.empty()
+              ? std::filesystem::path()
+              : options.record_dir / (system.name + "-" + std::to_string(scene.seed) + ".jsonl");
+      if (!record.empty()) ensure_directory(options.record_dir);
+      runs.push_back(run_loop(system, scene, options.max_time_s, record));
       if (progress) progress(runs.back());
     }
   }
@@ -114,6 +128,7 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
       collected += r->collected;
       distance += r->distance_m;
       rows.push_back({{"seed", r->seed},
+                      {"layout", r->clustered ? "clustered" : "uniform"},
                       {"balls", r->balls},
                       {"collected", r->collected},
                       {"all", r->all},

@@ -6,6 +6,7 @@
 // the collector driving over RobotLink, scored on the court's recorded truth.
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -24,26 +25,39 @@ struct LoopSystem {
 /// report, ballsight-priority, ballsight.
 const std::vector<LoopSystem>& loop_systems();
 
+/// The scenes' layouts, alternating: balls scattered, or three quarters of them in clusters of
+/// 2-4 touching balls (after practice); both on both sides of the net and some in the run-off.
+struct LoopScene {
+  std::uint64_t seed = 1;
+  int balls = 10;
+  bool clustered = false;
+};
+
 struct LoopRun {
   std::string system;
   std::uint64_t seed = 0;
+  bool clustered = false;
   int balls = 0;
   int collected = 0;
-  double time_s = 0.0;      // simulated: when the last ball was collected, or the limit
+  double time_s = 0.0;      // simulated: when the last ball was collected; the limit when not
+                            // all were (the robot gave up, seeing none, or ran out of time)
   double distance_m = 0.0;  // driven until then
   bool all = false;
   bool never_overlapped = true;  // the net and the fence (checked on every tick's true pose)
 };
 
 /// One scene, one system, until every ball is collected or `max_time_s` of simulated time.
-LoopRun run_loop(const LoopSystem& system, std::uint64_t seed, int balls, double max_time_s);
+/// `record`: where the court's record goes (eval/loop_truth.hpp), empty for nowhere.
+LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
+                 const std::filesystem::path& record = {});
 
 struct LoopEvalOptions {
   std::uint64_t seed = 1;
-  int scenes = 3;  // ball counts spread over [min_balls, max_balls]
-  int min_balls = 10, max_balls = 30;
-  double max_time_s = 150.0;         // simulated, per run
+  int scenes = 4;  // ball counts spread over [min_balls, max_balls], layouts alternating
+  int min_balls = 10, max_balls = 60;
+  double max_time_s = 400.0;         // simulated, per run
   std::vector<std::string> systems;  // empty: all three
+  std::filesystem::path record_dir;  // each run's record as <system>-<seed>.jsonl (empty: none)
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

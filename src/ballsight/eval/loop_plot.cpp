@@ -40,7 +40,11 @@ cv::Mat draw_loop_map(const LoopTruth& truth, const std::string& title, int rout
   draw_court_floor(image, px, sim::TennisCourtSpec{});
   cv::rectangle(image, px({-18, -9}), px({18, 9}), cv::Scalar(60, 60, 60), 2);
 
-  // The published route at evenly spaced moments of the run (the first with a route).
+  // The true path, and over it the published route at evenly spaced moments of the run.
+  std::vector<cv::Point> driven{px(truth.robot_start.position)};
+  for (const TruthTick& t : truth.ticks) driven.emplace_back(px(t.world.robot.position));
+  cv::polylines(image, driven, false, cv::Scalar(20, 20, 20), 2, cv::LINE_AA);
+
   std::vector<LegendEntry> legend{{"true path", cv::Scalar(20, 20, 20)}};
   std::vector<const TruthTick*> with_route;
   for (const TruthTick& t : truth.ticks) {
@@ -51,13 +55,9 @@ cv::Mat draw_loop_map(const LoopTruth& truth, const std::string& title, int rout
                                      static_cast<std::size_t>(route_snapshots)];
     std::vector<cv::Point> path;
     for (const Vec2& w : t.published.waypoints_m) path.emplace_back(px(w));
-    cv::polylines(image, path, false, route_colours[k], 1, cv::LINE_AA);
+    cv::polylines(image, path, false, route_colours[k], 2, cv::LINE_AA);
     legend.push_back({"route published at " + fixed(t.world.time_s, 1) + " s", route_colours[k]});
   }
-  std::vector<cv::Point> driven{px(truth.robot_start.position)};
-  for (const TruthTick& t : truth.ticks) driven.emplace_back(px(t.world.robot.position));
-  cv::polylines(image, driven, false, cv::Scalar(20, 20, 20), 2, cv::LINE_AA);
-
   // Balls by the time they were collected.
   std::map<int, double> collected_at;
   for (const TruthTick& t : truth.ticks) {

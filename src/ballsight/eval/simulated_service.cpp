@@ -35,6 +35,8 @@ void SimulatedServiceOptions::validate() const {
             "must be in [0, " + std::to_string(sim::CourtScenarioOptions::kMaxBalls) + "]");
   }
   planner.validate();
+  require(std::isfinite(cluster_share) && cluster_share >= 0.0 && cluster_share <= 1.0,
+          "--cluster-share", "must be in [0, 1]");
   require(!resume || !truth_out.empty(), "--resume", "needs --truth-out (the court to resume)");
   if (fail_camera) {
     require(fail_camera->camera >= 0 && fail_camera->camera < 4, "--sim-fail-camera",
@@ -84,6 +86,7 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   s.site = simulated_site(s.rig);
   sim::CourtScenarioOptions scenario;
   scenario.ball_count = options.balls;
+  scenario.cluster_share = options.cluster_share;
   sim::CourtScene scene =
       sim::make_court_scene(s.rig.court, scenario, sim::derive_seed(options.seed, 1));
   for (const sim::SceneSphere& b : scene.balls) {
@@ -116,6 +119,7 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
     s.world->resume(last.world.time_s, last.world.robot, gone);
     s.collected = static_cast<int>(gone.size());
     s.time_s = last.world.time_s;
+    s.camera_failed = options.fail_camera && s.time_s >= options.fail_camera->at_s;  // recorded
   }
   s.balls_left = s.world->balls_left();
   s.start = s.world->motion().pose;

@@ -33,6 +33,7 @@ struct CameraFailure {
 struct SimulatedServiceOptions {
   std::uint64_t seed = 1;
   std::optional<int> balls;         // tennis balls on the court; nullopt: the scenario's 20-60
+  double cluster_share = 0.25;      // of them, in clusters of 2-4 touching balls
   double vision_hz = 10.0;          // frame sets per second of simulated time
   bool realtime = false;            // simulated time at wall time (else as fast as possible)
   double robot_wait_s = 1.0;        // for a driving robot's command, at most (wall)

@@ -13,11 +13,15 @@
 
 #include "ballsight/net/robot_link.hpp"
 #include "ballsight/plan/path_follower.hpp"
+#include "ballsight/world/site.hpp"
 
 namespace ballsight {
 
+/// The follower for a site's robot and court: its mouth, speeds, and the net's lane to back off.
+FollowerOptions follower_for_site(const Site& site);
+
 struct CollectorOptions {
-  FollowerOptions follow;   // the site's defaults: mouth 0.30 m ahead, 1 m/s, 90 deg/s
+  FollowerOptions follow = follower_for_site(Site{});  // mouth 0.30 m ahead, 1 m/s, 90 deg/s
   int done_after = 10;      // updates in a row with no ball and no route: all collected
   double max_time_s = 0.0;  // wall time; 0: no limit
 

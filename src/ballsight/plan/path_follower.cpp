@@ -11,6 +11,9 @@ namespace {
 constexpr double kStraightRad = 0.35;  // 20 degrees: a turn smaller than this is no corner
 constexpr double kBackOffM = 0.6;      // a leg this short straight behind is reversed along
 constexpr double kBehindCos = 0.7071;  // "straight behind": within 45 degrees
+constexpr double kCreepMarginM =
+    0.10;                            // a waypoint this far beyond the mouth's circle is turned to
+constexpr double kCreepShare = 0.3;  // of full speed, creeping away from a waypoint too near
 
 }  // namespace
 
@@ -101,11 +104,21 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
   const Vec2 u = speed * towards / distance;
   // A short leg straight behind (backing off the net after a ball against it, where the body has
   // no room to turn): reversed along, the same linearisation steering the mouth.
-  const bool back_off = u.dot(h) < -kBehindCos * speed && corner - progress_ < kBackOffM;
+  const bool back_off = options_.back_off_zone && options_.back_off_zone->contains(mouth) &&
+                        u.dot(h) < -kBehindCos * speed && corner - progress_ < kBackOffM;
   if (u.dot(h) < 0.0 && !back_off) {  // the carrot is behind: turn on the spot towards it (the
-                                      // mouth collects only driving forwards)
-    return {0.0, std::copysign(options_.max_turn_rate_rps, u.dot(h_perp)), false};
+                                      // mouth collects only driving forwards), the way the turn
+                                      // began (a carrot straight behind must not flip it)
+    // A waypoint within the mouth's circle round the axle (a ball beside the body) is never
+    // reached by turning: creep forward first, away from it, then turn.
+    if ((at(corner) - pose.position).norm() < options_.mouth_ahead_m + kCreepMarginM) {
+      spin_ = 0.0;
+      return {kCreepShare * options_.max_speed_mps, 0.0, false};
+    }
+    if (spin_ == 0.0) spin_ = u.dot(h_perp) < 0.0 ? -1.0 : 1.0;
+    return {0.0, spin_ * options_.max_turn_rate_rps, false};
   }
+  spin_ = 0.0;
   double v = u.dot(h);
   double w = u.dot(h_perp) / options_.mouth_ahead_m;
   // Within the turn rate: scale the whole velocity, so that the mouth keeps its direction.

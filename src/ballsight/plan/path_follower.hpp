@@ -8,11 +8,17 @@
 // look-ahead along the path from the mouth's progress, but never past the next waypoint (a ball
 // is there: the mouth goes over it, not round the corner), and slows for the waypoint ahead and
 // for the end of the path; a carrot behind the robot is turned to on the spot, except at the end
-// of a short leg straight behind, which is reversed along (backing off the net).
+// of a short leg straight behind where there is no room to turn, which is reversed along
+// (backing off the net). A turn on the
+// spot keeps its direction until the carrot is ahead, through new routes and pose noise; a
+// waypoint behind and within the mouth's circle round the axle (a ball beside the body) is first
+// crept away from, since no turn brings the mouth over it.
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
+#include "ballsight/core/field_rect.hpp"
 #include "ballsight/core/geometry.hpp"
 
 namespace ballsight {
@@ -26,6 +32,9 @@ struct FollowerOptions {
   double slow_down_m = 0.6;                       // full speed until this close to the end
   double overshoot_m = 0.25;  // the path goes on this far past its last waypoint: the
                               // mouth must cross the last ball, not stop at it
+  /// Where the robot has no room to turn on the spot (the net's lane, planning_input): with the
+  /// mouth in it, a short leg straight behind is reversed along instead.
+  std::optional<FieldRect> back_off_zone;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -60,6 +69,7 @@ class PathFollower {
   std::vector<Vec2> path_;
   std::vector<double> cumulative_;  // path length up to each waypoint
   double progress_ = 0.0;
+  double spin_ = 0.0;  // the direction of a turn on the spot under way (+1 left, -1 right)
 };
 
 }  // namespace ballsight

@@ -102,6 +102,8 @@ void CourtScenarioOptions::validate() const {
         *ball_count >= 0 && *ball_count <= kMaxBalls, "balls",
         "must be in [0, " + std::to_string(kMaxBalls) + "], got " + std::to_string(*ball_count));
   }
+  require(std::isfinite(cluster_share) && cluster_share >= 0.0 && cluster_share <= 1.0,
+          "cluster_share", "must be in [0, 1]");
   ImageEffects effects;
   effects.noise_sigma = noise_sigma;
   if (brightness_gain) effects.brightness_gain = *brightness_gain;
@@ -158,8 +160,8 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
     placement.add(scene.balls.back());
   };
 
-  // Clusters of 2-4 touching balls, about a quarter of all balls.
-  const int clustered = count / 4;
+  // Clusters of 2-4 touching balls (a quarter of all balls by default).
+  const int clustered = static_cast<int>(count * options.cluster_share);
   while (id < clustered) {
     const int size = std::min(uniform_int(rng, 2, 4), clustered - id);
     const int first = static_cast<int>(scene.balls.size());

@@ -18,6 +18,7 @@ struct CourtScenarioOptions {
   double noise_sigma = 2.0;               // sensor noise, grey levels
   std::optional<double> brightness_gain;  // nullopt: uniform in [0.8, 1.2]
   bool shadow = true;                     // a shadow band across the court
+  double cluster_share = 0.25;            // of the balls, those in clusters of 2-4 touching
 
   static constexpr int kMaxBalls = 200;
   /// Throws InputError naming the first invalid field.
