@@ -14,6 +14,7 @@
 #include "ballsight/core/child_process.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/court_eval.hpp"
 #include "ballsight/eval/loop_demo.hpp"
 #include "ballsight/eval/loop_plot.hpp"
@@ -42,12 +43,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
 }
 
 bool is_png(const std::string& name) {

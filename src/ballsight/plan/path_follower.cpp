@@ -14,6 +14,7 @@ constexpr double kBehindCos = 0.7071;  // "straight behind": within 45 degrees
 constexpr double kCreepMarginM =
     0.10;                            // a waypoint this far beyond the mouth's circle is turned to
 constexpr double kCreepShare = 0.3;  // of full speed, creeping away from a waypoint too near
+constexpr double kCreepM = 0.25;     // and this far at most (the waypoint may move with it)
 
 }  // namespace
 
@@ -111,7 +112,9 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
                                       // began (a carrot straight behind must not flip it)
     // A waypoint within the mouth's circle round the axle (a ball beside the body) is never
     // reached by turning: creep forward first, away from it, then turn.
-    if ((at(corner) - pose.position).norm() < options_.mouth_ahead_m + kCreepMarginM) {
+    if ((at(corner) - pose.position).norm() < options_.mouth_ahead_m + kCreepMarginM &&
+        (!creep_from_ || (pose.position - *creep_from_).norm() < kCreepM)) {
+      if (!creep_from_) creep_from_ = pose.position;
       spin_ = 0.0;
       return {kCreepShare * options_.max_speed_mps, 0.0, false};
     }
@@ -119,6 +122,7 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
     return {0.0, spin_ * options_.max_turn_rate_rps, false};
   }
   spin_ = 0.0;
+  creep_from_.reset();
   double v = u.dot(h);
   double w = u.dot(h_perp) / options_.mouth_ahead_m;
   // Within the turn rate: scale the whole velocity, so that the mouth keeps its direction.

@@ -70,6 +70,7 @@ class PathFollower {
   std::vector<double> cumulative_;  // path length up to each waypoint
   double progress_ = 0.0;
   double spin_ = 0.0;  // the direction of a turn on the spot under way (+1 left, -1 right)
+  std::optional<Vec2> creep_from_;  // where creeping away from a waypoint too near began
 };
 
 }  // namespace ballsight
