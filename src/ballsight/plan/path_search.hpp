@@ -288,8 +288,11 @@ class PathSearch {
                                      {i - 2, i, after_a}}};
     if (!options_.fixed_end) {
       // An open path's end is a neighbour of every node, joined for free: a becomes the last
-      // node, by turning the rest of the path round or moving a's segment there.
-      if (i < hi()) {
+      // node, by turning the rest of the path round or moving a's segment there. The gain
+      // criterion from the other side: the new leg at the old last node must be shorter than
+      // the leg cut.
+      const int last = at(hi());
+      if (i < hi() && at(i - 1) >= 0 && model_.leg(at(i - 1), last) < before_a) {
         const double d = reversal_delta(i, hi());
         if (d < kGain) {
           reverse(i, hi());
@@ -298,8 +301,12 @@ class PathSearch {
       }
       for (Segment& seg : segments) {
         if (seg.s < lo() || seg.e >= hi()) continue;
-        seg.saved = removal_delta(seg.s, seg.e);
-        seg.priced = true;
+        const int other_end = seg.s == i ? at(seg.e) : at(seg.s);
+        if (model_.leg(last, other_end) >= seg.cut) continue;
+        if (!seg.priced) {
+          seg.saved = removal_delta(seg.s, seg.e);
+          seg.priced = true;
+        }
         if (seg.saved >= 0.0) continue;
         const double d = move_delta(seg.s, seg.e, hi(), seg.s == i && seg.e != i, seg.saved);
         if (d < kGain) {
