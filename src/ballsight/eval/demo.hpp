@@ -17,7 +17,7 @@ struct DemoOptions {
   int omni_frames = 4;             // frame 0 is the calibration frame with floor markers
   int court_scenes = 1;            // four camera views each
   int loop_balls = 20;             // the closed loop's scene
-  double loop_max_time_s = 150.0;  // simulated, per system
+  double loop_max_time_s = 90.0;   // simulated, per system
   bool loop_faults = true;         // the closed loop once more with faults
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -134,7 +134,7 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
       s.site,
       options.report_pipeline
           ? make_seed_pipeline(std::move(cameras), seed_options_for_site(s.site))
-          : make_ballsight_pipeline(std::move(cameras), ballsight_options_for_site(s.site)),
+          : make_ballsight_pipeline(std::move(cameras), service_pipeline_options(s.site)),
       options.planner);
 }
 

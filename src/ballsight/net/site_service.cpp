@@ -21,7 +21,7 @@ constexpr EnumNames<CaptureState, 5> kStateNames{{{CaptureState::starting, "star
 SiteCourtService::SiteCourtService(Site site, const SiteServiceOptions& options)
     : site_(std::move(site)), options_(options) {
   publisher_ = std::make_unique<UpdatePublisher>(
-      site_, make_ballsight_pipeline(site_field_cameras(site_), ballsight_options_for_site(site_)),
+      site_, make_ballsight_pipeline(site_field_cameras(site_), service_pipeline_options(site_)),
       options.planner);
   const auto log = [](const std::string& message) {
     std::cerr << "ballsight serve: " << message << "\n";

@@ -3,6 +3,7 @@
 #include <future>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/world/hidden_balls.hpp"
 
 namespace ballsight {
 
@@ -80,6 +81,7 @@ class BallsightPipeline final : public CourtPipeline {
       return detectors_[c].detect(frame);
     });
     result.world = build_world_model(cameras_, result.detections, options_.world);
+    if (options_.remember_hidden_balls) hidden_.apply(result.world);
     return result;
   }
   CourtMethod method() const override { return CourtMethod::ballsight; }
@@ -89,6 +91,7 @@ class BallsightPipeline final : public CourtPipeline {
   std::vector<FieldCamera> cameras_;
   BallsightPipelineOptions options_;
   std::vector<CourtDetector> detectors_;  // one per camera: each task uses its own
+  HiddenBallMemory hidden_;
 };
 
 }  // namespace

@@ -52,6 +52,9 @@ struct SeedPipelineOptions {
 struct BallsightPipelineOptions {
   CourtDetectorOptions detector;
   CourtWorldOptions world;
+  /// Frame sets in sequence (the service): balls hidden by the robot's body are remembered
+  /// (world/hidden_balls.hpp). Off for independent scenes (`eval court`).
+  bool remember_hidden_balls = false;
 };
 
 std::unique_ptr<CourtPipeline> make_seed_pipeline(std::vector<FieldCamera> cameras,

@@ -23,6 +23,12 @@ FieldRect site_area(const Site& site) {
   return {-half, half};
 }
 
+BallsightPipelineOptions service_pipeline_options(const Site& site) {
+  BallsightPipelineOptions options = ballsight_options_for_site(site);
+  options.remember_hidden_balls = true;
+  return options;
+}
+
 BallsightPipelineOptions ballsight_options_for_site(const Site& site) {
   BallsightPipelineOptions options;
   CourtObjectColours colours;

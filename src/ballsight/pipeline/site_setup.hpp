@@ -20,6 +20,8 @@ std::vector<FieldCamera> site_field_cameras(const Site& site);
 FieldRect site_area(const Site& site);
 
 BallsightPipelineOptions ballsight_options_for_site(const Site& site);
+/// The same for a service's sequence of frame sets: balls hidden by the robot remembered.
+BallsightPipelineOptions service_pipeline_options(const Site& site);
 SeedPipelineOptions seed_options_for_site(const Site& site);
 
 /// The camera's source: a file (one frame), a folder (its images in name order), a video device

@@ -15,6 +15,7 @@ constexpr double kCreepMarginM =
     0.10;                            // a waypoint this far beyond the mouth's circle is turned to
 constexpr double kCreepShare = 0.3;  // of full speed, creeping away from a waypoint too near
 constexpr double kCreepM = 0.25;     // and this far at most (the waypoint may move with it)
+constexpr int kCreepCommands = 12;   // or for this many commands
 
 }  // namespace
 
@@ -111,10 +112,18 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
                                       // mouth collects only driving forwards), the way the turn
                                       // began (a carrot straight behind must not flip it)
     // A waypoint within the mouth's circle round the axle (a ball beside the body) is never
-    // reached by turning: creep forward first, away from it, then turn.
-    if ((at(corner) - pose.position).norm() < options_.mouth_ahead_m + kCreepMarginM &&
-        (!creep_from_ || (pose.position - *creep_from_).norm() < kCreepM)) {
-      if (!creep_from_) creep_from_ = pose.position;
+    // reached by turning: creep forward first, away from it, then turn; not in the back-off
+    // zone (the net is ahead there), and for a few commands at most (something may be in the
+    // way, or the waypoint move with the robot).
+    const bool in_zone = options_.back_off_zone && options_.back_off_zone->contains(mouth);
+    if (!in_zone && (at(corner) - pose.position).norm() < options_.mouth_ahead_m + kCreepMarginM &&
+        (!creep_from_ ||
+         ((pose.position - *creep_from_).norm() < kCreepM && creep_commands_ < kCreepCommands))) {
+      if (!creep_from_) {
+        creep_from_ = pose.position;
+        creep_commands_ = 0;
+      }
+      ++creep_commands_;
       spin_ = 0.0;
       return {kCreepShare * options_.max_speed_mps, 0.0, false};
     }

@@ -71,6 +71,7 @@ class PathFollower {
   double progress_ = 0.0;
   double spin_ = 0.0;  // the direction of a turn on the spot under way (+1 left, -1 right)
   std::optional<Vec2> creep_from_;  // where creeping away from a waypoint too near began
+  int creep_commands_ = 0;          // and the commands since
 };
 
 }  // namespace ballsight

@@ -1,0 +1,46 @@
+#pragma once
+// Balls the robot's body hides. The corner cameras look down at a slant, so a ball right beside
+// the robot (near a fence, where its own corner camera looks past it) can be hidden from every
+// camera that would see it, from a few metres away; one frame set's world model then forgets it, the route with it, and
+// the robot stops a metre short of it. Over a sequence of frame sets (the service, not one-off
+// scenes), a ball the cameras stop seeing while the robot stands near it is remembered until it
+// is seen again, the robot has moved away, or it has been missed for a few seconds. A ball the
+// collector took is remembered too, until then: the robot's report of it keeps it out of routes.
+
+#include <vector>
+
+#include "ballsight/world/world_model.hpp"
+
+namespace ballsight {
+
+struct HiddenBallOptions {
+  /// Remembered while the robot's position is this close to it: the body (0.35 m high) hides
+  /// the floor up to 0.35 x distance / camera height beyond it, 2.5 m for a camera 5 m high
+  /// across the court.
+  double near_robot_m = 3.0;
+  int max_frame_sets = 50;    // and for this many frame sets at most (5 s at 10 Hz)
+  double match_m = 0.30;      // seen again: a ball this close to it in a later frame set
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+class HiddenBallMemory {
+ public:
+  explicit HiddenBallMemory(const HiddenBallOptions& options = {});
+
+  /// Adds the balls remembered as hidden to `world` (each its own collection site), and
+  /// remembers those of the previous frame set it no longer has near its robot.
+  void apply(WorldModel& world);
+
+ private:
+  struct Remembered {
+    FusedBall ball;
+    int frame_sets = 0;  // missed in this many in a row
+  };
+  HiddenBallOptions options_;
+  std::vector<FusedBall> last_seen_;
+  std::vector<Remembered> remembered_;
+};
+
+}  // namespace ballsight

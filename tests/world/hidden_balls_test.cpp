@@ -1,0 +1,64 @@
+#include "ballsight/world/hidden_balls.hpp"
+
+#include <gtest/gtest.h>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+namespace {
+
+WorldModel world_with(std::vector<Vec2> balls, std::optional<Vec2> robot) {
+  WorldModel w;
+  for (const Vec2& b : balls) w.balls.push_back({b, Eigen::Matrix2d::Zero(), {0}});
+  if (robot) {
+    RobotPoseEstimate estimate;
+    estimate.pose = {*robot, 0.0};
+    w.robot = estimate;
+  }
+  return w;
+}
+
+TEST(HiddenBallMemory, ABallThatVanishesBesideTheRobotIsKeptForAWhile) {
+  HiddenBallOptions options;
+  options.max_frame_sets = 3;
+  HiddenBallMemory memory(options);
+  WorldModel first = world_with({Vec2(5, 5), Vec2(0.6, 0)}, Vec2(0, 0));
+  memory.apply(first);
+  EXPECT_EQ(first.balls.size(), 2u);  // nothing remembered yet
+  // Both vanish: the one beside the robot is remembered (as its own site), the far one is not.
+  for (int k = 1; k <= 3; ++k) {
+    WorldModel w = world_with({}, Vec2(0, 0));
+    memory.apply(w);
+    ASSERT_EQ(w.balls.size(), 1u) << "frame set " << k;
+    EXPECT_EQ(w.balls[0].position_m, Vec2(0.6, 0));
+    ASSERT_EQ(w.sites.size(), 1u);
+    EXPECT_EQ(w.sites[0].balls, std::vector<int>{0});
+  }
+  WorldModel late = world_with({}, Vec2(0, 0));
+  memory.apply(late);
+  EXPECT_TRUE(late.balls.empty()) << "forgotten after max_frame_sets";
+}
+
+TEST(HiddenBallMemory, SeenAgainOrTheRobotGoneItIsNotAddedTwice) {
+  HiddenBallMemory memory;
+  WorldModel first = world_with({Vec2(0.6, 0)}, Vec2(0, 0));
+  memory.apply(first);
+  WorldModel hidden = world_with({}, Vec2(0, 0));
+  memory.apply(hidden);
+  ASSERT_EQ(hidden.balls.size(), 1u);
+  WorldModel again = world_with({Vec2(0.62, 0.01)}, Vec2(0, 0));
+  memory.apply(again);
+  EXPECT_EQ(again.balls.size(), 1u) << "seen again: once";
+  memory.apply(hidden = world_with({}, Vec2(0, 0)));
+  EXPECT_EQ(hidden.balls.size(), 1u);
+  WorldModel away = world_with({}, Vec2(6, 0));
+  memory.apply(away);
+  EXPECT_TRUE(away.balls.empty()) << "the robot moved away: not hidden by it";
+  WorldModel lost = world_with({}, std::nullopt);
+  memory.apply(lost);
+  EXPECT_TRUE(lost.balls.empty());
+  EXPECT_THROW(HiddenBallMemory(HiddenBallOptions{0.0, 1, 0.3}), InputError);
+}
+
+}  // namespace
+}  // namespace ballsight
