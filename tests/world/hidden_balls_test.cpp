@@ -31,6 +31,7 @@ TEST(HiddenBallMemory, ABallThatVanishesBesideTheRobotIsKeptForAWhile) {
     memory.apply(w);
     ASSERT_EQ(w.balls.size(), 1u) << "frame set " << k;
     EXPECT_EQ(w.balls[0].position_m, Vec2(0.6, 0));
+    EXPECT_TRUE(w.balls[0].cameras.empty()) << "no camera sees it";
     ASSERT_EQ(w.sites.size(), 1u);
     EXPECT_EQ(w.sites[0].balls, std::vector<int>{0});
   }

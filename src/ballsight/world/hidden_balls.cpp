@@ -39,6 +39,7 @@ void HiddenBallMemory::apply(WorldModel& world) {
     for (const FusedBall& b : last_seen_) {
       if (hidden(b.position_m) && !near_any(b.position_m, next, of_remembered)) {
         next.push_back({b, 1});
+        next.back().ball.cameras.clear();  // no camera sees it now
       }
     }
   }

@@ -29,7 +29,8 @@ class HiddenBallMemory {
  public:
   explicit HiddenBallMemory(const HiddenBallOptions& options = {});
 
-  /// Adds the balls remembered as hidden to `world` (each its own collection site), and
+  /// Adds the balls remembered as hidden to `world` (each its own collection site, with no
+  /// cameras: none sees it), and
   /// remembers those of the previous frame set it no longer has near its robot.
   void apply(WorldModel& world);
 
