@@ -10,6 +10,7 @@
 
 #include "apps/run_cli.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/eval/loop_truth.hpp"
 #include "simulated_site.hpp"
 #include "temp_dir.hpp"
 
@@ -210,6 +211,18 @@ TEST(ServeCli, BadOptionsFailWithOneLine) {
   expect_one_line_error(run_cli({"serve", "--sim", "--listen", "127.0.0.1"}), "--listen");
   expect_one_line_error(run_cli({"serve", "--sim", "--listen", "nowhere:80"}), "--listen");
   expect_one_line_error(run_cli({"serve", "--sim", "--planner", "exact"}), "--planner");
+  expect_one_line_error(run_cli({"serve", "--sim", "--resume"}), "--resume");
+  for (const char* bad : {"7@3", "1", "1@x", "1.5@2", "1@-2"}) {
+    expect_one_line_error(run_cli({"serve", "--sim", "--sim-fail-camera", bad}),
+                          "--sim-fail-camera");
+  }
+  expect_one_line_error(run_cli({"serve", "--sim", "--cluster-share", "2"}), "--cluster-share");
+  // A record of another scene is not resumed.
+  const TempDir temp;
+  const std::string record = (temp / "truth.jsonl").string();
+  write_file_atomic(record, scene_record(9, {}, Pose2D{}).dump() + "\n");
+  expect_one_line_error(
+      run_cli({"serve", "--sim", "--seed", "1", "--truth-out", record, "--resume"}), "seed 9");
 }
 
 }  // namespace
