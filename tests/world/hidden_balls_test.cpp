@@ -22,7 +22,7 @@ TEST(HiddenBallMemory, ABallThatVanishesBesideTheRobotIsKeptForAWhile) {
   HiddenBallOptions options;
   options.max_frame_sets = 3;
   HiddenBallMemory memory(options);
-  WorldModel first = world_with({Vec2(5, 5), Vec2(0.6, 0)}, Vec2(0, 0));
+  WorldModel first = world_with({Vec2(5, 5), Vec2(0, 0.6)}, Vec2(0, 0));
   memory.apply(first);
   EXPECT_EQ(first.balls.size(), 2u);  // nothing remembered yet
   // Both vanish: the one beside the robot is remembered (as its own site), the far one is not.
@@ -30,7 +30,7 @@ TEST(HiddenBallMemory, ABallThatVanishesBesideTheRobotIsKeptForAWhile) {
     WorldModel w = world_with({}, Vec2(0, 0));
     memory.apply(w);
     ASSERT_EQ(w.balls.size(), 1u) << "frame set " << k;
-    EXPECT_EQ(w.balls[0].position_m, Vec2(0.6, 0));
+    EXPECT_EQ(w.balls[0].position_m, Vec2(0, 0.6));
     EXPECT_TRUE(w.balls[0].cameras.empty()) << "no camera sees it";
     ASSERT_EQ(w.sites.size(), 1u);
     EXPECT_EQ(w.sites[0].balls, std::vector<int>{0});
@@ -42,12 +42,12 @@ TEST(HiddenBallMemory, ABallThatVanishesBesideTheRobotIsKeptForAWhile) {
 
 TEST(HiddenBallMemory, SeenAgainOrTheRobotGoneItIsNotAddedTwice) {
   HiddenBallMemory memory;
-  WorldModel first = world_with({Vec2(0.6, 0)}, Vec2(0, 0));
+  WorldModel first = world_with({Vec2(0, 0.6)}, Vec2(0, 0));
   memory.apply(first);
   WorldModel hidden = world_with({}, Vec2(0, 0));
   memory.apply(hidden);
   ASSERT_EQ(hidden.balls.size(), 1u);
-  WorldModel again = world_with({Vec2(0.62, 0.01)}, Vec2(0, 0));
+  WorldModel again = world_with({Vec2(0.01, 0.62)}, Vec2(0, 0));
   memory.apply(again);
   EXPECT_EQ(again.balls.size(), 1u) << "seen again: once";
   memory.apply(hidden = world_with({}, Vec2(0, 0)));
@@ -58,7 +58,19 @@ TEST(HiddenBallMemory, SeenAgainOrTheRobotGoneItIsNotAddedTwice) {
   WorldModel lost = world_with({}, std::nullopt);
   memory.apply(lost);
   EXPECT_TRUE(lost.balls.empty());
-  EXPECT_THROW(HiddenBallMemory(HiddenBallOptions{0.0, 1, 0.3}), InputError);
+  HiddenBallOptions bad;
+  bad.near_robot_m = 0.0;
+  EXPECT_THROW(HiddenBallMemory{bad}, InputError);
+}
+
+TEST(HiddenBallMemory, ABallThatVanishesAtTheMouthWasTaken) {
+  HiddenBallMemory memory;
+  WorldModel first = world_with({Vec2(0.55, 0.2), Vec2(-0.6, 0)}, Vec2(0, 0));  // heading +x
+  memory.apply(first);
+  WorldModel next = world_with({}, Vec2(0, 0));
+  memory.apply(next);
+  ASSERT_EQ(next.balls.size(), 1u) << "the one at the mouth was collected";
+  EXPECT_EQ(next.balls[0].position_m, Vec2(-0.6, 0));
 }
 
 }  // namespace

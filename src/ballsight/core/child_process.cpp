@@ -63,7 +63,8 @@ std::optional<std::string> ChildProcess::wait_for_line(const std::string& text,
                                                        std::chrono::milliseconds timeout) {
   const auto until = std::chrono::steady_clock::now() + timeout;
   while (true) {
-    std::istringstream lines(log_text());
+    const std::string written = log_text();
+    std::istringstream lines(written.substr(0, written.rfind('\n') + 1));  // whole lines only
     for (std::string line; std::getline(lines, line);) {
       if (line.find(text) != std::string::npos) return line;
     }
@@ -75,7 +76,15 @@ std::optional<std::string> ChildProcess::wait_for_line(const std::string& text,
 std::optional<int> ChildProcess::exit_status() {
   if (status_ || pid_ <= 0) return status_;
   int status = 0;
-  if (::waitpid(pid_, &status, WNOHANG) != pid_) return std::nullopt;
+  pid_t reaped = 0;
+  do {
+    reaped = ::waitpid(pid_, &status, WNOHANG);
+  } while (reaped < 0 && errno == EINTR);
+  if (reaped < 0) {  // not our child any more (reaped elsewhere): it has ended, status unknown
+    status_ = 255;
+    return status_;
+  }
+  if (reaped != pid_) return std::nullopt;
   status_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return status_;
 }

@@ -14,11 +14,11 @@ namespace ballsight {
 
 struct DemoOptions {
   std::uint64_t seed = 1;
-  int omni_frames = 4;             // frame 0 is the calibration frame with floor markers
-  int court_scenes = 1;            // four camera views each
-  int loop_balls = 20;             // the closed loop's scene
-  double loop_max_time_s = 90.0;   // simulated, per system
-  bool loop_faults = true;         // the closed loop once more with faults
+  int omni_frames = 4;            // frame 0 is the calibration frame with floor markers
+  int court_scenes = 1;           // four camera views each
+  int loop_balls = 20;            // the closed loop's scene
+  double loop_max_time_s = 90.0;  // simulated, per system
+  bool loop_faults = true;        // the closed loop once more with faults
   /// Throws InputError naming the first invalid field.
   void validate() const;
 };

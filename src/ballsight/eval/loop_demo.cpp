@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -38,6 +39,9 @@ constexpr double kServiceRestartAtS = 16.0;
 constexpr double kRobotRestartAtS = 24.0;
 /// Wall seconds without a new tick before a run is given up (a process hung or died).
 constexpr double kStallS = 30.0;
+/// Wall seconds after which the service and the robot stop by themselves, should the demo that
+/// started them be killed before it stops them.
+constexpr int kProcessLimitS = 900;
 
 /// Follows the court's record as the service writes it: the last complete tick.
 class RecordFollower {
@@ -97,7 +101,16 @@ class DemoRun {
       if (record_.poll()) last_tick = Clock::now();
       const double t = record_.time_s();
       if (record_.balls_left() == 0 || t >= options_.max_time_s) break;
-      if (robot_->exit_status()) break;  // it saw no ball for a while: done as far as it knows
+      if (const std::optional<int> status = robot_->exit_status()) {
+        require(
+            *status == 0, robot_->log().string(),
+            "the robot ended with status " + std::to_string(*status) + ": " + robot_->log_text());
+        break;  // it saw no ball for a while: done as far as it knows
+      }
+      if (const std::optional<int> status = service_->exit_status()) {
+        throw InputError(service_->log().string() + ": the service ended with status " +
+                         std::to_string(*status) + ": " + service_->log_text());
+      }
       require(std::chrono::duration<double>(Clock::now() - last_tick).count() < kStallS, plan_.name,
               "no tick for " + fixed(kStallS, 0) + " s; see " + dir_.string());
       if (plan_.faults && !camera_noted && t >= kCameraFailsAtS) camera_noted = true;
@@ -106,6 +119,7 @@ class DemoRun {
         service_->wait(5s);
         events_.push_back({t, "service killed (SIGKILL) and started again with --resume"});
         start_service(true);
+        last_tick = Clock::now();
         service_restarted = true;
       }
       if (plan_.faults && !robot_restarted && t >= kRobotRestartAtS) {
@@ -114,6 +128,7 @@ class DemoRun {
         collect_robot();
         events_.push_back({t, "robot killed (SIGKILL) and started again"});
         start_robot();
+        last_tick = Clock::now();
         robot_restarted = true;
       }
       if (t >= next_report_s && record_.balls_left() >= 0 && progress) {
@@ -158,7 +173,8 @@ class DemoRun {
                                   "--listen",     "127.0.0.1:" + std::to_string(port_),
                                   "--token-file", (dir_ / "token").string(),
                                   "--planner",    std::string(planner_name(plan_.system.planner)),
-                                  "--truth-out",  (dir_ / "truth.jsonl").string()};
+                                  "--truth-out",  (dir_ / "truth.jsonl").string(),
+                                  "--duration",   std::to_string(kProcessLimitS)};
     if (plan_.system.report_pipeline) args.push_back("--report-pipeline");
     if (plan_.faults) {
       args.insert(args.end(), {"--sim-fail-camera",
@@ -171,7 +187,8 @@ class DemoRun {
     const std::optional<std::string> line = service_->wait_for_line("http://127.0.0.1:", 60s);
     require(line.has_value(), log.string(), "the service did not start: " + service_->log_text());
     const std::size_t at = line->find("127.0.0.1:") + 10;
-    port_ = std::stoi(line->substr(at));
+    port_ = static_cast<int>(std::strtol(line->c_str() + at, nullptr, 10));
+    require(port_ > 0, log.string(), "no port in '" + *line + "'");
   }
 
   void start_robot() {
@@ -181,7 +198,8 @@ class DemoRun {
         options_.program,
         std::vector<std::string>{"robot", "--server", "http://127.0.0.1:" + std::to_string(port_),
                                  "--token-file", (dir_ / "token").string(), "--done-after", "30",
-                                 "--summary", summary.string()},
+                                 "--max-time", std::to_string(kProcessLimitS), "--summary",
+                                 summary.string()},
         dir_ / ("robot-" + std::to_string(robots_) + ".log"));
   }
 

@@ -42,6 +42,7 @@ TruthTick tick_of(const json& j) {
   const json& p = j.at("published");
   if (!p.at("robot").is_null()) t.published.robot = pose_of(p.at("robot"));
   t.published.balls_seen = p.at("balls_seen").get<int>();
+  t.removed_by_hand = j.at("removed_by_hand").get<std::vector<int>>();
   for (const json& w : p.at("waypoints_m")) {
     t.published.waypoints_m.emplace_back(w.at(0).get<double>(), w.at(1).get<double>());
   }
@@ -72,7 +73,8 @@ json tick_record(const TruthTick& t) {
           {"published",
            {{"robot", t.published.robot ? pose_json(*t.published.robot) : json(nullptr)},
             {"balls_seen", t.published.balls_seen},
-            {"waypoints_m", points_json(t.published.waypoints_m)}}}};
+            {"waypoints_m", points_json(t.published.waypoints_m)}}},
+          {"removed_by_hand", t.removed_by_hand}};
 }
 
 json event_record(const TruthEvent& e) {
@@ -92,7 +94,7 @@ LoopTruth read_loop_truth(const std::filesystem::path& file) {
     try {
       j = json::parse(line);
     } catch (const json::exception& e) {
-      if (in.peek() == EOF) break;  // the last line, cut short by a kill
+      if (in.eof()) break;  // a last line with no newline: cut short by a kill
       throw InputError(where + ": not JSON: " + e.what());
     }
     try {

@@ -5,8 +5,9 @@
 // "time_s", "seq" (the update published from the tick's frames, 0: none), "robot" (true pose
 // after the tick), "command": {"speed_mps", "turn_rate_dps"}, "collected": [ball ids],
 // "balls_left", "blocked", "published": {"robot" (as the cameras saw it, or null), "balls_seen",
-// "waypoints_m"}}. And events as they happen: {"kind": "event", "time_s", "what"} (the service
-// started or resumed, a camera failed). A restarted service resumes the court from this record.
+// "waypoints_m"}, "removed_by_hand": [ball ids]}. And events as they happen: {"kind": "event",
+// "time_s", "what"} (the service started or resumed, a camera failed). A restarted service resumes
+// the court from this record.
 
 #include <cstdint>
 #include <filesystem>
@@ -37,6 +38,7 @@ struct TruthTick {
   std::uint64_t seq = 0;
   sim::DriveCommand command;
   PublishedUpdate published;
+  std::vector<int> removed_by_hand;  // reported collected while no robot drove, taken off
 };
 
 struct TruthEvent {

@@ -66,8 +66,8 @@ struct SimulatedCourtService::Impl {
   int collected = 0, blocked_ticks = 0, balls_left = 0;
   double time_s = 0.0;
   Pose2D robot;
-  bool camera_failed = false;
-  Pose2D start;  // the robot when this service began
+  std::atomic<bool> camera_failed{false};  // health() reads it on the server's thread
+  Pose2D start;                            // the robot when this service began
   // The court's record: the scene as it began (written first), or the run this one resumes.
   std::optional<LoopTruth> resumed;
   std::vector<SceneBall> scene_balls;
@@ -100,6 +100,9 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
     require(s.resumed->seed == options.seed, options.truth_out.string(),
             "records seed " + std::to_string(s.resumed->seed) + ", not --seed " +
                 std::to_string(options.seed));
+    require(s.resumed->balls.size() == s.scene_balls.size(), options.truth_out.string(),
+            "records " + std::to_string(s.resumed->balls.size()) + " balls, not the " +
+                std::to_string(s.scene_balls.size()) + " of this scene (--balls)");
   }
   sim::DriveLimits limits;
   limits.max_speed_mps = s.site.robot.max_speed_mps;
@@ -114,6 +117,7 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
     std::vector<int> gone;
     for (const TruthTick& t : s.resumed->ticks) {
       gone.insert(gone.end(), t.world.collected.begin(), t.world.collected.end());
+      gone.insert(gone.end(), t.removed_by_hand.begin(), t.removed_by_hand.end());
     }
     const TruthTick& last = s.resumed->ticks.back();
     s.world->resume(last.world.time_s, last.world.robot, gone);
@@ -174,7 +178,8 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
   if (!s.resumed) record(scene_record(s.options.seed, s.scene_balls, s.world->motion().pose));
   record(event_record(
       {s.world->time_s(), s.resumed ? "service restarted: the court resumed" : "service started"}));
-  std::uint64_t tick = 0;
+  // A resumed court goes on counting its ticks (fresh sensor noise, not the first run's again).
+  std::uint64_t tick = s.resumed ? s.resumed->ticks.size() : 0;
   while (!stop) {
     const auto started = Clock::now();
     bool driving = false;
@@ -182,8 +187,9 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       const std::lock_guard lock(s.mutex);
       driving = s.driving(started);
     }
+    std::vector<int> removed;
     if (!driving) {  // no robot drives: balls reported collected are taken off by hand
-      s.world->remove_balls_if([&](const sim::SceneSphere& b) {
+      removed = s.world->remove_balls_if([&](const sim::SceneSphere& b) {
         return hub.was_collected(b.center_in_field.head<2>());
       });
     }
@@ -230,7 +236,7 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       s.time_s = t.time_s;
       s.robot = t.robot;
     }
-    TruthTick line{t, seq, command, {}};
+    TruthTick line{t, seq, command, {}, std::move(removed)};
     if (const std::optional<NavigationUpdate> u = seq > 0 ? hub.first_after(seq - 1) : std::nullopt;
         u && u->seq == seq) {
       if (u->world.robot) line.published.robot = u->world.robot->pose;

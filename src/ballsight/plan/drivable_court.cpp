@@ -98,6 +98,7 @@ DrivablePath canonical_path(const DrivableCourt& court, const Vec2& a, const Vec
     corners[static_cast<std::size_t>(count++)] = node[static_cast<std::size_t>(v)];
   }
   const auto add = [&best](const Vec2& p) {
+    assert(best.via_count < static_cast<int>(best.via.size()));  // two exits, two corners
     best.via[static_cast<std::size_t>(best.via_count++)] = p;
   };
   if (a_exit != a) add(a_exit);

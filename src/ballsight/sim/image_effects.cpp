@@ -39,6 +39,7 @@ std::uint64_t splitmix64(std::uint64_t& state) {
 }
 
 void add_quantile_noise(cv::Mat& bgr, double sigma, std::uint64_t seed) {
+  require(bgr.depth() == CV_8U, "image effects", "quantile noise needs an 8-bit image");
   const std::array<float, kQuantiles>& z = normal_quantiles();
   const auto s = static_cast<float>(sigma);
   std::uint64_t state = seed;

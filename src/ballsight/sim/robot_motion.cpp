@@ -147,7 +147,7 @@ std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Po
     const Vec2 a = local(before, p), b = local(after, p);
     const double grab = footprint.collector_x_m + ball.radius_m;  // the mouth touches the ball
     const bool crossed = a.x() > grab && b.x() <= grab;
-    const bool inside = b.x() <= grab && b.x() > -footprint.back_m &&
+    const bool inside = b.x() <= grab && b.x() <= a.x() && b.x() > -footprint.back_m &&
                         std::abs(b.y()) <= half;  // e.g. turned onto it on the spot
     const bool taken = (crossed && std::abs(a.y()) <= half + 0.05 && std::abs(b.y()) <= half) ||
                        (inside && a.x() > footprint.collector_x_m - 0.05);

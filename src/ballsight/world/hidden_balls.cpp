@@ -11,6 +11,8 @@ void HiddenBallOptions::validate() const {
   require(std::isfinite(near_robot_m) && near_robot_m > 0.0, "near_robot_m", "must be positive");
   require(max_frame_sets >= 1, "max_frame_sets", "must be at least 1");
   require(std::isfinite(match_m) && match_m > 0.0, "match_m", "must be positive");
+  require(std::isfinite(mouth_ahead_m) && std::isfinite(taken_within_m) && taken_within_m >= 0.0,
+          "taken_within_m", "must be a non-negative number");
 }
 
 HiddenBallMemory::HiddenBallMemory(const HiddenBallOptions& options) : options_(options) {
@@ -27,7 +29,10 @@ void HiddenBallMemory::apply(WorldModel& world) {
   const auto of_remembered = [](const Remembered& r) { return r.ball.position_m; };
   std::vector<Remembered> next;
   if (world.robot) {
-    const Vec2& robot = world.robot->pose.position;
+    const Pose2D& pose = world.robot->pose;
+    const Vec2& robot = pose.position;
+    const Vec2 mouth = robot + options_.mouth_ahead_m *
+                                   Vec2(std::cos(pose.heading_rad), std::sin(pose.heading_rad));
     const auto hidden = [&](const Vec2& p) {
       return (p - robot).norm() < options_.near_robot_m && !near_any(p, world.balls, of_ball);
     };
@@ -37,7 +42,8 @@ void HiddenBallMemory::apply(WorldModel& world) {
       }
     }
     for (const FusedBall& b : last_seen_) {
-      if (hidden(b.position_m) && !near_any(b.position_m, next, of_remembered)) {
+      if (hidden(b.position_m) && (b.position_m - mouth).norm() > options_.taken_within_m &&
+          !near_any(b.position_m, next, of_remembered)) {
         next.push_back({b, 1});
         next.back().ball.cameras.clear();  // no camera sees it now
       }
