@@ -1,17 +1,19 @@
 #pragma once
-// `ballsight serve` in a child process for the CLI tests: its port from the line it prints, its
-// stdout read through a pipe, and a kill at will (SIGTERM when the test is done with it).
+// `ballsight serve` in a child process for the CLI tests (core/child_process.hpp): its port from
+// the line it prints, its output in a log file of its own, and a kill at will (SIGTERM when the
+// test is done with it).
 
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
-extern char** environ;
+#include "ballsight/core/child_process.hpp"
 
 namespace ballsight::test {
 
@@ -19,43 +21,42 @@ namespace ballsight::test {
 class ServeProcess {
  public:
   /// `args` follow `ballsight serve`; they must include a --listen on 127.0.0.1.
-  explicit ServeProcess(std::vector<std::string> args) {
-    int fds[2];
-    if (::pipe(fds) != 0) return;
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
-    posix_spawn_file_actions_addclose(&actions, fds[0]);
-    args.insert(args.begin(), {BALLSIGHT_CLI, "serve"});
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    if (posix_spawn(&pid_, BALLSIGHT_CLI, &actions, nullptr, argv.data(), environ) != 0) pid_ = 0;
-    posix_spawn_file_actions_destroy(&actions);
-    ::close(fds[1]);
-    out_ = ::fdopen(fds[0], "r");
-    char line[256] = {};
-    if (pid_ > 0 && std::fgets(line, sizeof line, out_)) {
-      const std::string first(line);
-      const std::size_t at = first.find("127.0.0.1:");
-      if (at != std::string::npos)
-        port_ = static_cast<unsigned short>(std::stoi(first.substr(at + 10)));
+  explicit ServeProcess(std::vector<std::string> args)
+      : log_(fresh_log()), child_(BALLSIGHT_CLI, with_serve(std::move(args)), log_) {
+    if (const auto line = child_.wait_for_line("127.0.0.1:", std::chrono::seconds(60))) {
+      port_ = static_cast<unsigned short>(
+          std::strtol(line->c_str() + line->find("127.0.0.1:") + 10, nullptr, 10));
     }
   }
-  ~ServeProcess() { kill(SIGTERM); }
+  ~ServeProcess() {
+    kill(SIGTERM);
+    std::error_code ignored;
+    std::filesystem::remove(log_, ignored);
+  }
+  ServeProcess(const ServeProcess&) = delete;
+  ServeProcess& operator=(const ServeProcess&) = delete;
 
   unsigned short port() const { return port_; }
+  /// Sends `signal` and waits for the service to end.
   void kill(int signal) {
-    if (pid_ <= 0) return;
-    ::kill(pid_, signal);
-    ::waitpid(pid_, nullptr, 0);
-    pid_ = 0;
-    std::fclose(out_);
+    child_.signal(signal);
+    child_.wait(std::chrono::seconds(30));
   }
 
  private:
-  pid_t pid_ = 0;
-  FILE* out_ = nullptr;
+  static std::vector<std::string> with_serve(std::vector<std::string> args) {
+    args.insert(args.begin(), "serve");
+    return args;
+  }
+  static std::filesystem::path fresh_log() {
+    static std::atomic<int> count{0};
+    return std::filesystem::temp_directory_path() /
+           ("ballsight_serve_" + std::to_string(::getpid()) + "_" + std::to_string(++count) +
+            ".log");
+  }
+
+  std::filesystem::path log_;
+  ChildProcess child_;
   unsigned short port_ = 0;
 };
 

@@ -94,9 +94,18 @@ class DemoRun {
     LoopDemoRun out;
     out.name = plan_.name;
     out.dir = dir_;
-    bool camera_noted = false, service_restarted = false, robot_restarted = false;
+    bool service_restarted = false, robot_restarted = false;
     double next_report_s = 0.0;
     auto last_tick = Clock::now();
+    // A fault: `process` killed, noted at the record's time, started again by `start`.
+    const auto kill_and_restart = [&](ChildProcess& process, const std::string& what,
+                                      const auto& start) {
+      process.signal(SIGKILL);
+      process.wait(5s);
+      events_.push_back({record_.time_s(), what});
+      start();
+      last_tick = Clock::now();
+    };
     while (true) {
       if (record_.poll()) last_tick = Clock::now();
       const double t = record_.time_s();
@@ -113,22 +122,16 @@ class DemoRun {
       }
       require(std::chrono::duration<double>(Clock::now() - last_tick).count() < kStallS, plan_.name,
               "no tick for " + fixed(kStallS, 0) + " s; see " + dir_.string());
-      if (plan_.faults && !camera_noted && t >= kCameraFailsAtS) camera_noted = true;
       if (plan_.faults && !service_restarted && t >= kServiceRestartAtS) {
-        service_->signal(SIGKILL);
-        service_->wait(5s);
-        events_.push_back({t, "service killed (SIGKILL) and started again with --resume"});
-        start_service(true);
-        last_tick = Clock::now();
+        kill_and_restart(*service_, "service killed (SIGKILL) and started again with --resume",
+                         [&] { start_service(true); });
         service_restarted = true;
       }
       if (plan_.faults && !robot_restarted && t >= kRobotRestartAtS) {
-        robot_->signal(SIGKILL);
-        robot_->wait(5s);
-        collect_robot();
-        events_.push_back({t, "robot killed (SIGKILL) and started again"});
-        start_robot();
-        last_tick = Clock::now();
+        kill_and_restart(*robot_, "robot killed (SIGKILL) and started again", [&] {
+          collect_robot();
+          start_robot();
+        });
         robot_restarted = true;
       }
       if (t >= next_report_s && record_.balls_left() >= 0 && progress) {
@@ -142,11 +145,8 @@ class DemoRun {
     collect_robot();
     service_->stop();
     out.truth = read_loop_truth(dir_ / "truth.jsonl");
-    const Site site;  // the simulated court's robot: the site file's defaults
-    out.score = score_loop(static_cast<int>(out.truth.balls.size()), out.truth.robot_start,
-                           world_ticks(out.truth),
-                           sim::RobotFootprint::of(sim::RobotBox{}, site.robot.collector_x_m,
-                                                   site.robot.collector_width_m));
+    // The simulated court's robot: the site file's defaults.
+    out.score = score_loop(out.truth, collector_footprint(SiteRobot{}));
     out.seqs = seqs_;
     out.latency_ms = latency_ms_;
     out.gaps = gaps_;
@@ -160,12 +160,6 @@ class DemoRun {
   }
 
  private:
-  static std::vector<sim::WorldTick> world_ticks(const LoopTruth& truth) {
-    std::vector<sim::WorldTick> ticks;
-    for (const TruthTick& t : truth.ticks) ticks.push_back(t.world);
-    return ticks;
-  }
-
   void start_service(bool resume) {
     std::vector<std::string> args{"serve",        "--sim",
                                   "--seed",       std::to_string(options_.seed),

@@ -61,11 +61,8 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   link.stop();
   server.stop();
 
-  const Site& site = service.site();
   const LoopScore score =
-      score_loop(scene.balls, start, service.history(),
-                 sim::RobotFootprint::of(sim::RobotBox{}, site.robot.collector_x_m,
-                                         site.robot.collector_width_m));
+      score_loop(scene.balls, start, service.history(), collector_footprint(service.site().robot));
   return {system.name,      scene.seed,      scene.clustered,
           score.balls,      score.collected, score.all ? score.time_s : max_time_s,
           score.distance_m, score.all,       score.never_overlapped};

@@ -124,6 +124,16 @@ LoopTruth read_loop_truth(const std::filesystem::path& file) {
   return truth;
 }
 
+LoopScore score_loop(const LoopTruth& truth, const sim::RobotFootprint& footprint) {
+  std::vector<sim::WorldTick> ticks;
+  for (const TruthTick& t : truth.ticks) ticks.push_back(t.world);
+  return score_loop(static_cast<int>(truth.balls.size()), truth.robot_start, ticks, footprint);
+}
+
+sim::RobotFootprint collector_footprint(const SiteRobot& robot) {
+  return sim::RobotFootprint::of(sim::RobotBox{}, robot.collector_x_m, robot.collector_width_m);
+}
+
 void drop_unfinished_line(const std::filesystem::path& file) {
   const std::string text = read_file(file);
   if (text.empty() || text.back() == '\n') return;

@@ -18,6 +18,7 @@
 
 #include "ballsight/core/geometry.hpp"
 #include "ballsight/sim/court_world.hpp"
+#include "ballsight/world/site.hpp"
 
 namespace ballsight {
 
@@ -80,5 +81,10 @@ struct LoopScore {
 
 LoopScore score_loop(int balls, const Pose2D& start, const std::vector<sim::WorldTick>& ticks,
                      const sim::RobotFootprint& footprint);
+/// The same for a run read back from its record.
+LoopScore score_loop(const LoopTruth& truth, const sim::RobotFootprint& footprint);
+
+/// The simulated collector's footprint for a site's robot (the simulator's box, its collector).
+sim::RobotFootprint collector_footprint(const SiteRobot& robot);
 
 }  // namespace ballsight

@@ -53,9 +53,9 @@ cv::Mat draw_route_map(const PlanningProblem& problem, const std::vector<RouteLa
     cv::rectangle(image, px(problem.court->area_min_m), px(problem.court->area_max_m),
                   cv::Scalar(60, 60, 60), 2);
     if (const auto& net = problem.court->net) {  // the lane round the net drawn above
-      const double y_end = net->half_length_m + net->post_clearance_m;
-      cv::rectangle(image, px({-net->travel_clearance_m, y_end}),
-                    px({net->travel_clearance_m, -y_end}), cv::Scalar(120, 120, 120), 1,
+      const FieldRect lane = net->lane();
+      cv::rectangle(image, px({lane.min_m.x(), lane.max_m.y()}),
+                    px({lane.max_m.x(), lane.min_m.y()}), cv::Scalar(120, 120, 120), 1,
                     cv::LINE_AA);
     }
   }

@@ -236,14 +236,15 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       s.time_s = t.time_s;
       s.robot = t.robot;
     }
-    TruthTick line{t, seq, command, {}, std::move(removed)};
-    if (const std::optional<NavigationUpdate> u = seq > 0 ? hub.first_after(seq - 1) : std::nullopt;
-        u && u->seq == seq) {
-      if (u->world.robot) line.published.robot = u->world.robot->pose;
-      line.published.balls_seen = static_cast<int>(u->world.balls.size());
-      line.published.waypoints_m = u->route.waypoints_m;
+    if (truth.is_open()) {
+      TruthTick line{t, seq, command, {}, std::move(removed)};
+      if (const std::optional<NavigationUpdate> u = hub.find(seq)) {
+        if (u->world.robot) line.published.robot = u->world.robot->pose;
+        line.published.balls_seen = static_cast<int>(u->world.balls.size());
+        line.published.waypoints_m = u->route.waypoints_m;
+      }
+      record(tick_record(line));
     }
-    record(tick_record(line));
     ++tick;
     // Racing ahead is for a robot that drives; a court nobody drives keeps to the wall clock.
     if (s.options.realtime || !driving) {

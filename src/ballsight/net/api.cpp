@@ -233,8 +233,8 @@ std::vector<Vec2> balls_by_id(const json& body, const NavigationHub& hub) {
     fail(400, "expected the update's seq the ids belong to", "body.seq");
   }
   const std::uint64_t n = seq->get<std::uint64_t>();
-  const std::optional<NavigationUpdate> u = n > 0 ? hub.first_after(n - 1) : std::nullopt;
-  if (!u || u->seq != n) fail(409, "update " + std::to_string(n) + " is not kept", "body.seq");
+  const std::optional<NavigationUpdate> u = hub.find(n);
+  if (!u) fail(409, "update " + std::to_string(n) + " is not kept", "body.seq");
   const auto ids = body.find("ids");
   if (ids == body.end() || !ids->is_array()) fail(400, "expected a list", "body.ids");
   std::vector<Vec2> positions;

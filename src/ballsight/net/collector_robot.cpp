@@ -5,6 +5,7 @@
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/pipeline/planning_input.hpp"
 
 namespace ballsight {
 
@@ -13,11 +14,8 @@ FollowerOptions follower_for_site(const Site& site) {
   f.mouth_ahead_m = site.robot.collector_x_m;
   f.max_speed_mps = site.robot.max_speed_mps;
   f.max_turn_rate_rps = rad_from_deg(site.robot.turn_rate_dps);
-  if (site.court.net) {
-    const Vec2 half(site.court.net_travel_clearance_m, site.court.width_m / 2.0 +
-                                                           site.court.net_posts_outside_m +
-                                                           site.court.net_post_clearance_m);
-    f.back_off_zone = FieldRect{-half, half};
+  if (const std::optional<CourtNet> net = drivable_court(site.court).net) {
+    f.back_off_zone = net->lane();
   }
   return f;
 }

@@ -74,6 +74,12 @@ std::optional<NavigationUpdate> NavigationHub::first_after(std::uint64_t after) 
   return recent_[i];
 }
 
+std::optional<NavigationUpdate> NavigationHub::find(std::uint64_t seq) const {
+  std::optional<NavigationUpdate> u = seq > 0 ? first_after(seq - 1) : std::nullopt;
+  if (u && u->seq != seq) u.reset();
+  return u;
+}
+
 std::vector<NavigationUpdate> NavigationHub::all_after(std::uint64_t after) const {
   const std::lock_guard lock(mutex_);
   const auto first =

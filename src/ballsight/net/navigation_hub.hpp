@@ -57,6 +57,8 @@ class NavigationHub {
   /// The first update newer than `after` (the oldest one kept, when `after` is older than
   /// that); nullopt when there is none yet.
   std::optional<NavigationUpdate> first_after(std::uint64_t after) const;
+  /// The update `seq`, while it is kept; nullopt otherwise.
+  std::optional<NavigationUpdate> find(std::uint64_t seq) const;
   /// Every kept update newer than `after`, oldest first.
   std::vector<NavigationUpdate> all_after(std::uint64_t after) const;
 

@@ -62,7 +62,7 @@ DrivablePath canonical_path(const DrivableCourt& court, const Vec2& a, const Vec
   best.length_m = (b - a).norm();
   if (!court.blocked(a, b)) return best;
   const double c = court.net->travel_clearance_m;
-  const double y_end = court.net->half_length_m + court.net->post_clearance_m;
+  const double y_end = court.net->end_m();
   const Vec2 a_exit = lane_exit(court, a), b_exit = lane_exit(court, b);
   const std::array<Vec2, 6> node{a_exit,           Vec2(c, y_end),  Vec2(-c, y_end),
                                  Vec2(-c, -y_end), Vec2(c, -y_end), b_exit};
@@ -119,7 +119,7 @@ void DrivableCourt::validate() const {
   require(net->post_clearance_m >= 0.0, "net.post_clearance_m", "must not be negative");
   require(net->travel_clearance_m >= net->clearance_m, "net.travel_clearance_m",
           "must not be less than net.clearance_m (the lane holds the reach keep-out)");
-  const double y_end = net->half_length_m + net->post_clearance_m;
+  const double y_end = net->end_m();
   require(area_min_m.x() < -net->travel_clearance_m && area_max_m.x() > net->travel_clearance_m &&
               area_min_m.y() < -y_end && area_max_m.y() > y_end,
           "drivable area",
@@ -133,18 +133,17 @@ bool DrivableCourt::in_area(const Vec2& p) const {
 }
 
 bool DrivableCourt::in_net_zone(const Vec2& p) const {
-  return net && std::abs(p.x()) < net->clearance_m - kEps &&
-         std::abs(p.y()) < net->half_length_m + net->post_clearance_m - kEps;
+  return net && std::abs(p.x()) < net->clearance_m - kEps && std::abs(p.y()) < net->end_m() - kEps;
 }
 
 bool DrivableCourt::in_net_lane(const Vec2& p) const {
   return net && std::abs(p.x()) < net->travel_clearance_m - kEps &&
-         std::abs(p.y()) < net->half_length_m + net->post_clearance_m - kEps;
+         std::abs(p.y()) < net->end_m() - kEps;
 }
 
 Vec2 DrivableCourt::outside_net_zone(const Vec2& p) const {
   if (!in_net_zone(p)) return p;
-  const double x_edge = net->clearance_m, y_edge = net->half_length_m + net->post_clearance_m;
+  const double x_edge = net->clearance_m, y_edge = net->end_m();
   // Out through the nearer edge: a side of the net, or past a post's end.
   if (x_edge - std::abs(p.x()) <= y_edge - std::abs(p.y())) return {side_of(p) * x_edge, p.y()};
   return {p.x(), std::copysign(y_edge, p.y())};
@@ -157,7 +156,7 @@ Vec2 DrivableCourt::approach_point(const Vec2& ball) const {
 
 bool DrivableCourt::blocked(const Vec2& a, const Vec2& b) const {
   if (!net) return false;
-  const double y_end = net->half_length_m + net->post_clearance_m;
+  const double y_end = net->end_m();
   if (crosses(Vec2(net->clearance_m, y_end), a, b)) return true;
   if (!crosses(Vec2(net->travel_clearance_m, y_end), a, b)) return false;
   const bool straight_away = std::abs(a.y() - b.y()) <= kEps && side_of(a) == side_of(b);

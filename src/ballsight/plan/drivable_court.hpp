@@ -11,6 +11,7 @@
 #include <array>
 #include <optional>
 
+#include "ballsight/core/field_rect.hpp"
 #include "ballsight/core/geometry.hpp"
 
 namespace ballsight {
@@ -24,6 +25,13 @@ struct CourtNet {
   double clearance_m = 0.06;
   double post_clearance_m = 0.50;
   double travel_clearance_m = 0.45;
+
+  /// How far the keep-out and the lane reach along the net from the centre line.
+  double end_m() const { return half_length_m + post_clearance_m; }
+  /// The travel lane as a rectangle of the field.
+  FieldRect lane() const {
+    return {Vec2(-travel_clearance_m, -end_m()), Vec2(travel_clearance_m, end_m())};
+  }
 };
 
 struct DrivableCourt {

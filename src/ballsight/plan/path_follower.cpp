@@ -11,8 +11,8 @@ namespace {
 constexpr double kStraightRad = 0.35;  // 20 degrees: a turn smaller than this is no corner
 constexpr double kBackOffM = 0.6;      // a leg this short straight behind is reversed along
 constexpr double kBehindCos = 0.7071;  // "straight behind": within 45 degrees
-constexpr double kCreepMarginM =
-    0.10;                            // a waypoint this far beyond the mouth's circle is turned to
+// A waypoint this far beyond the mouth's circle round the axle is turned to, not crept from.
+constexpr double kCreepMarginM = 0.10;
 constexpr double kCreepShare = 0.3;  // of full speed, creeping away from a waypoint too near
 constexpr double kCreepM = 0.25;     // and this far at most (the waypoint may move with it)
 constexpr int kCreepCommands = 12;   // or for this many commands
@@ -106,8 +106,8 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
   const Vec2 u = speed * towards / distance;
   // A short leg straight behind (backing off the net after a ball against it, where the body has
   // no room to turn): reversed along, the same linearisation steering the mouth.
-  const bool back_off = options_.back_off_zone && options_.back_off_zone->contains(mouth) &&
-                        u.dot(h) < -kBehindCos * speed && corner - progress_ < kBackOffM;
+  const bool in_zone = options_.back_off_zone && options_.back_off_zone->contains(mouth);
+  const bool back_off = in_zone && u.dot(h) < -kBehindCos * speed && corner - progress_ < kBackOffM;
   if (u.dot(h) < 0.0 && !back_off) {  // the carrot is behind: turn on the spot towards it (the
                                       // mouth collects only driving forwards), the way the turn
                                       // began (a carrot straight behind must not flip it)
@@ -115,7 +115,6 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
     // reached by turning: creep forward first, away from it, then turn; not in the back-off
     // zone (the net is ahead there), and for a few commands at most (something may be in the
     // way, or the waypoint move with the robot).
-    const bool in_zone = options_.back_off_zone && options_.back_off_zone->contains(mouth);
     if (!in_zone && (at(corner) - pose.position).norm() < options_.mouth_ahead_m + kCreepMarginM &&
         (!creep_from_ ||
          ((pose.position - *creep_from_).norm() < kCreepM && creep_commands_ < kCreepCommands))) {

@@ -21,7 +21,7 @@ std::pair<Vec2, double> closest_on_segment(const Vec2& a, const Vec2& b, const V
 bool across_the_net(const PlanningProblem& problem, const Vec2& a, const Vec2& b) {
   if (!problem.court || !problem.court->net) return false;
   const CourtNet& net = *problem.court->net;
-  const double y_end = net.half_length_m + net.post_clearance_m;
+  const double y_end = net.end_m();
   return (a.x() >= 0.0) != (b.x() >= 0.0) && std::abs(b.y()) < y_end && std::abs(a.y()) < y_end;
 }
 
