@@ -4,13 +4,47 @@
 #include <optional>
 
 #include "ballsight/camera/image_file.hpp"
+#include "ballsight/core/error.hpp"
 #include "ballsight/eval/omni_experiment.hpp"
+#include "ballsight/eval/omni_real.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
 namespace ballsight::app {
 
+namespace {
+
+void add_eval_omni_real_command(CLI::App& eval) {
+  struct Args {
+    OmniRealOptions options{"../shared/data"};
+    bool json = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* real = eval.add_subcommand(
+      "omni-real",
+      "The omni methods on real calibration data of other teams (real/omni under the data "
+      "folder, and the paper's Table I): held-out median error by direction and by whole "
+      "distance, each method fitted on the same split");
+  real->add_option("--data", args->options.data_dir, "The shared data folder")
+      ->capture_default_str();
+  real->add_option("--methods", args->options.methods,
+                   "Methods to run, comma-separated: poly, paper-mlp, ballsight")
+      ->delimiter(',')
+      ->capture_default_str();
+  real->add_flag("--json", args->json, "Print JSON instead of a table");
+  real->callback([args] {
+    const OmniRealResult result = run_omni_real(args->options);
+    require(!result.sets.empty(), args->options.data_dir.string(),
+            "holds none of the real omni sets (looked for " +
+                std::to_string(result.missing.size()) + " files)");
+    std::cout << (args->json ? omni_real_json(result).dump(2) + "\n" : omni_real_table(result));
+  });
+}
+
+}  // namespace
+
 void add_eval_commands(CLI::App& eval) {
+  add_eval_omni_real_command(eval);
   struct Args {
     OmniExperimentOptions options;
     bool json = false;

@@ -296,11 +296,13 @@ void BallsightFitOptions::validate() const {
 }
 
 BallsightGroundModel::BallsightGroundModel(const CatadioptricFloorParams& params,
-                                           const OmniModelDomain& domain)
-    : params_(params), domain_(domain) {}
+                                           const OmniModelDomain& domain,
+                                           std::optional<RadialWarp> warp)
+    : params_(params), domain_(domain), warp_(std::move(warp)) {}
 
 GroundPrediction BallsightGroundModel::predict(double theta_deg, double radius_px) const {
-  const Vec2 pixel = pixel_from_image_polar({theta_deg, radius_px}, domain_.image.center_px);
+  const double read_px = warp_ ? radius_px + (*warp_)(theta_deg, radius_px) : radius_px;
+  const Vec2 pixel = pixel_from_image_polar({theta_deg, read_px}, domain_.image.center_px);
   const ParamArray p = params_.to_array();
   double floor[2];
   if (!floor_point_from_pixel(p.data(), pixel.x(), pixel.y(), floor)) {
@@ -312,14 +314,17 @@ GroundPrediction BallsightGroundModel::predict(double theta_deg, double radius_p
 }
 
 nlohmann::json BallsightGroundModel::parameters_json() const {
-  return {{"model", "unified-catadioptric-floor"},
-          {"xi", params_.xi},
-          {"focal_px", params_.focal_px},
-          {"principal_px", {params_.principal_px.x(), params_.principal_px.y()}},
-          {"height_cm", params_.height_cm},
-          {"rotation_rad",
-           {params_.rotation_rad.x(), params_.rotation_rad.y(), params_.rotation_rad.z()}},
-          {"distortion", {params_.distortion.x(), params_.distortion.y(), params_.distortion.z()}}};
+  nlohmann::json parameters = {
+      {"model", "unified-catadioptric-floor"},
+      {"xi", params_.xi},
+      {"focal_px", params_.focal_px},
+      {"principal_px", {params_.principal_px.x(), params_.principal_px.y()}},
+      {"height_cm", params_.height_cm},
+      {"rotation_rad",
+       {params_.rotation_rad.x(), params_.rotation_rad.y(), params_.rotation_rad.z()}},
+      {"distortion", {params_.distortion.x(), params_.distortion.y(), params_.distortion.z()}}};
+  if (warp_) parameters["radial_warp"] = warp_->to_json();
+  return parameters;
 }
 
 BallsightGroundModel BallsightGroundModel::from_parameters_json(const nlohmann::json& parameters,
@@ -339,7 +344,11 @@ BallsightGroundModel BallsightGroundModel::from_parameters_json(const nlohmann::
   params.rotation_rad = {rotation[0], rotation[1], rotation[2]};
   const std::vector<double> distortion = json_numbers(parameters, "distortion", where, 3);
   params.distortion = {distortion[0], distortion[1], distortion[2]};
-  return {params, domain};
+  std::optional<RadialWarp> warp;
+  if (parameters.contains("radial_warp")) {
+    warp = RadialWarp::from_json(parameters["radial_warp"], where + ".radial_warp");
+  }
+  return {params, domain, std::move(warp)};
 }
 
 RadiusRange monotone_radius_range(const OmniGroundModel& model, const RadiusRange& range, int rays,
@@ -372,9 +381,9 @@ RadiusRange monotone_radius_range(const OmniGroundModel& model, const RadiusRang
   return result;
 }
 
-BallsightGroundModel fit_ballsight_model(std::span<const PolarSample> samples,
-                                         const OmniImage& image,
-                                         const BallsightFitOptions& options) {
+BallsightGroundModel fit_physical_ballsight_model(std::span<const PolarSample> samples,
+                                                  const OmniImage& image,
+                                                  const BallsightFitOptions& options) {
   options.validate();
   image.validate();
   std::set<double> distances;

@@ -1,0 +1,34 @@
+#pragma once
+// Cross-validation folds of omni calibration samples, by the two ways a calibration must
+// generalise. Directions: every other direction (image angle) is held out, two folds. Whole
+// distance: each distance but the nearest and the farthest is held out in turn, every sample at
+// it (interpolation along the ray).
+
+#include <span>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "ballsight/calib/polar_sample.hpp"
+
+namespace ballsight {
+
+enum class HeldOutSplit { kDirections, kDistance };
+
+/// "directions", "distance".
+std::string_view held_out_split_name(HeldOutSplit split);
+
+struct HeldOutFold {
+  std::vector<PolarSample> train;
+  std::vector<PolarSample> test;
+};
+
+/// The folds of `split`: none for directions with one direction, none for distance with fewer
+/// than three distances.
+std::vector<HeldOutFold> held_out_folds(std::span<const PolarSample> samples, HeldOutSplit split);
+
+/// The distinct directions (image angles to 0.001 deg) and distances, sorted.
+std::vector<double> sample_directions(std::span<const PolarSample> samples);
+std::vector<double> sample_distances(std::span<const PolarSample> samples);
+
+}  // namespace ballsight

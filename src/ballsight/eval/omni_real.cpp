@@ -1,0 +1,218 @@
+#include "ballsight/eval/omni_real.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "ballsight/calib/omni_model_fit.hpp"
+#include "ballsight/calib/sample_csv.hpp"
+#include "ballsight/core/csv_fields.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/core/file_io.hpp"
+#include "ballsight/core/text_format.hpp"
+
+namespace ballsight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// MinhoTeam's measured-looking mirror profiles (the folder's README: 1 is a placeholder, 2 an
+// edited copy of 0, 5 a "Teste" of one robot with 8 entries, too few to hold one out for every
+// method). One direction: the team uses one profile for all.
+constexpr int kMinhoProfiles[] = {0, 3, 4};
+constexpr double kMinhoTheta = 90.0;
+
+double csv_number(const CsvField& field, const std::string& where) {
+  double value = 0.0;
+  const auto [end, ec] =
+      std::from_chars(field.text.data(), field.text.data() + field.text.size(), value);
+  require(ec == std::errc() && end == field.text.data() + field.text.size() && std::isfinite(value),
+          where + ":" + std::to_string(field.column),
+          "expected a finite number, got '" + std::string(field.text) + "'");
+  return value;
+}
+
+// profile -> samples, from MinhoTeam's `profile,...,distance_m,radius_px` file.
+std::map<int, std::vector<PolarSample>> read_minho_profiles(const fs::path& path) {
+  std::istringstream text(read_file(path));
+  std::string line;
+  std::getline(text, line);
+  require(line.starts_with("profile,") && line.ends_with("distance_m,radius_px"),
+          path.string() + ":1", "expected the header profile,...,distance_m,radius_px");
+  std::map<int, std::vector<PolarSample>> profiles;
+  for (int number = 2; std::getline(text, line); ++number) {
+    if (trim_blanks(line).empty()) continue;
+    const std::vector<CsvField> fields = split_csv_fields(line);
+    const std::string where = path.string() + ":" + std::to_string(number);
+    require(fields.size() == 8, where, "expected 8 columns, got " + std::to_string(fields.size()));
+    const double profile = csv_number(fields[0], where);
+    const double distance_m = csv_number(fields[6], where);
+    const double radius_px = csv_number(fields[7], where);
+    require(distance_m > 0.0 && radius_px > 0.0, where, "expected a positive distance and radius");
+    profiles[static_cast<int>(profile)].push_back(
+        {kMinhoTheta, radius_px, 100.0 * distance_m, std::nullopt});
+  }
+  return profiles;
+}
+
+// Fits `method` on each fold and scores its held-out samples.
+HeldOutScore score_method(const RealOmniSet& set, const std::string& method, HeldOutSplit split) {
+  HeldOutScore score{method, split, {}, 0, 0.0};
+  std::vector<double> errors;
+  for (const auto& [train, test] : held_out_folds(set.samples, split)) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto model = fit_omni_model(parse_omni_method(method), train, set.image);
+    score.fit_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (const PolarSample& s : test) {
+      const double d = model->predict(s.theta_deg, s.radius_px).distance_cm;
+      if (!std::isfinite(d)) ++score.unmapped;
+      errors.push_back(std::isfinite(d) ? std::abs(d - s.distance_cm) : s.distance_cm);
+    }
+  }
+  score.distance_cm = summarize_errors(std::move(errors));
+  return score;
+}
+
+}  // namespace
+
+std::vector<RealOmniSet> load_real_omni_sets(const fs::path& data_dir,
+                                             std::vector<std::string>& missing) {
+  std::vector<RealOmniSet> sets;
+  const auto add_csv = [&](const std::string& name, const fs::path& file,
+                           std::optional<Vec2> center, std::optional<Eigen::Vector2i> size) {
+    const fs::path path = data_dir / file;
+    if (!fs::exists(path)) {
+      missing.push_back(path.string());
+      return;
+    }
+    std::vector<PolarSample> samples = read_polar_samples_csv(path);
+    const OmniImage image = omni_image_for_samples(samples, center, size);
+    sets.push_back({name, std::move(samples), image});
+  };
+  // Image sizes and centres from each folder's README.
+  add_csv("tribots-2005", "real/omni/tribots-2005/samples_0.5-4m.csv", Vec2(299.0, 209.0),
+          Eigen::Vector2i(640, 480));
+  add_csv("cnc-msl-nase-2016-03",
+          "real/omni/cnc-msl-nase-2016-03/samples_nase_2016-03-30_rings1-3m.csv",
+          Vec2(230.0, 230.0), Eigen::Vector2i(460, 460));
+  const fs::path minho = data_dir / "real/omni/minhoteam/mirror_profiles.csv";
+  if (fs::exists(minho)) {
+    const auto profiles = read_minho_profiles(minho);
+    for (const int profile : kMinhoProfiles) {
+      const auto found = profiles.find(profile);
+      require(found != profiles.end(), minho.string(), "has no profile " + std::to_string(profile));
+      sets.push_back(
+          {"minhoteam-profile-" + std::to_string(profile), found->second,
+           omni_image_for_samples(found->second, Vec2(240.0, 240.0), Eigen::Vector2i(480, 480))});
+    }
+  } else {
+    missing.push_back(minho.string());
+  }
+  add_csv("table-1", "paper-tables/table1_training_samples.csv", std::nullopt, std::nullopt);
+  return sets;
+}
+
+const HeldOutScore* RealOmniSetResult::find(std::string_view method, HeldOutSplit split) const {
+  for (const HeldOutScore& score : scores) {
+    if (score.method == method && score.split == split) return &score;
+  }
+  return nullptr;
+}
+
+void OmniRealOptions::validate() const {
+  require(!methods.empty(), "methods", "expected at least one method");
+  for (const std::string& method : methods) parse_omni_method(method, "methods");
+}
+
+OmniRealResult run_omni_real(const OmniRealOptions& options) {
+  options.validate();
+  OmniRealResult result;
+  for (const RealOmniSet& set : load_real_omni_sets(options.data_dir, result.missing)) {
+    RealOmniSetResult& out = result.sets.emplace_back();
+    out.name = set.name;
+    out.samples = set.samples.size();
+    out.directions = sample_directions(set.samples).size();
+    out.distances_cm = sample_distances(set.samples);
+    for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
+      if (held_out_folds(set.samples, split).empty()) continue;
+      for (const std::string& method : options.methods) {
+        out.scores.push_back(score_method(set, method, split));
+      }
+    }
+  }
+  return result;
+}
+
+namespace {
+
+// ballsight's median over the better of poly's and paper-mlp's, when all three ran.
+std::optional<double> ratio_to_best_baseline(const RealOmniSetResult& set, HeldOutSplit split) {
+  const HeldOutScore* ours = set.find("ballsight", split);
+  const HeldOutScore* poly = set.find("poly", split);
+  const HeldOutScore* mlp = set.find("paper-mlp", split);
+  if (!ours || !poly || !mlp) return std::nullopt;
+  return ours->distance_cm.median / std::min(poly->distance_cm.median, mlp->distance_cm.median);
+}
+
+}  // namespace
+
+nlohmann::json omni_real_json(const OmniRealResult& result) {
+  nlohmann::json sets = nlohmann::json::array();
+  for (const RealOmniSetResult& set : result.sets) {
+    nlohmann::json scores = nlohmann::json::array();
+    for (const HeldOutScore& s : set.scores) {
+      scores.push_back({{"method", s.method},
+                        {"split", held_out_split_name(s.split)},
+                        {"median_cm", s.distance_cm.median},
+                        {"mean_cm", s.distance_cm.mean},
+                        {"p95_cm", s.distance_cm.p95},
+                        {"max_cm", s.distance_cm.max},
+                        {"count", s.distance_cm.count},
+                        {"unmapped", s.unmapped},
+                        {"fit_seconds", s.fit_seconds}});
+    }
+    nlohmann::json ratios = nlohmann::json::object();
+    for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
+      if (const auto r = ratio_to_best_baseline(set, split)) {
+        ratios[std::string(held_out_split_name(split))] = *r;
+      }
+    }
+    sets.push_back({{"name", set.name},
+                    {"samples", set.samples},
+                    {"directions", set.directions},
+                    {"distances_cm", set.distances_cm},
+                    {"scores", scores},
+                    {"ballsight_over_best_baseline", ratios}});
+  }
+  return {{"sets", sets}, {"missing", result.missing}};
+}
+
+std::string omni_real_table(const OmniRealResult& result) {
+  std::string out =
+      "set                    split       method      median    p95    max (cm)  unmapped  fit\n";
+  char line[200];
+  for (const RealOmniSetResult& set : result.sets) {
+    for (const HeldOutScore& s : set.scores) {
+      std::snprintf(line, sizeof line, "%-22s %-11s %-10s %7.2f %7.2f %7.2f %9zu %7.2f s\n",
+                    set.name.c_str(), std::string(held_out_split_name(s.split)).c_str(),
+                    s.method.c_str(), s.distance_cm.median, s.distance_cm.p95, s.distance_cm.max,
+                    s.unmapped, s.fit_seconds);
+      out += line;
+    }
+    for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
+      if (const auto r = ratio_to_best_baseline(set, split)) {
+        out += set.name + " " + std::string(held_out_split_name(split)) +
+               ": ballsight / better baseline = " + fixed(*r, 2) + "\n";
+      }
+    }
+  }
+  for (const std::string& path : result.missing) out += "missing (skipped): " + path + "\n";
+  return out;
+}
+
+}  // namespace ballsight
