@@ -16,7 +16,7 @@ namespace {
 
 void add_eval_omni_real_command(CLI::App& eval) {
   struct Args {
-    OmniRealOptions options{"../shared/data"};
+    OmniRealOptions options;
     bool json = false;
   };
   auto args = std::make_shared<Args>();
@@ -31,8 +31,13 @@ void add_eval_omni_real_command(CLI::App& eval) {
                    "Methods to run, comma-separated: poly, paper-mlp, ballsight")
       ->delimiter(',')
       ->capture_default_str();
+  real->add_option("--max-distance-folds", args->options.max_distance_folds,
+                   "Held-out whole distances per set at most, evenly spread")
+      ->capture_default_str();
+  real->add_option("--jobs", args->options.jobs, "Fits run at once")->capture_default_str();
   real->add_flag("--json", args->json, "Print JSON instead of a table");
   real->callback([args] {
+    args->options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
     const OmniRealResult result = run_omni_real(args->options);
     require(!result.sets.empty(), args->options.data_dir.string(),
             "holds none of the real omni sets (looked for " +

@@ -1,14 +1,14 @@
 // fit_ballsight_model: the physical model, and the radius correction chosen by cross-validation.
 // Every candidate (the physical model alone, the correction at each smoothing of the grid) is
-// scored by its mean ground-distance error on held-out directions and on held-out whole
-// distances of the samples (calib/held_out_folds.hpp; the two splits weigh alike), the physical
-// model refitted on each fold's training part; the best is fitted to all samples. The correction
-// must keep the model monotone over the physical model's valid range, else the next smoother
-// candidate is taken.
+// scored by its held-out radius error (pixels, where click noise is symmetric) on held-out
+// directions and on held-out whole distances of the samples (calib/held_out_folds.hpp; the two
+// splits weigh alike), the physical model refitted on each fold's training part. The simplest
+// candidate within one standard error of the best is fitted to all samples; the correction must
+// keep the model monotone over the physical model's valid range, else the next is taken.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <vector>
 
 #include "ballsight/calib/ballsight_model.hpp"
@@ -24,7 +24,6 @@ constexpr std::size_t kMinFoldSamples = 8;
 constexpr std::size_t kMinFoldDistances = 3;
 constexpr std::size_t kMaxFolds = 3;  // per split
 constexpr double kReachPx = 50.0;     // a held-out sample's radius error at most
-constexpr double kSureGain = 0.0;     // standard errors
 
 // The radius at which the physical model, along image angle theta, reads `distance_cm`: a walk
 // from `start_px` in 0.5 px steps towards it, then bisection. nullopt when it is not reached
@@ -99,35 +98,16 @@ bool fittable(std::span<const PolarSample> samples) {
   return samples.size() >= kMinFoldSamples && sample_distances(samples).size() >= kMinFoldDistances;
 }
 
-// At most `count` of the folds, evenly spread (the nearest, middle and farthest held-out
-// distance of many): the cost stays that of a few fits.
-std::vector<HeldOutFold> spread_folds(std::vector<HeldOutFold> folds, std::size_t count) {
-  if (folds.size() <= count) return folds;
-  std::vector<HeldOutFold> kept;
-  for (std::size_t k = 0; k < count; ++k) {
-    kept.push_back(std::move(folds[k * (folds.size() - 1) / (count - 1)]));
-  }
-  return kept;
-}
+// The held-out radius errors of every candidate, per split and held-out sample.
+using SplitErrors = std::vector<std::vector<double>>;  // [candidate][sample]
 
-// A candidate's cross-validated score: its mean held-out distance error (the two splits'
-// means averaged) and how much and how surely it beats the physical model alone.
-struct Score {
-  double error_cm = 0.0;
-  double gain_cm = 0.0;     // the physical model's error minus this one's
-  double gain_se_cm = 0.0;  // the standard error of that gain (paired over held-out samples)
-};
-
-// Every candidate's score (all[0] is the physical model alone); empty when no fold can be
-// fitted.
-std::vector<Score> cross_validated_scores(std::span<const PolarSample> samples,
-                                          const OmniImage& image,
-                                          const BallsightFitOptions& options,
-                                          const std::vector<Candidate>& all) {
-  std::vector<Score> scores(all.size());
-  int splits = 0;
+std::vector<SplitErrors> cross_validated_errors(std::span<const PolarSample> samples,
+                                                const OmniImage& image,
+                                                const BallsightFitOptions& options,
+                                                const std::vector<Candidate>& all) {
+  std::vector<SplitErrors> splits;
   for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
-    std::vector<std::vector<double>> errors(all.size());  // per candidate, per held-out sample
+    SplitErrors errors(all.size());
     for (const HeldOutFold& fold : spread_folds(held_out_folds(samples, split), kMaxFolds)) {
       if (!fittable(fold.train) || fold.test.empty()) continue;
       std::optional<BallsightGroundModel> physical;
@@ -144,30 +124,43 @@ std::vector<Score> cross_validated_scores(std::span<const PolarSample> samples,
         }
       }
     }
-    const std::size_t n = errors[0].size();
-    if (n == 0) continue;
-    ++splits;
-    for (std::size_t c = 0; c < all.size(); ++c) {
-      double sum = 0.0, gain = 0.0, gain_squares = 0.0;
-      for (std::size_t i = 0; i < n; ++i) {
-        sum += errors[c][i];
-        const double g = errors[0][i] - errors[c][i];
-        gain += g;
-        gain_squares += g * g;
-      }
-      const double mean_gain = gain / static_cast<double>(n);
-      const double variance =
-          n > 1 ? (gain_squares - static_cast<double>(n) * mean_gain * mean_gain) /
-                      static_cast<double>(n - 1)
-                : 0.0;
-      scores[c].error_cm += sum / static_cast<double>(n);
-      scores[c].gain_cm += mean_gain;
-      scores[c].gain_se_cm += std::max(variance, 0.0) / static_cast<double>(n);  // variance, yet
-    }
+    if (!errors[0].empty()) splits.push_back(std::move(errors));
   }
-  if (splits == 0) return {};
-  for (Score& score : scores) score.gain_se_cm = std::sqrt(score.gain_se_cm);
-  return scores;
+  return splits;
+}
+
+// How much candidate `c`'s error exceeds `reference`'s, and the standard error of that excess
+// (paired over the held-out samples), the splits' means summed.
+std::pair<double, double> excess_error(const std::vector<SplitErrors>& splits, std::size_t c,
+                                       std::size_t reference) {
+  double excess = 0.0, variance = 0.0;
+  for (const SplitErrors& errors : splits) {
+    const std::size_t n = errors[c].size();
+    double sum = 0.0, squares = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d = errors[c][i] - errors[reference][i];
+      sum += d;
+      squares += d * d;
+    }
+    const double count = static_cast<double>(n);
+    const double mean = sum / count;
+    excess += mean;
+    if (n > 1) variance += std::max(squares - count * mean * mean, 0.0) / (count - 1.0) / count;
+  }
+  return {excess, std::sqrt(variance)};
+}
+
+// Candidates from the simplest: the physical model alone, then the correction from the
+// smoothest.
+std::vector<std::size_t> simplest_first(const std::vector<Candidate>& all) {
+  std::vector<std::size_t> order(all.size());
+  for (std::size_t c = 0; c < all.size(); ++c) order[c] = c;
+  const auto smoothing = [&](std::size_t c) {
+    return all[c].warp ? all[c].warp->theta_smoothing + all[c].warp->radius_smoothing : INFINITY;
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return smoothing(a) > smoothing(b); });
+  return order;
 }
 
 }  // namespace
@@ -178,16 +171,20 @@ BallsightGroundModel fit_ballsight_model(std::span<const PolarSample> samples,
   const BallsightGroundModel physical = fit_physical_ballsight_model(samples, image, options);
   if (!options.radial_warp) return physical;
   const std::vector<Candidate> all = candidates();
-  const std::vector<Score> scores = cross_validated_scores(samples, image, options, all);
-  if (scores.empty()) return physical;
-  // The correction only where it beats the physical model surely (its gain at least twice its
-  // standard error): on a mirror of the physical family it would fit click noise.
-  std::multimap<double, std::size_t> ranked;
+  const std::vector<SplitErrors> splits = cross_validated_errors(samples, image, options, all);
+  if (splits.empty()) return physical;
+  // The one-standard-error rule: the simplest candidate whose error is within one standard
+  // error of the best one's. On a mirror of the physical family the correction would fit click
+  // noise; the rule keeps it out.
+  std::size_t best = 0;
   for (std::size_t c = 1; c < all.size(); ++c) {
-    if (scores[c].gain_cm > kSureGain * scores[c].gain_se_cm) ranked.emplace(scores[c].error_cm, c);
+    if (excess_error(splits, c, best).first < 0.0) best = c;
   }
   const RadiusRange& range = physical.domain().valid_radius;
-  for (const auto& [error, c] : ranked) {
+  for (const std::size_t c : simplest_first(all)) {
+    const auto [excess, standard_error] = excess_error(splits, c, best);
+    if (excess > standard_error) continue;
+    if (!all[c].warp) return physical;
     const BallsightGroundModel model = with_candidate(physical, samples, all[c]);
     const RadiusRange monotone = monotone_radius_range(model, range);
     if (monotone.min_px <= range.min_px && monotone.max_px >= range.max_px) return model;

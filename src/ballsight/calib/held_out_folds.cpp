@@ -56,4 +56,13 @@ std::vector<HeldOutFold> held_out_folds(std::span<const PolarSample> samples, He
   return folds;
 }
 
+std::vector<HeldOutFold> spread_folds(std::vector<HeldOutFold> folds, std::size_t count) {
+  if (folds.size() <= count) return folds;
+  std::vector<HeldOutFold> kept;
+  for (std::size_t k = 0; k < count; ++k) {
+    kept.push_back(std::move(folds[k * (folds.size() - 1) / (count - 1)]));
+  }
+  return kept;
+}
+
 }  // namespace ballsight

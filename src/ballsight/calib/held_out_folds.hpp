@@ -27,6 +27,10 @@ struct HeldOutFold {
 /// than three distances.
 std::vector<HeldOutFold> held_out_folds(std::span<const PolarSample> samples, HeldOutSplit split);
 
+/// At most `count` (>= 2) of the folds, evenly spread: of many held-out distances the nearest,
+/// the farthest and evenly between.
+std::vector<HeldOutFold> spread_folds(std::vector<HeldOutFold> folds, std::size_t count);
+
 /// The distinct directions (image angles to 0.001 deg) and distances, sorted.
 std::vector<double> sample_directions(std::span<const PolarSample> samples);
 std::vector<double> sample_distances(std::span<const PolarSample> samples);

@@ -1,11 +1,14 @@
 #include "ballsight/eval/omni_real.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <sstream>
+#include <thread>
 
 #include "ballsight/calib/omni_model_fit.hpp"
 #include "ballsight/calib/sample_csv.hpp"
@@ -60,10 +63,12 @@ std::map<int, std::vector<PolarSample>> read_minho_profiles(const fs::path& path
 }
 
 // Fits `method` on each fold and scores its held-out samples.
-HeldOutScore score_method(const RealOmniSet& set, const std::string& method, HeldOutSplit split) {
+HeldOutScore score_method(const RealOmniSet& set, const std::string& method, HeldOutSplit split,
+                          std::size_t max_distance_folds) {
   HeldOutScore score{method, split, {}, 0, 0.0};
   std::vector<double> errors;
-  for (const auto& [train, test] : held_out_folds(set.samples, split)) {
+  for (const auto& [train, test] :
+       spread_folds(held_out_folds(set.samples, split), max_distance_folds)) {
     const auto start = std::chrono::steady_clock::now();
     const auto model = fit_omni_model(parse_omni_method(method), train, set.image);
     score.fit_seconds +=
@@ -127,24 +132,56 @@ const HeldOutScore* RealOmniSetResult::find(std::string_view method, HeldOutSpli
 void OmniRealOptions::validate() const {
   require(!methods.empty(), "methods", "expected at least one method");
   for (const std::string& method : methods) parse_omni_method(method, "methods");
+  require(max_distance_folds >= 2, "max_distance_folds", "expected at least 2");
+  require(jobs >= 1 && jobs <= 64, "jobs", "expected 1 to 64");
 }
 
 OmniRealResult run_omni_real(const OmniRealOptions& options) {
   options.validate();
   OmniRealResult result;
-  for (const RealOmniSet& set : load_real_omni_sets(options.data_dir, result.missing)) {
+  const std::vector<RealOmniSet> sets = load_real_omni_sets(options.data_dir, result.missing);
+  struct Task {
+    std::size_t set;
+    HeldOutSplit split;
+    std::string method;
+    HeldOutScore score;
+  };
+  std::vector<Task> tasks;
+  for (std::size_t i = 0; i < sets.size(); ++i) {
     RealOmniSetResult& out = result.sets.emplace_back();
-    out.name = set.name;
-    out.samples = set.samples.size();
-    out.directions = sample_directions(set.samples).size();
-    out.distances_cm = sample_distances(set.samples);
+    out.name = sets[i].name;
+    out.samples = sets[i].samples.size();
+    out.directions = sample_directions(sets[i].samples).size();
+    out.distances_cm = sample_distances(sets[i].samples);
     for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
-      if (held_out_folds(set.samples, split).empty()) continue;
-      for (const std::string& method : options.methods) {
-        out.scores.push_back(score_method(set, method, split));
-      }
+      if (held_out_folds(sets[i].samples, split).empty()) continue;
+      for (const std::string& method : options.methods) tasks.push_back({i, split, method, {}});
     }
   }
+  std::atomic<std::size_t> next = 0;
+  std::mutex report;
+  std::size_t done = 0;
+  const auto work = [&] {
+    for (std::size_t t = next++; t < tasks.size(); t = next++) {
+      Task& task = tasks[t];
+      task.score =
+          score_method(sets[task.set], task.method, task.split, options.max_distance_folds);
+      const std::lock_guard lock(report);
+      ++done;
+      if (options.progress) {
+        options.progress(std::to_string(done) + "/" + std::to_string(tasks.size()) + " " +
+                         sets[task.set].name + " " +
+                         std::string(held_out_split_name(task.split)) + " " + task.method +
+                         ": median " + fixed(task.score.distance_cm.median, 2) + " cm (" +
+                         fixed(task.score.fit_seconds, 1) + " s)");
+      }
+    }
+  };
+  std::vector<std::thread> workers;
+  for (int j = 1; j < options.jobs; ++j) workers.emplace_back(work);
+  work();
+  for (std::thread& worker : workers) worker.join();
+  for (Task& task : tasks) result.sets[task.set].scores.push_back(std::move(task.score));
   return result;
 }
 

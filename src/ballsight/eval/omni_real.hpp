@@ -2,10 +2,11 @@
 // The omni methods on real calibration data of other teams (../shared/data/real/omni and the
 // omnivision paper's Table I): each method is fitted on part of a set and scored on the rest,
 // by the two splits of calib/held_out_folds.hpp (held-out directions, a held-out whole
-// distance). The error is that of the ground distance (real sets carry no bearings); a query a
+// distance, at most `max_distance_folds` of them). The error is that of the ground distance (real sets carry no bearings); a query a
 // model cannot map counts as an error of its whole distance.
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -49,8 +50,14 @@ struct RealOmniSetResult {
 };
 
 struct OmniRealOptions {
-  std::filesystem::path data_dir;
+  std::filesystem::path data_dir = "../shared/data";  // the shared data folder
   std::vector<std::string> methods{"poly", "paper-mlp", "ballsight"};
+  /// Held-out whole distances per set at most, evenly spread (MinhoTeam's profiles have 22
+  /// interior distances; paper-mlp takes about a minute a fit).
+  std::size_t max_distance_folds = 5;
+  int jobs = 2;  // fits run at once
+  /// Called (from any thread, one at a time) with a line of progress after each score.
+  std::function<void(const std::string&)> progress;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
