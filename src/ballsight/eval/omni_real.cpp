@@ -170,10 +170,9 @@ OmniRealResult run_omni_real(const OmniRealOptions& options) {
       ++done;
       if (options.progress) {
         options.progress(std::to_string(done) + "/" + std::to_string(tasks.size()) + " " +
-                         sets[task.set].name + " " +
-                         std::string(held_out_split_name(task.split)) + " " + task.method +
-                         ": median " + fixed(task.score.distance_cm.median, 2) + " cm (" +
-                         fixed(task.score.fit_seconds, 1) + " s)");
+                         sets[task.set].name + " " + std::string(held_out_split_name(task.split)) +
+                         " " + task.method + ": median " + fixed(task.score.distance_cm.median, 2) +
+                         " cm (" + fixed(task.score.fit_seconds, 1) + " s)");
       }
     }
   };
