@@ -24,6 +24,8 @@ void add_omni_fit_commands(CLI::App& omni);
 void add_omni_locate_command(CLI::App& omni);
 /// `omni markers`: calibration samples from the markers of one frame (omni_markers_command.cpp).
 void add_omni_markers_command(CLI::App& omni);
+/// `omni rings`: calibration samples from the rings of one spin (omni_rings_command.cpp).
+void add_omni_rings_command(CLI::App& omni);
 
 /// `eval omni` (eval_command.cpp), registered on the `eval` group.
 void add_eval_commands(CLI::App& eval);

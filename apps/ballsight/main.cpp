@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   ballsight::app::add_omni_inspect_command(*omni);
   ballsight::app::add_omni_locate_command(*omni);
   ballsight::app::add_omni_markers_command(*omni);
+  ballsight::app::add_omni_rings_command(*omni);
 
   CLI::App* eval = app.add_subcommand("eval", "Experiments: ballsight against the papers' methods");
   eval->require_subcommand(1);

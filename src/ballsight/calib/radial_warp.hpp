@@ -24,7 +24,7 @@ struct WarpTarget {
 };
 
 struct RadialWarpFitOptions {
-  int theta_segments = 16;       // B-spline segments around the circle
+  int theta_segments = 8;        // B-spline segments around the circle (45 deg each)
   int radius_segments = 6;       // over the targets' radius span
   double theta_smoothing = 1.0;  // second-difference penalties, relative to the data's weight
   double radius_smoothing = 1.0;

@@ -1,0 +1,99 @@
+// `ballsight omni rings`: calibration from one spin, no clicking. The rings that floor lines at
+// known distances leave in the image of a robot turning on the spot are found along every
+// direction and written as calibration samples for omni fit.
+#include <iostream>
+#include <memory>
+#include <opencv2/imgproc.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ballsight/calib/sample_csv.hpp"
+#include "ballsight/camera/image_file.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/core/text_format.hpp"
+#include "ballsight/detect/omni_rings.hpp"
+#include "commands.hpp"
+#include "option_parsing.hpp"
+
+namespace ballsight::app {
+
+namespace {
+
+struct RingsArgs {
+  std::string image;
+  std::vector<double> distances_m;
+  std::string out;
+  std::optional<std::string> center;
+  std::optional<std::string> plot;
+  RingSearchOptions search;
+};
+
+void run_rings(RingsArgs& args) {
+  require(!args.distances_m.empty(), "--distances-m", "expected at least one distance");
+  std::vector<double> distances_cm;
+  for (const double d : args.distances_m) {
+    require(
+        std::isfinite(d) && d > 0.0 && (distances_cm.empty() || 100.0 * d > distances_cm.back()),
+        "--distances-m", "expected positive distances, increasing (the rings from the centre out)");
+    distances_cm.push_back(100.0 * d);
+  }
+  cv::Mat1b grey;
+  cv::cvtColor(read_image_bgr(args.image), grey, cv::COLOR_BGR2GRAY);
+  const Vec2 center = args.center ? parse_pixel_pair(*args.center, "--center")
+                                  : Vec2(0.5 * (grey.cols - 1), 0.5 * (grey.rows - 1));
+  args.search.rings = distances_cm.size();
+  RingSearch search;
+  try {
+    search = find_omni_rings(grey, center, args.search);
+  } catch (const InputError& e) {
+    throw InputError(args.image + ": " + e.what());
+  }
+  const std::vector<PolarSample> samples = ring_samples(search, distances_cm);
+  write_polar_samples_csv(args.out, samples);
+  if (args.plot) write_png_atomic(*args.plot, plot_omni_rings(grey, center, search));
+  std::cout << samples.size() << " samples from " << search.directions.size() << " directions x "
+            << distances_cm.size() << " rings (" << search.hidden << " hidden, " << search.ambiguous
+            << " ambiguous) -> " << args.out << "\n";
+  for (std::size_t k = 0; k < distances_cm.size(); ++k) {
+    std::cout << "  ring " << k + 1 << " at " << fixed(distances_cm[k], 0) << " cm: median radius "
+              << fixed(search.ring_radius_px[k], 2) << " px\n";
+  }
+}
+
+}  // namespace
+
+void add_omni_rings_command(CLI::App& omni) {
+  auto args = std::make_shared<RingsArgs>();
+  CLI::App* cmd = omni.add_subcommand(
+      "rings",
+      "Calibration from one spin, no clicking: find the rings that floor lines at known distances "
+      "leave in the image of a robot turning on the spot, along every direction, and write "
+      "calibration samples for omni fit (directions where a ring is hidden or ambiguous are "
+      "left out)");
+  cmd->add_option("--image", args->image, "The ring image (PNG, JPEG; read as grey)")->required();
+  cmd->add_option("--distances-m", args->distances_m,
+                  "The lines' distances from the robot's centre, m, comma-separated, increasing")
+      ->delimiter(',')
+      ->required();
+  cmd->add_option("--out", args->out, "Samples CSV to write")->required();
+  cmd->add_option("--center", args->center,
+                  "Image centre CX,CY: the robot's turning centre in the image (default: the "
+                  "image's)");
+  cmd->add_option("--directions", args->search.directions, "Directions searched, evenly spread")
+      ->capture_default_str();
+  cmd->add_option("--min-radius-px", args->search.min_radius_px,
+                  "Radius where the search starts (inside: the robot)")
+      ->capture_default_str();
+  cmd->add_option("--min-contrast", args->search.min_contrast,
+                  "Grey levels a ring stands above its background")
+      ->capture_default_str();
+  cmd->add_option("--tolerance-px", args->search.tolerance_px,
+                  "How far a ring's peak may lie from where the ring runs")
+      ->capture_default_str();
+  cmd->add_option("--plot", args->plot, "Also write a PNG of the rings found and rejected")
+      ->type_name("PNG");
+  cmd->callback([args] { run_rings(*args); });
+}
+
+}  // namespace ballsight::app

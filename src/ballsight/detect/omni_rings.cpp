@@ -1,0 +1,268 @@
+#include "ballsight/detect/omni_rings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <string>
+
+#include "ballsight/core/conventions.hpp"
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+namespace {
+
+constexpr double kStepPx = 0.25;            // along a ray
+constexpr double kFollowWindowDeg = 10.0;   // a ring's course: the median of its neighbours
+constexpr double kMinRelativeHeight = 0.6;  // of the neighbours' peaks: else partly hidden
+
+struct Peak {
+  double radius_px = 0.0;
+  double height = 0.0;  // top-hat grey levels
+};
+
+double median(std::vector<double> values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+double bilinear(const cv::Mat1b& grey, const Vec2& p) {
+  const int x0 = static_cast<int>(std::floor(p.x())), y0 = static_cast<int>(std::floor(p.y()));
+  if (x0 < 0 || y0 < 0 || x0 + 1 >= grey.cols || y0 + 1 >= grey.rows) return 0.0;
+  const double fx = p.x() - x0, fy = p.y() - y0;
+  const double top = (1.0 - fx) * grey(y0, x0) + fx * grey(y0, x0 + 1);
+  const double bottom = (1.0 - fx) * grey(y0 + 1, x0) + fx * grey(y0 + 1, x0 + 1);
+  return (1.0 - fy) * top + fy * bottom;
+}
+
+// Sliding minimum (or maximum) over +-half samples.
+std::vector<double> sliding(const std::vector<double>& v, int half, bool minimum) {
+  std::vector<double> out(v.size());
+  const int n = static_cast<int>(v.size());
+  for (int i = 0; i < n; ++i) {
+    double m = v[i];
+    for (int j = std::max(0, i - half); j <= std::min(n - 1, i + half); ++j) {
+      m = minimum ? std::min(m, v[j]) : std::max(m, v[j]);
+    }
+    out[i] = m;
+  }
+  return out;
+}
+
+// The bright peaks along one ray: the top-hat (profile minus its opening) at least
+// `min_contrast`, each peak's centre the centroid above half its height.
+std::vector<Peak> ray_peaks(const cv::Mat1b& grey, const Vec2& center, double theta_deg, double r0,
+                            double r1, const RingSearchOptions& options) {
+  std::vector<double> profile;
+  for (double r = r0; r <= r1; r += kStepPx) {
+    profile.push_back(bilinear(grey, pixel_from_image_polar({theta_deg, r}, center)));
+  }
+  const int half = static_cast<int>(std::lround(options.background_px / kStepPx));
+  const std::vector<double> opening = sliding(sliding(profile, half, true), half, false);
+  std::vector<double> t(profile.size());
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = profile[i] - opening[i];
+  std::vector<Peak> peaks;
+  const int n = static_cast<int>(t.size());
+  for (int i = 1; i + 1 < n; ++i) {
+    if (t[i] < options.min_contrast || t[i] < t[i - 1] || t[i] <= t[i + 1]) continue;
+    const double level = 0.5 * t[i];
+    int a = i, b = i;
+    while (a > 0 && t[a - 1] >= level) --a;
+    while (b + 1 < n && t[b + 1] >= level) ++b;
+    double weight = 0.0, moment = 0.0;
+    for (int j = a; j <= b; ++j) {
+      weight += t[j] - level;
+      moment += (t[j] - level) * (r0 + j * kStepPx);
+    }
+    if (weight > 0.0) peaks.push_back({moment / weight, t[i]});
+    i = b;
+  }
+  return peaks;
+}
+
+// The rings' radii where the peaks of all directions gather: the first `rings` radii (from the
+// centre out) with peaks within +-tolerance/2 in at least min_support of the directions.
+std::vector<double> ring_seeds(const std::vector<std::vector<Peak>>& peaks, double r0, double r1,
+                               const RingSearchOptions& options) {
+  const int bins = static_cast<int>(std::ceil(r1 - r0)) + 1;
+  std::vector<double> support(bins, 0.0);
+  for (const std::vector<Peak>& ray : peaks) {
+    std::vector<bool> seen(bins, false);
+    for (const Peak& peak : ray) {
+      const double p = peak.radius_px;
+      const int lo = std::max(0, static_cast<int>(std::ceil(p - r0 - 0.5 * options.tolerance_px)));
+      const int hi =
+          std::min(bins - 1, static_cast<int>(std::floor(p - r0 + 0.5 * options.tolerance_px)));
+      for (int b = lo; b <= hi; ++b) seen[b] = true;
+    }
+    for (int b = 0; b < bins; ++b) support[b] += seen[b] ? 1.0 : 0.0;
+  }
+  const double needed = options.min_support * static_cast<double>(peaks.size());
+  std::vector<double> seeds;
+  for (int b = 0; b < bins && seeds.size() < options.rings; ++b) {
+    const bool mode = support[b] >= needed && (b == 0 || support[b] >= support[b - 1]) &&
+                      (b + 1 == bins || support[b] > support[b + 1]);
+    const double radius = r0 + b;
+    if (!mode || (!seeds.empty() && radius - seeds.back() <= options.tolerance_px)) continue;
+    std::vector<double> near;
+    for (const std::vector<Peak>& ray : peaks) {
+      for (const Peak& p : ray) {
+        if (std::abs(p.radius_px - radius) <= options.tolerance_px) near.push_back(p.radius_px);
+      }
+    }
+    seeds.push_back(median(near));
+  }
+  return seeds;
+}
+
+// The one peak within `tolerance` of `expected`, or why there is none.
+std::pair<std::optional<Peak>, RingMiss> match(const std::vector<Peak>& peaks, double expected,
+                                               double tolerance) {
+  std::optional<Peak> found;
+  for (const Peak& p : peaks) {
+    if (std::abs(p.radius_px - expected) > tolerance) continue;
+    if (found) return {std::nullopt, RingMiss::kAmbiguous};
+    found = p;
+  }
+  return {found, found ? RingMiss::kNone : RingMiss::kHidden};
+}
+
+double angular_gap_deg(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), 360.0);
+  return std::min(d, 360.0 - d);
+}
+
+}  // namespace
+
+void RingSearchOptions::validate() const {
+  require(rings >= 1 && rings <= 64, "rings", "expected 1 to 64");
+  require(directions >= 8 && directions <= 3600, "directions", "expected 8 to 3600");
+  require(std::isfinite(min_radius_px) && min_radius_px >= 0.0, "min_radius_px",
+          "expected a number >= 0");
+  require(!max_radius_px || (std::isfinite(*max_radius_px) && *max_radius_px > min_radius_px + 2),
+          "max_radius_px", "expected a number above min_radius_px + 2");
+  require(std::isfinite(min_contrast) && min_contrast > 0.0, "min_contrast",
+          "expected a positive number");
+  require(std::isfinite(background_px) && background_px >= 1.0 && background_px <= 50.0,
+          "background_px", "expected 1 to 50");
+  require(std::isfinite(tolerance_px) && tolerance_px > 0.0 && tolerance_px <= 50.0, "tolerance_px",
+          "expected a number in (0, 50]");
+  require(std::isfinite(min_support) && min_support > 0.0 && min_support <= 1.0, "min_support",
+          "expected a number in (0, 1]");
+}
+
+RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
+                           const RingSearchOptions& options,
+                           std::span<const double> directions_deg) {
+  options.validate();
+  require(!grey.empty(), "image", "is empty");
+  require(center.x() >= 0.0 && center.y() >= 0.0 && center.x() <= grey.cols - 1 &&
+              center.y() <= grey.rows - 1,
+          "center", "expected a point inside the image");
+  std::vector<double> thetas(directions_deg.begin(), directions_deg.end());
+  if (thetas.empty()) {
+    for (int i = 0; i < options.directions; ++i) thetas.push_back(360.0 * i / options.directions);
+  }
+  const double inside =
+      std::min({center.x(), center.y(), grey.cols - 1 - center.x(), grey.rows - 1 - center.y()});
+  const double r0 = options.min_radius_px;
+  const double r1 = options.max_radius_px ? *options.max_radius_px : inside;
+  require(r1 > r0 + 2.0, "image", "leaves no room between the search radii around the centre");
+  std::vector<std::vector<Peak>> peaks;
+  for (const double theta : thetas)
+    peaks.push_back(ray_peaks(grey, center, theta, r0, r1, options));
+  const std::vector<double> seeds = ring_seeds(peaks, r0, r1, options);
+  require(seeds.size() == options.rings, "image",
+          "shows " + std::to_string(seeds.size()) + " rings in at least " +
+              std::to_string(static_cast<int>(std::lround(100.0 * options.min_support))) +
+              " % of the directions, expected " + std::to_string(options.rings) +
+              "; check the centre, the number of distances and the contrast");
+
+  RingSearch search;
+  search.directions.resize(thetas.size());
+  for (std::size_t d = 0; d < thetas.size(); ++d) {
+    search.directions[d].theta_deg = thetas[d];
+    search.directions[d].radius_px.assign(options.rings, std::nullopt);
+    search.directions[d].miss.assign(options.rings, RingMiss::kHidden);
+  }
+  for (std::size_t k = 0; k < options.rings; ++k) {
+    // First around the ring's radius, then around its course (eccentric rings of a mirror off
+    // the image centre), which the neighbours' first matches give; a peak much lower than the
+    // neighbours' is a ring partly hidden (at a strut's edge), its centre biased: rejected.
+    std::vector<std::optional<Peak>> first(thetas.size());
+    for (std::size_t d = 0; d < thetas.size(); ++d) {
+      first[d] = match(peaks[d], seeds[k], options.tolerance_px).first;
+    }
+    std::vector<double> found;
+    for (std::size_t d = 0; d < thetas.size(); ++d) {
+      std::vector<double> radii, heights;
+      for (std::size_t e = 0; e < thetas.size(); ++e) {
+        if (first[e] && angular_gap_deg(thetas[d], thetas[e]) <= kFollowWindowDeg) {
+          radii.push_back(first[e]->radius_px);
+          heights.push_back(first[e]->height);
+        }
+      }
+      const double course = radii.size() >= 3 ? median(radii) : seeds[k];
+      auto [peak, miss] = match(peaks[d], course, 0.5 * options.tolerance_px);
+      if (peak && radii.size() >= 3 && peak->height < kMinRelativeHeight * median(heights)) {
+        peak.reset();
+        miss = RingMiss::kHidden;
+      }
+      const std::optional<double> radius =
+          peak ? std::optional<double>(peak->radius_px) : std::nullopt;
+      search.directions[d].radius_px[k] = radius;
+      search.directions[d].miss[k] = miss;
+      if (radius) found.push_back(*radius);
+      search.hidden += miss == RingMiss::kHidden ? 1 : 0;
+      search.ambiguous += miss == RingMiss::kAmbiguous ? 1 : 0;
+    }
+    search.ring_radius_px.push_back(found.empty() ? seeds[k] : median(found));
+  }
+  return search;
+}
+
+std::vector<PolarSample> ring_samples(const RingSearch& search,
+                                      std::span<const double> distances_cm) {
+  require(distances_cm.size() == search.ring_radius_px.size(), "distances",
+          "expected one per ring (" + std::to_string(search.ring_radius_px.size()) + "), got " +
+              std::to_string(distances_cm.size()));
+  std::vector<PolarSample> samples;
+  for (const RingDirection& direction : search.directions) {
+    for (std::size_t k = 0; k < distances_cm.size(); ++k) {
+      if (direction.radius_px[k]) {
+        samples.push_back({std::fmod(std::fmod(direction.theta_deg, 360.0) + 360.0, 360.0),
+                           *direction.radius_px[k], distances_cm[k], std::nullopt});
+      }
+    }
+  }
+  return samples;
+}
+
+cv::Mat plot_omni_rings(const cv::Mat1b& grey, const Vec2& center, const RingSearch& search) {
+  cv::Mat plot;
+  cv::cvtColor(grey, plot, cv::COLOR_GRAY2BGR);
+  const int scale = 2;  // drawn at twice the size so that neighbouring rings stay apart
+  cv::resize(plot, plot, {}, scale, scale, cv::INTER_NEAREST);
+  const auto at = [&](double theta, double r) {
+    const Vec2 p = pixel_from_image_polar({theta, r}, center);
+    return cv::Point(static_cast<int>(std::lround(scale * (p.x() + 0.5))),
+                     static_cast<int>(std::lround(scale * (p.y() + 0.5))));
+  };
+  for (const RingDirection& d : search.directions) {
+    for (std::size_t k = 0; k < d.radius_px.size(); ++k) {
+      if (d.radius_px[k]) {
+        cv::circle(plot, at(d.theta_deg, *d.radius_px[k]), 2, {0, 220, 0}, cv::FILLED);
+      } else {
+        const cv::Scalar colour =
+            d.miss[k] == RingMiss::kAmbiguous ? cv::Scalar(0, 160, 255) : cv::Scalar(0, 0, 255);
+        cv::drawMarker(plot, at(d.theta_deg, search.ring_radius_px[k]), colour, cv::MARKER_CROSS, 6,
+                       1);
+      }
+    }
+  }
+  cv::drawMarker(plot, at(0.0, 0.0), {255, 200, 0}, cv::MARKER_CROSS, 16, 2);
+  return plot;
+}
+
+}  // namespace ballsight
