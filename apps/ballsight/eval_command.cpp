@@ -52,6 +52,7 @@ void add_eval_commands(CLI::App& eval) {
   add_eval_omni_real_command(eval);
   struct Args {
     OmniExperimentOptions options;
+    std::string mirror = "unified";
     bool json = false;
     std::optional<std::string> plot;
   };
@@ -70,6 +71,7 @@ void add_eval_commands(CLI::App& eval) {
   omni->add_option("--measured-height-sigma-cm", args->options.measured_height_sigma_cm,
                    "Also give ballsight the camera's viewpoint height as measured on the robot, "
                    "with a normal error of this standard deviation (cm)");
+  omni->add_option("--mirror", args->mirror, kMirrorHelp)->capture_default_str();
   omni->add_option("--methods", args->options.methods,
                    "Methods to run, comma-separated: poly, paper-mlp, ballsight, oracle")
       ->delimiter(',')
@@ -78,6 +80,7 @@ void add_eval_commands(CLI::App& eval) {
   omni->add_option("--plot", args->plot, "Also write a PNG of every estimate around the ball")
       ->type_name("PNG");
   omni->callback([args] {
+    args->options.mirror = parse_mirror_kind(args->mirror, "--mirror");
     const OmniExperimentResult result = run_omni_experiment(args->options);
     if (args->plot) write_png_atomic(*args->plot, plot_omni_experiment(result));
     std::cout << (args->json ? omni_experiment_json(result).dump(2) + "\n"

@@ -1,6 +1,7 @@
 // `ballsight omni rings`: calibration from one spin, no clicking. The rings that floor lines at
 // known distances leave in the image of a robot turning on the spot are found along every
 // direction and written as calibration samples for omni fit.
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <opencv2/imgproc.hpp>
@@ -19,6 +20,22 @@
 namespace ballsight::app {
 
 namespace {
+
+// One calibration sample per found ring and direction: ring k (the search looked for as many as
+// there are distances) at `distances_cm[k]`.
+std::vector<PolarSample> ring_samples(const RingSearch& search,
+                                      const std::vector<double>& distances_cm) {
+  std::vector<PolarSample> samples;
+  for (const RingDirection& direction : search.directions) {
+    for (std::size_t k = 0; k < distances_cm.size(); ++k) {
+      if (direction.radius_px[k]) {
+        samples.push_back({std::fmod(std::fmod(direction.theta_deg, 360.0) + 360.0, 360.0),
+                           *direction.radius_px[k], distances_cm[k], std::nullopt});
+      }
+    }
+  }
+  return samples;
+}
 
 struct RingsArgs {
   std::string image;

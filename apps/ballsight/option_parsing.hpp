@@ -12,6 +12,11 @@
 
 namespace ballsight::app {
 
+/// The help of `--mirror` (sim omni, eval omni).
+inline constexpr const char* kMirrorHelp =
+    "The rig's mirror: unified (the central model ballsight fits), sphere, cone or table (a "
+    "compound free profile; non-central, ray-traced; defaults in docs/sim-omni.md)";
+
 /// "A,B,C" -> exactly `count` finite comma-separated numbers; throws InputError naming `option`
 /// and saying what was expected (`what`, e.g. "X,Y,THETA_DEG: robot position in cm and heading").
 std::vector<double> parse_numbers(const std::string& text, std::size_t count,

@@ -20,6 +20,7 @@ struct SimOmniArgs {
   std::filesystem::path out;
   sim::OmniScenarioOptions scenario;
   std::optional<std::string> center_offset_px;  // "X,Y"
+  std::string mirror = "unified";
   bool no_markers = false;
 };
 
@@ -28,6 +29,7 @@ void run(SimOmniArgs args) {
     args.scenario.center_offset_px = parse_pixel_pair(*args.center_offset_px, "--center-offset-px");
   }
   args.scenario.calibration_frame = !args.no_markers;
+  args.scenario.mirror = parse_mirror_kind(args.mirror, "--mirror");
   for (const std::string& name : sim::write_omni_dataset(args.scenario, args.out)) {
     std::cout << (args.out / name).string() << "\n";
   }
@@ -56,6 +58,7 @@ void add_sim_omni_command(CLI::App& sim) {
                   "Mirror centre offset from the image centre X,Y in px, at most 50 px "
                   "(default: 3-7 px drawn from the seed)")
       ->type_name("X,Y");
+  cmd->add_option("--mirror", args->mirror, kMirrorHelp)->capture_default_str();
   cmd->add_option("--noise", args->scenario.effects.noise_sigma,
                   "Gaussian sensor noise sigma, 0..64 grey levels")
       ->capture_default_str();

@@ -78,6 +78,15 @@ TEST_F(SimOmniCli, WritesOnePngAndOneTruthPerFrame) {
   EXPECT_EQ(slurp(out / "omni_0001.json"), slurp(again / "omni_0001.json"));
 }
 
+// A traced mirror's truth names its kind and its profile (docs/sim-omni.md).
+TEST_F(SimOmniCli, ATracedMirrorIsInTheTruth) {
+  const fs::path out = dir_ / "table";
+  ASSERT_EQ(run("sim omni --out '" + out.string() + "' --frames 1 --mirror table").exit_status, 0);
+  const std::string truth = slurp(out / "omni_0000.json");
+  EXPECT_NE(truth.find("\"kind\": \"table\""), std::string::npos);
+  EXPECT_NE(truth.find("\"table_m\""), std::string::npos);
+}
+
 TEST_F(SimOmniCli, BadInputEndsWithOneLineAndNonZeroStatus) {
   const std::string out = "--out '" + (dir_ / "bad").string() + "' ";
   const std::string cases[] = {
@@ -92,6 +101,7 @@ TEST_F(SimOmniCli, BadInputEndsWithOneLineAndNonZeroStatus) {
       out + "--blur 1e9",
       out + "--brightness 0",
       out + "--bogus 1",
+      out + "--mirror parabolic",
       "--frames 2",                                    // missing --out
       "--out '" + (dir_ / "file.txt").string() + "'",  // not a folder
   };
@@ -115,7 +125,7 @@ TEST_F(SimOmniCli, HelpDescribesEveryOption) {
   ASSERT_EQ(r.exit_status, 0);
   for (const char* option :
        {"--out", "--seed", "--frames", "--tilt-deg", "--tilt-azimuth-deg", "--center-offset-px",
-        "--noise", "--blur", "--brightness", "--no-markers"}) {
+        "--noise", "--blur", "--brightness", "--no-markers", "--mirror"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
   }
 }

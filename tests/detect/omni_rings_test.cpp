@@ -97,20 +97,6 @@ TEST(OmniRings, RejectsTheDirectionsTheStrutsHide) {
   EXPECT_GT(search.hidden, 0u);
 }
 
-TEST(OmniRings, SamplesTakeTheRingsDistances) {
-  const RingSearch search = find_omni_rings(ring_image(), kCenter, four_rings());
-  const std::vector<double> distances{100.0, 150.0, 200.0, 250.0};
-  const std::vector<PolarSample> samples = ring_samples(search, distances);
-  ASSERT_FALSE(samples.empty());
-  for (const PolarSample& s : samples) {
-    const auto k = static_cast<std::size_t>(
-        std::find(distances.begin(), distances.end(), s.distance_cm) - distances.begin());
-    ASSERT_LT(k, kRadii.size());
-    EXPECT_NEAR(s.radius_px, true_radius(s.theta_deg, kRadii[k]), 0.5);
-  }
-  EXPECT_THROW(ring_samples(search, std::vector<double>{100.0}), InputError);
-}
-
 TEST(OmniRings, TooManyRingsAskedIsAnError) {
   RingSearchOptions options = four_rings();
   options.rings = 6;

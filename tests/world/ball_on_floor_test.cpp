@@ -36,10 +36,10 @@ std::vector<cv::Point> silhouette(const OmniRig& rig, const Vec3& center_m, doub
   std::vector<cv::Point> pixels;
   for (int y = 0; y < 480; ++y) {
     for (int x = 0; x < 640; ++x) {
-      const auto ray = rig.ray_in_robot({x, y});
+      const auto ray = rig.viewing_ray({x, y});
       if (!ray) continue;
-      const Vec3 to_center = center_m - rig.robot_from_camera().translation;
-      if (to_center.cross(*ray).norm() < radius_m && to_center.dot(*ray) > 0)
+      const Vec3 to_center = center_m - ray->origin;
+      if (to_center.cross(ray->direction).norm() < radius_m && to_center.dot(ray->direction) > 0)
         pixels.emplace_back(x, y);
     }
   }

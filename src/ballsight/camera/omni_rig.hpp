@@ -1,10 +1,13 @@
 #pragma once
 // An omnidirectional camera on a robot: a central catadioptric model (camera + mirror as one
-// unified camera) looking down at the floor from its effective viewpoint, mounted with a height,
-// a small tilt and an image-centre offset, the misalignments the omnivision paper corrects.
+// unified camera) looking down at the floor from its effective viewpoint, or a ray-traced
+// camera and mirror of another profile (camera/mirror_tracer.hpp: non-central), mounted with a
+// height, a small tilt and an image-centre offset, the misalignments the omnivision paper
+// corrects.
 
 #include <optional>
 
+#include "ballsight/camera/mirror_tracer.hpp"
 #include "ballsight/camera/unified.hpp"
 #include "ballsight/core/geometry.hpp"
 
@@ -23,6 +26,10 @@ struct OmniRigParams {
   double tilt_azimuth_deg = 0.0;         // robot bearing towards which the axis tilts
   Vec2 center_offset_px = Vec2::Zero();  // principal point offset from the image centre
   double mirror_radius_px = 240.0;       // radius of the mirror's image around the principal point
+  /// The mirror: the unified model (xi, focal_px and height_m: the effective viewpoint's), or a
+  /// traced profile (height_m: the camera's centre; its focal length images the rim at
+  /// mirror_radius_px; xi and focal_px unused).
+  MirrorProfile mirror;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -38,9 +45,17 @@ class OmniRig {
   /// Where the mirror's image is centred (the principal point).
   Vec2 principal_point() const;
 
-  /// Pixel -> unit ray in the robot frame (origin robot_from_camera().translation); nullopt
-  /// outside the mirror's image.
-  std::optional<Vec3> ray_in_robot(const Vec2& pixel) const;
+  /// Pixel -> the ray it sees, robot frame (for the unified model from its viewpoint,
+  /// robot_from_camera().translation); nullopt outside the mirror's image.
+  std::optional<TracedRay> viewing_ray(const Vec2& pixel) const;
+  /// Where the rays that see `p_in_robot` come from: the unified model's viewpoint, or the point
+  /// of a traced mirror that reflects it (the viewpoint when nothing does).
+  Vec3 viewpoint_towards(const Vec3& p_in_robot) const;
+  /// The height of the viewpoint that sees the floor 1.5 m ahead (the unified model's own).
+  double viewpoint_height_m() const { return viewpoint_towards({1.5, 0.0, 0.0}).z(); }
+  /// Point in the robot frame -> pixel, also outside the mirror's image; nullopt when the model
+  /// does not image it.
+  std::optional<Vec2> project(const Vec3& p_in_robot) const;
   /// Pixel -> ground point (z = 0) in the robot frame, metres; nullopt above the horizon.
   std::optional<Vec2> ground_from_pixel(const Vec2& pixel) const;
   /// Point in the robot frame -> pixel; nullopt when not imaged inside the mirror.
@@ -50,6 +65,8 @@ class OmniRig {
   OmniRigParams params_;
   UnifiedCamera camera_;
   Rigid3 robot_from_camera_;
+  std::optional<MirrorTracer> tracer_;  // traced mirrors
+  Rigid3 robot_from_mirror_;            // traced mirrors: the rig frame (camera/mirror_tracer.hpp)
 };
 
 }  // namespace ballsight

@@ -9,7 +9,7 @@ namespace ballsight {
 
 /// `info` gives the image size, centre and valid range; the viewpoint height is the rig's.
 inline GroundMap ground_map_from_rig(const OmniRig& rig, GroundMapInfo info) {
-  info.viewpoint_height_cm = rig.robot_from_camera().translation.z() * 100.0;
+  info.viewpoint_height_cm = rig.viewpoint_height_m() * 100.0;
   return build_ground_map(
       [&rig](const Vec2& pixel) -> std::optional<Vec2> {
         const std::optional<Vec2> p_m = rig.ground_from_pixel(pixel);

@@ -222,23 +222,6 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
   return search;
 }
 
-std::vector<PolarSample> ring_samples(const RingSearch& search,
-                                      std::span<const double> distances_cm) {
-  require(distances_cm.size() == search.ring_radius_px.size(), "distances",
-          "expected one per ring (" + std::to_string(search.ring_radius_px.size()) + "), got " +
-              std::to_string(distances_cm.size()));
-  std::vector<PolarSample> samples;
-  for (const RingDirection& direction : search.directions) {
-    for (std::size_t k = 0; k < distances_cm.size(); ++k) {
-      if (direction.radius_px[k]) {
-        samples.push_back({std::fmod(std::fmod(direction.theta_deg, 360.0) + 360.0, 360.0),
-                           *direction.radius_px[k], distances_cm[k], std::nullopt});
-      }
-    }
-  }
-  return samples;
-}
-
 cv::Mat plot_omni_rings(const cv::Mat1b& grey, const Vec2& center, const RingSearch& search) {
   cv::Mat plot;
   cv::cvtColor(grey, plot, cv::COLOR_GRAY2BGR);

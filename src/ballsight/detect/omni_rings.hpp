@@ -13,7 +13,6 @@
 #include <span>
 #include <vector>
 
-#include "ballsight/calib/polar_sample.hpp"
 #include "ballsight/core/geometry.hpp"
 
 namespace ballsight {
@@ -53,10 +52,6 @@ struct RingSearch {
 RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
                            const RingSearchOptions& options,
                            std::span<const double> directions_deg = {});
-
-/// One calibration sample per found ring and direction: ring k at `distances_cm[k]`.
-std::vector<PolarSample> ring_samples(const RingSearch& search,
-                                      std::span<const double> distances_cm);
 
 /// The image with each found ring point (green), each rejected one (red: hidden, orange:
 /// ambiguous, drawn at the ring's median radius) and the centre.

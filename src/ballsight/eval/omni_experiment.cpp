@@ -37,11 +37,16 @@ void OmniExperimentOptions::validate() const {
   for (const std::string& m : methods) {
     if (m != "oracle" && m != "ballsight-auto") parse_omni_method(m, where + " method");
   }
+  rig_params().validate();
+}
+
+OmniRigParams OmniExperimentOptions::rig_params() const {
   OmniRigParams rig;
   rig.tilt_deg = tilt_deg;
   rig.tilt_azimuth_deg = tilt_azimuth_deg;
   rig.center_offset_px = center_offset_px;
-  rig.validate();
+  rig.mirror = default_mirror(mirror);
+  return rig;
 }
 
 namespace {
@@ -124,10 +129,7 @@ Pose2D in_cm(const Pose2D& pose_m) {
 
 OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options) {
   options.validate();
-  OmniRigParams rig_params;
-  rig_params.tilt_deg = options.tilt_deg;
-  rig_params.tilt_azimuth_deg = options.tilt_azimuth_deg;
-  rig_params.center_offset_px = options.center_offset_px;
+  const OmniRigParams rig_params = options.rig_params();
   const OmniRig rig(rig_params);
   // The robot is configured with the nominal image centre; the mirror's is off by the offset.
   const Vec2 configured_center(0.5 * (rig_params.width - 1), 0.5 * (rig_params.height - 1));
@@ -155,7 +157,7 @@ OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options) {
     std::mt19937_64 rng(options.seed + 2);
     const double sigma = *options.measured_height_sigma_cm;
     fit_options.ballsight.viewpoint_height_cm =
-        100.0 * rig_params.height_m + sigma * std::normal_distribution<double>()(rng);
+        100.0 * rig.viewpoint_height_m() + sigma * std::normal_distribution<double>()(rng);
     fit_options.ballsight.viewpoint_height_sigma_cm = sigma;
   }
   const auto record_fit = [&](const std::string& name, Clock::time_point start,

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "ballsight/camera/omni_rig.hpp"
 #include "ballsight/core/geometry.hpp"
 
 namespace ballsight {
@@ -23,9 +24,10 @@ struct OmniExperimentOptions {
   std::uint64_t seed = 1;
   double tilt_deg = 1.5;  // misalignment, as the paper's robot after a knock
   double tilt_azimuth_deg = 60.0;
-  Vec2 center_offset_px{5.0, -3.0};  // mirror centre off the configured image centre
-  double sensor_noise = 3.0;         // grey levels
-  double click_noise_px = 1.0;       // marker clicks, per axis
+  Vec2 center_offset_px{5.0, -3.0};          // mirror centre off the configured image centre
+  MirrorKind mirror = MirrorKind::kUnified;  // the rig's mirror: its default_mirror()
+  double sensor_noise = 3.0;                 // grey levels
+  double click_noise_px = 1.0;               // marker clicks, per axis
   Vec2 ball_cm{400.0, 600.0};
   std::vector<int> distances_cm{120, 200, 285};
   double turn_step_deg = 30.0;
@@ -38,6 +40,8 @@ struct OmniExperimentOptions {
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
+  /// The misaligned rig these options describe.
+  OmniRigParams rig_params() const;
 };
 
 struct DistanceResult {

@@ -2,8 +2,8 @@
 // The omni methods on real calibration data of other teams (../shared/data/real/omni and the
 // omnivision paper's Table I): each method is fitted on part of a set and scored on the rest,
 // by the two splits of calib/held_out_folds.hpp (held-out directions, a held-out whole
-// distance, at most `max_distance_folds` of them). The error is that of the ground distance (real sets carry no bearings); a query a
-// model cannot map counts as an error of its whole distance.
+// distance, at most `max_distance_folds` of them). The error is that of the ground distance (real
+// sets carry no bearings); a query a model cannot map counts as an error of its whole distance.
 
 #include <filesystem>
 #include <functional>

@@ -74,6 +74,10 @@ const Json& JsonReader::at(const std::string& key) const {
   return *it;
 }
 
+bool JsonReader::has(const std::string& key) const {
+  return object_.contains(key);
+}
+
 double JsonReader::number(const std::string& key) const {
   const Json& v = at(key);
   require_that(v.is_number(), key, "expected a number");

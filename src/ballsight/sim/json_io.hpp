@@ -32,6 +32,7 @@ class JsonReader {
   JsonReader(const Json& object, std::string path, std::string source);
 
   const Json& at(const std::string& key) const;  // any value; throws when missing
+  bool has(const std::string& key) const;
   double number(const std::string& key) const;
   int integer(const std::string& key) const;
   std::uint64_t unsigned_integer(const std::string& key) const;

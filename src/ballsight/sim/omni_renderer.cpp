@@ -53,18 +53,19 @@ OmniRenderer::OmniRenderer(const OmniRigParams& rig_params) : rig_(rig_params) {
   const int h = rig_params.height;
   kind_.assign(static_cast<std::size_t>(w) * h, PixelKind::kOutsideMirror);
   ray_.assign(kind_.size(), Vec3::Zero());
+  origin_.assign(kind_.size(), Vec3::Zero());
   floor_.assign(kind_.size(), Vec2::Zero());
-  const Vec3& viewpoint = rig_.robot_from_camera().translation;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      const std::optional<Vec3> ray = rig_.ray_in_robot({x, y});
+      const std::optional<TracedRay> ray = rig_.viewing_ray({x, y});
       if (!ray) continue;
-      ray_[i] = *ray;
-      const std::optional<double> t = intersect_horizontal_plane(viewpoint, *ray, 0.0);
+      ray_[i] = ray->direction;
+      origin_[i] = ray->origin;
+      const std::optional<double> t = intersect_horizontal_plane(ray->origin, ray->direction, 0.0);
       if (t) {
         kind_[i] = PixelKind::kFloor;
-        floor_[i] = (viewpoint + *t * *ray).head<2>();
+        floor_[i] = (ray->origin + *t * ray->direction).head<2>();
       } else {
         kind_[i] = PixelKind::kAboveHorizon;
       }
@@ -176,26 +177,26 @@ void OmniRenderer::draw_ball(const OmniScene& scene, cv::Mat& bgr) const {
   const OmniBall& ball = *scene.ball;
   const Vec2 ground = robot_from_field_point(scene.robot_pose, ball.position_in_field);
   const Vec3 center(ground.x(), ground.y(), ball.radius_m);
-  const Vec3& viewpoint = rig_.robot_from_camera().translation;
   const Mat3 robot_from_field =
       Eigen::AngleAxisd(-scene.robot_pose.heading_rad, Vec3::UnitZ()).toRotationMatrix();
   const Vec3 to_light = robot_from_field * to_light_in_field();
-  const cv::Rect box =
-      image_box(sphere_silhouette(viewpoint, center, ball.radius_m, kOutlineSamples));
+  const cv::Rect box = image_box(
+      sphere_silhouette(rig_.viewpoint_towards(center), center, ball.radius_m, kOutlineSamples));
   for (int y = box.y; y < box.y + box.height; ++y) {
     auto* row = bgr.ptr<cv::Vec3b>(y);
     for (int x = box.x; x < box.x + box.width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * bgr.cols + x;
       if (kind_[i] == PixelKind::kOutsideMirror) continue;
       const Local<Vec3> ray = local(ray_, x, y, PixelKind::kAboveHorizon);
+      const Local<Vec3> origin = local(origin_, x, y, PixelKind::kAboveHorizon);
       int hits = 0;
       Vec3 sum = Vec3::Zero();
       for_each_subsample([&](double dx, double dy) {
         const Vec3 direction = ray.at(dx, dy).normalized();
-        const std::optional<double> t =
-            intersect_sphere(viewpoint, direction, center, ball.radius_m);
+        const Vec3 from = origin.at(dx, dy);
+        const std::optional<double> t = intersect_sphere(from, direction, center, ball.radius_m);
         if (!t) return;
-        const Vec3 normal = (viewpoint + *t * direction - center) / ball.radius_m;
+        const Vec3 normal = (from + *t * direction - center) / ball.radius_m;
         const cv::Vec3b c = shade(scene.palette.ball_bgr, normal, to_light);
         sum += Vec3(c[0], c[1], c[2]);
         ++hits;

@@ -56,6 +56,7 @@ class OmniRenderer {
   OmniRig rig_;
   std::vector<PixelKind> kind_;  // row-major, one per pixel
   std::vector<Vec3> ray_;        // unit ray in the robot frame (not for kOutsideMirror)
+  std::vector<Vec3> origin_;     // where it starts: the viewpoint, or the traced mirror's point
   std::vector<Vec2> floor_;      // floor hit in the robot frame (kFloor only)
 };
 

@@ -23,6 +23,7 @@ struct OmniScenarioOptions {
   std::optional<double> tilt_deg;
   std::optional<double> tilt_azimuth_deg;
   std::optional<Vec2> center_offset_px;
+  MirrorKind mirror = MirrorKind::kUnified;  // the rig's mirror: its default_mirror()
   ImageEffects effects;
   bool calibration_frame = true;  // frame 0: the marker layout around the robot, no ball
   double ball_min_distance_m = 0.5;

@@ -34,8 +34,7 @@ OmniBallTruth ball_truth(const OmniScene& scene, const OmniRig& rig) {
   const Vec3 center(t.position_in_robot.x(), t.position_in_robot.y(), t.radius_m);
   t.center_px = rig.pixel_from_point(center);
   const ImagedOutline outline = image_outline(
-      rig,
-      sphere_silhouette(rig.robot_from_camera().translation, center, t.radius_m, kOutlineSamples));
+      rig, sphere_silhouette(rig.viewpoint_towards(center), center, t.radius_m, kOutlineSamples));
   t.visible = outline.inside_mirror && t.center_px.has_value();
   if (t.visible) t.silhouette_centroid_px = outline.centroid_px;
   return t;
@@ -49,7 +48,7 @@ bool hidden_by_ball(const OmniScene& scene, const OmniRig& rig, const Vec2& disc
   const Vec2 ball_in_robot =
       robot_from_field_point(scene.robot_pose, scene.ball->position_in_field);
   const Vec3 ball_center(ball_in_robot.x(), ball_in_robot.y(), scene.ball->radius_m);
-  const Vec3& viewpoint = rig.robot_from_camera().translation;
+  const Vec3 viewpoint = rig.viewpoint_towards({disc_in_robot.x(), disc_in_robot.y(), 0.0});
   std::vector<Vec3> points{{disc_in_robot.x(), disc_in_robot.y(), 0.0}};
   for (int ring = 1; ring <= 5; ++ring) {
     const std::vector<Vec3> rim = floor_disc_rim(disc_in_robot, disc_radius * ring / 5.0, 64);

@@ -46,6 +46,50 @@ MslFieldSpec read_field(const JsonReader& r) {
   return f;
 }
 
+Json mirror_json(const MirrorProfile& m) {
+  Json table = Json::array();
+  for (const Vec2& point : m.table_m) table.push_back(json_vec2(point));
+  return {{"kind", mirror_kind_name(m.kind)},
+          {"rim_radius_m", m.rim_radius_m},
+          {"apex_above_camera_m", m.apex_above_camera_m},
+          {"sphere_radius_m", m.sphere_radius_m},
+          {"cone_half_angle_deg", m.cone_half_angle_deg},
+          {"table_m", table},
+          {"ripple_amplitude_m", m.ripple_amplitude_m},
+          {"ripple_period_m", m.ripple_period_m},
+          {"lens_k1", m.lens_k1}};
+}
+
+MirrorProfile read_mirror(const JsonReader& r) {
+  MirrorProfile m;
+  const Json& kind = r.at("kind");
+  bool known = false;
+  for (const MirrorKind k :
+       {MirrorKind::kUnified, MirrorKind::kSphere, MirrorKind::kCone, MirrorKind::kTable}) {
+    if (kind.is_string() && kind.get<std::string>() == mirror_kind_name(k)) {
+      m.kind = k;
+      known = true;
+    }
+  }
+  r.require_that(known, "kind", "expected \"unified\", \"sphere\", \"cone\" or \"table\"");
+  m.rim_radius_m = r.number("rim_radius_m");
+  m.apex_above_camera_m = r.number("apex_above_camera_m");
+  m.sphere_radius_m = r.number("sphere_radius_m");
+  m.cone_half_angle_deg = r.number("cone_half_angle_deg");
+  const Json& table = r.array("table_m");
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const Json& point = table[i];
+    r.require_that(
+        point.is_array() && point.size() == 2 && point[0].is_number() && point[1].is_number(),
+        "table_m", "expected [radius, height] pairs");
+    m.table_m.push_back({point[0].get<double>(), point[1].get<double>()});
+  }
+  m.ripple_amplitude_m = r.number("ripple_amplitude_m");
+  m.ripple_period_m = r.number("ripple_period_m");
+  m.lens_k1 = r.number("lens_k1");
+  return m;
+}
+
 Json rig_json(const OmniRigParams& p) {
   return {{"width_px", p.width},
           {"height_px", p.height},
@@ -55,7 +99,8 @@ Json rig_json(const OmniRigParams& p) {
           {"tilt_deg", p.tilt_deg},
           {"tilt_azimuth_deg", p.tilt_azimuth_deg},
           {"center_offset_px", json_vec2(p.center_offset_px)},
-          {"mirror_radius_px", p.mirror_radius_px}};
+          {"mirror_radius_px", p.mirror_radius_px},
+          {"mirror", mirror_json(p.mirror)}};
 }
 
 OmniRigParams read_rig(const JsonReader& r) {
@@ -69,6 +114,8 @@ OmniRigParams read_rig(const JsonReader& r) {
   p.tilt_azimuth_deg = r.number("tilt_azimuth_deg");
   p.center_offset_px = r.vec2("center_offset_px");
   p.mirror_radius_px = r.number("mirror_radius_px");
+  // Truth files before the mirror profiles: the unified model.
+  if (r.has("mirror")) p.mirror = read_mirror(r.object("mirror"));
   return p;
 }
 

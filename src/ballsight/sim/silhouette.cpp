@@ -42,11 +42,10 @@ std::vector<Vec3> floor_disc_rim(const Vec2& center, double radius, int samples)
 
 std::optional<std::vector<Vec2>> project_outline(const OmniRig& rig,
                                                  const std::vector<Vec3>& points_in_robot) {
-  const Rigid3 camera_from_robot = rig.robot_from_camera().inverse();
   std::vector<Vec2> pixels;
   pixels.reserve(points_in_robot.size());
   for (const Vec3& p : points_in_robot) {
-    const std::optional<Vec2> pixel = rig.camera().project(camera_from_robot * p);
+    const std::optional<Vec2> pixel = rig.project(p);
     if (!pixel) return std::nullopt;
     pixels.push_back(*pixel);
   }
