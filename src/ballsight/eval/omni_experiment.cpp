@@ -202,11 +202,16 @@ OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options) {
   }
   if (selected.contains("ballsight-auto")) {
     const auto start = Clock::now();
-    const BallsightGroundModel model =
-        fit_ballsight_model(auto_calibration_samples(rig_params, options, configured_center), image,
-                            fit_options.ballsight);
-    record_fit("ballsight-auto", start, model);
-    pipelines["ballsight-auto"] = ballsight_locate(ball_color, ground_map_from_model(model));
+    try {
+      const BallsightGroundModel model =
+          fit_ballsight_model(auto_calibration_samples(rig_params, options, configured_center),
+                              image, fit_options.ballsight);
+      record_fit("ballsight-auto", start, model);
+      pipelines["ballsight-auto"] = ballsight_locate(ball_color, ground_map_from_model(model));
+    } catch (const InputError& e) {
+      // The markers of this rig's frame could not be found or matched: reported, not fatal.
+      result.methods["ballsight-auto"].calibration_error = e.what();
+    }
   }
   if (selected.contains("oracle")) {
     // The true mapping over the range the markers cover, through ballsight's detector.
@@ -262,11 +267,15 @@ nlohmann::json omni_experiment_json(const OmniExperimentResult& result) {
     methods[name] = {{"by_distance", by_distance},
                      {"held_out_median_cm", method.held_out_median_cm},
                      {"fit_seconds", method.fit_seconds}};
+    if (!method.calibration_error.empty()) {
+      methods[name]["calibration_error"] = method.calibration_error;
+    }
   }
   const OmniExperimentOptions& o = result.options;
   return {{"methods", methods},
           {"setup",
            {{"seed", o.seed},
+            {"mirror", mirror_kind_name(o.mirror)},
             {"tilt_deg", o.tilt_deg},
             {"tilt_azimuth_deg", o.tilt_azimuth_deg},
             {"center_offset_px", {o.center_offset_px.x(), o.center_offset_px.y()}},
@@ -284,6 +293,9 @@ std::string omni_experiment_table(const OmniExperimentResult& result) {
       "method          distance  found  mean error  std x  std y  (cm)   held-out median  fit\n";
   char line[160];
   for (const auto& [name, method] : result.methods) {
+    if (!method.calibration_error.empty()) {
+      out += name + ": not calibrated: " + method.calibration_error + "\n";
+    }
     for (const auto& [distance, r] : method.by_distance) {
       std::snprintf(line, sizeof line, "%-14s %6d cm  %2d/%-2zu %9.2f %7.2f %6.2f %17.2f %6.2f s\n",
                     name.c_str(), distance, r.found, r.estimates_cm.size(), r.mean_error_cm,

@@ -56,6 +56,7 @@ struct MethodResult {
   std::map<int, DistanceResult> by_distance;
   double held_out_median_cm = 0.0;  // mapping error on random floor points (oracle: 0)
   double fit_seconds = 0.0;
+  std::string calibration_error;  // why the method could not be calibrated (ballsight-auto)
 };
 
 struct OmniExperimentResult {

@@ -20,13 +20,12 @@ constexpr double kZoomBelowCm = 5.0;
 
 cv::Mat plot_omni_experiment(const OmniExperimentResult& result) {
   const std::map<std::string, MethodResult>& methods = result.methods;
-  std::vector<int> distances;
-  for (const auto& [distance, r] : methods.begin()->second.by_distance)
-    distances.push_back(distance);
+  std::vector<int> distances = result.options.distances_cm;
   const Vec2 truth = result.options.ball_cm;
   // Row 0: every method; row 1: the methods whose estimates all lie within kZoomBelowCm.
   std::vector<std::string> all, precise;
   for (const auto& [name, method] : methods) {
+    if (method.by_distance.empty()) continue;  // not calibrated
     all.push_back(name);
     bool close = true;
     for (const auto& [distance, r] : method.by_distance)
