@@ -26,7 +26,7 @@ MirrorKind parse_mirror_kind(std::string_view name, const std::string& where);
 struct MirrorProfile {
   MirrorKind kind = MirrorKind::kUnified;
   double rim_radius_m = 0.04;         // the mirror's outer radius
-  double apex_above_camera_m = 0.12;  // from the camera's centre to the mirror's lowest point
+  double apex_above_camera_m = 0.25;  // from the camera's centre to the mirror's lowest point
   double sphere_radius_m = 0.05;
   double cone_half_angle_deg = 50.0;  // between the axis and the surface
   /// Free profile: (radius, height above the apex) in metres, from radius 0, both increasing;
@@ -40,10 +40,11 @@ struct MirrorProfile {
   void validate() const;
 };
 
-/// The documented default mirror of each kind (docs/sim-omni.md): a sphere of 5 cm radius, a
-/// cone of 60 deg, and a compound free profile (a 5 cm sphere-like centre, a flatter outer ring
-/// from 2.4 cm: far range compressed as on the real mirrors of ../shared/data/real/omni); each
-/// 4 cm in radius, its lowest point 12 cm above the camera.
+/// The documented default mirror of each kind (docs/sim-omni.md): a sphere of 5 cm radius (on a
+/// rig of use_mirror(), its radius-distance curve is the Tribots' and cnc-msl's real ones within
+/// a few per cent), a cone of 60 deg, and a compound free profile (a 5 cm sphere-like centre, a
+/// more strongly curved outer ring from 2.4 cm: far range compressed harder than on the real
+/// mirrors); each 4 cm in radius, its lowest point 25 cm above the camera.
 MirrorProfile default_mirror(MirrorKind kind);
 
 struct TracedRay {

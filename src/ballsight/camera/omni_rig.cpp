@@ -64,6 +64,12 @@ std::optional<MirrorTracer> tracer(const OmniRigParams& p) {
 
 }  // namespace
 
+OmniRigParams with_mirror(OmniRigParams params, MirrorKind kind) {
+  params.mirror = default_mirror(kind);
+  if (kind != MirrorKind::kUnified) params.height_m = 0.9;
+  return params;
+}
+
 OmniRig::OmniRig(const OmniRigParams& params)
     : params_(params),
       camera_(camera_params(params)),

@@ -35,6 +35,10 @@ struct OmniRigParams {
   void validate() const;
 };
 
+/// The rig with `kind`'s default_mirror(); a traced mirror's camera at 0.9 m (the mirror's lowest
+/// point 1.15 m above the floor).
+OmniRigParams with_mirror(OmniRigParams params, MirrorKind kind);
+
 class OmniRig {
  public:
   explicit OmniRig(const OmniRigParams& params = {});

@@ -45,8 +45,7 @@ OmniRigParams OmniExperimentOptions::rig_params() const {
   rig.tilt_deg = tilt_deg;
   rig.tilt_azimuth_deg = tilt_azimuth_deg;
   rig.center_offset_px = center_offset_px;
-  rig.mirror = default_mirror(mirror);
-  return rig;
+  return with_mirror(rig, mirror);
 }
 
 namespace {

@@ -26,7 +26,7 @@ OmniRigParams rig_params(const OmniScenarioOptions& options, std::mt19937_64& rn
   rig.tilt_azimuth_deg = options.tilt_azimuth_deg.value_or(tilt_azimuth_deg);
   rig.center_offset_px = options.center_offset_px.value_or(
       offset_px * Vec2(std::cos(offset_angle), std::sin(offset_angle)));
-  rig.mirror = default_mirror(options.mirror);
+  rig = with_mirror(rig, options.mirror);
   rig.validate();
   return rig;
 }
