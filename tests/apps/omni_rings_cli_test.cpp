@@ -64,10 +64,7 @@ TEST(OmniRingsCli, BadInputIsOneLineAndLeavesTheOutput) {
            {{"--image", (dir / "missing.png").string(), "--distances-m", "1"}, "missing.png"}}) {
     std::vector<std::string> command = {"omni", "rings", "--out", out};
     command.insert(command.end(), args.begin(), args.end());
-    const test::CliResult r = test::run_cli(command);
-    EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
-    EXPECT_EQ(test::line_count(r.stderr_text), 1) << r.stderr_text;
-    EXPECT_NE(r.stderr_text.find(problem), std::string::npos) << r.stderr_text;
+    test::expect_one_line_error(test::run_cli(command), problem);
     EXPECT_EQ(read_file(out), "previous content\n");
   }
 }
