@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "ballsight/calib/ballsight_model.hpp"
@@ -25,7 +24,7 @@ constexpr std::size_t kMinFoldDistances = 3;
 constexpr std::size_t kMaxFolds = 3;  // per split
 constexpr double kReachPx = 50.0;     // a held-out sample's radius error at most
 
-// The radius at which the physical model, along image angle theta, reads `distance_cm`: a walk
+// The radius at which `model`, along image angle theta, reads `distance_cm`: a walk
 // from `start_px` in 0.5 px steps towards it, then bisection. nullopt when it is not reached
 // within `reach_px` (beyond the horizon, or a model far off).
 std::optional<double> radius_reading(const OmniGroundModel& model, double theta_deg,
@@ -85,12 +84,12 @@ std::vector<Candidate> candidates() {
   return all;
 }
 
+// The physical model with the candidate's correction, fitted to `targets` (warp_targets of the
+// physical model: they do not depend on the candidate).
 BallsightGroundModel with_candidate(const BallsightGroundModel& physical,
-                                    std::span<const PolarSample> samples,
+                                    std::span<const WarpTarget> targets,
                                     const Candidate& candidate) {
-  if (!candidate.warp) return physical;
-  const std::vector<WarpTarget> targets = warp_targets(physical, samples);
-  if (targets.empty()) return physical;
+  if (!candidate.warp || targets.empty()) return physical;
   return {physical.params(), physical.domain(), fit_radial_warp(targets, *candidate.warp)};
 }
 
@@ -116,8 +115,9 @@ std::vector<SplitErrors> cross_validated_errors(std::span<const PolarSample> sam
       } catch (const InputError&) {
         continue;  // this fold's training part has no monotone physical fit
       }
+      const std::vector<WarpTarget> targets = warp_targets(*physical, fold.train);
       for (std::size_t c = 0; c < all.size(); ++c) {
-        const BallsightGroundModel model = with_candidate(*physical, fold.train, all[c]);
+        const BallsightGroundModel model = with_candidate(*physical, targets, all[c]);
         for (const PolarSample& s : fold.test) {
           const auto r = radius_reading(model, s.theta_deg, s.distance_cm, s.radius_px, kReachPx);
           errors[c].push_back(r ? std::abs(*r - s.radius_px) : kReachPx);
@@ -181,11 +181,12 @@ BallsightGroundModel fit_ballsight_model(std::span<const PolarSample> samples,
     if (excess_error(splits, c, best).first < 0.0) best = c;
   }
   const RadiusRange& range = physical.domain().valid_radius;
+  const std::vector<WarpTarget> targets = warp_targets(physical, samples);
   for (const std::size_t c : simplest_first(all)) {
     const auto [excess, standard_error] = excess_error(splits, c, best);
     if (excess > standard_error) continue;
     if (!all[c].warp) return physical;
-    const BallsightGroundModel model = with_candidate(physical, samples, all[c]);
+    const BallsightGroundModel model = with_candidate(physical, targets, all[c]);
     const RadiusRange monotone = monotone_radius_range(model, range);
     if (monotone.min_px <= range.min_px && monotone.max_px >= range.max_px) return model;
   }

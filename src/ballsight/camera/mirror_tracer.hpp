@@ -42,9 +42,9 @@ struct MirrorProfile {
 
 /// The documented default mirror of each kind (docs/sim-omni.md): a sphere of 5 cm radius (on a
 /// rig of use_mirror(), its radius-distance curve is cnc-msl's real one within 2.5 px and the
-/// Tribots' within 5-7 %), a cone of 60 deg, and a compound free profile (a 5 cm sphere-like centre, a
-/// more strongly curved outer ring from 2.4 cm: far range compressed harder than on the real
-/// mirrors); each 4 cm in radius, its lowest point 25 cm above the camera.
+/// Tribots' within 5-7 %), a cone of 60 deg, and a compound free profile (a 5 cm sphere-like
+/// centre, a more strongly curved outer ring from 2.4 cm: far range compressed harder than on the
+/// real mirrors); each 4 cm in radius, its lowest point 25 cm above the camera.
 MirrorProfile default_mirror(MirrorKind kind);
 
 struct TracedRay {
