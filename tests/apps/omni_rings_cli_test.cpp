@@ -97,5 +97,16 @@ TEST(EvalOmniRealCli, BallsightBeatsThePolynomialOnTheRealSets) {
   EXPECT_EQ(compared, 4);
 }
 
+// A set no method can fit is one error line, not a crash of the worker threads.
+TEST(EvalOmniRealCli, ASetTooSmallToFitIsAnError) {
+  const test::TempDir dir;
+  std::filesystem::create_directories(dir / "real/omni/tribots-2005");
+  write_file_atomic(dir / "real/omni/tribots-2005/samples_0.5-4m.csv",
+                    "theta_deg,radius_px,distance_cm\n0,10,50\n10,10,50\n");
+  test::expect_one_line_error(test::run_cli({"eval", "omni-real", "--data", dir.path().string(),
+                                             "--methods", "poly,ballsight", "--jobs", "2"}),
+                              "samples");
+}
+
 }  // namespace
 }  // namespace ballsight

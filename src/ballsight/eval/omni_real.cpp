@@ -5,6 +5,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -161,11 +162,19 @@ OmniRealResult run_omni_real(const OmniRealOptions& options) {
   std::atomic<std::size_t> next = 0;
   std::mutex report;
   std::size_t done = 0;
+  std::exception_ptr failure;  // the first fit that threw, rethrown once every worker is done
   const auto work = [&] {
     for (std::size_t t = next++; t < tasks.size(); t = next++) {
       Task& task = tasks[t];
-      task.score =
-          score_method(sets[task.set], task.method, task.split, options.max_distance_folds);
+      try {
+        task.score =
+            score_method(sets[task.set], task.method, task.split, options.max_distance_folds);
+      } catch (...) {
+        const std::lock_guard lock(report);
+        if (!failure) failure = std::current_exception();
+        next = tasks.size();
+        return;
+      }
       const std::lock_guard lock(report);
       ++done;
       if (options.progress) {
@@ -180,6 +189,7 @@ OmniRealResult run_omni_real(const OmniRealOptions& options) {
   for (int j = 1; j < options.jobs; ++j) workers.emplace_back(work);
   work();
   for (std::thread& worker : workers) worker.join();
+  if (failure) std::rethrow_exception(failure);
   for (Task& task : tasks) result.sets[task.set].scores.push_back(std::move(task.score));
   return result;
 }
