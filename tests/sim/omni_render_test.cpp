@@ -176,6 +176,9 @@ TEST(OmniRender, RejectsASceneForAnotherRigOrAnInvalidScene) {
   scene.rig.tilt_deg = 1.0;
   EXPECT_THROW(renderer.render(scene), InputError);
   scene.rig = {};
+  scene.rig.mirror = default_mirror(MirrorKind::kSphere);  // the same rig but its mirror
+  EXPECT_THROW(renderer.render(scene), InputError);
+  scene.rig = {};
   scene.ball = OmniBall{{4.1, 6.0}};  // under the robot
   EXPECT_THROW(renderer.render(scene), InputError);
 }

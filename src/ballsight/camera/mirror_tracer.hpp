@@ -36,6 +36,8 @@ struct MirrorProfile {
   double ripple_period_m = 0.004;
   double lens_k1 = 0.0;  // radial distortion of the camera: x_d = x (1 + k1 |x|^2)
 
+  bool operator==(const MirrorProfile&) const = default;
+
   /// Throws InputError naming the first invalid field (not used for kUnified).
   void validate() const;
 };

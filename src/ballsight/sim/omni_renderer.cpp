@@ -18,7 +18,7 @@ bool same_rig(const OmniRigParams& a, const OmniRigParams& b) {
   return a.width == b.width && a.height == b.height && a.xi == b.xi && a.focal_px == b.focal_px &&
          a.height_m == b.height_m && a.tilt_deg == b.tilt_deg &&
          a.tilt_azimuth_deg == b.tilt_azimuth_deg && a.center_offset_px == b.center_offset_px &&
-         a.mirror_radius_px == b.mirror_radius_px;
+         a.mirror_radius_px == b.mirror_radius_px && a.mirror == b.mirror;
 }
 
 // Objects are sampled on a kGrid x kGrid grid of sub-pixel offsets in (-0.5, 0.5).
