@@ -4,12 +4,17 @@
 #include <string>
 
 #include "ballsight/core/angle.hpp"
+#include "ballsight/core/enum_names.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {
 
 namespace {
 
+constexpr EnumNames<MirrorKind, 4> kMirrorKindNames{{{MirrorKind::kUnified, "unified"},
+                                                     {MirrorKind::kSphere, "sphere"},
+                                                     {MirrorKind::kCone, "cone"},
+                                                     {MirrorKind::kTable, "table"}}};
 constexpr int kBisections = 60;
 constexpr int kProjectionScan = 400;  // radius steps searched for the reflection
 
@@ -70,15 +75,15 @@ Vec3 reflect(const Vec3& d, double slope, const Vec2& outward) {
 }  // namespace
 
 std::string_view mirror_kind_name(MirrorKind kind) {
-  static constexpr std::string_view kNames[] = {"unified", "sphere", "cone", "table"};
-  return kNames[static_cast<int>(kind)];
+  return enum_name(kMirrorKindNames, kind);
+}
+
+std::optional<MirrorKind> mirror_kind_named(std::string_view name) {
+  return enum_named(kMirrorKindNames, name);
 }
 
 MirrorKind parse_mirror_kind(std::string_view name, const std::string& where) {
-  for (const MirrorKind kind :
-       {MirrorKind::kUnified, MirrorKind::kSphere, MirrorKind::kCone, MirrorKind::kTable}) {
-    if (name == mirror_kind_name(kind)) return kind;
-  }
+  if (const std::optional<MirrorKind> kind = mirror_kind_named(name)) return *kind;
   throw InputError(where + ": unknown mirror '" + std::string(name) +
                    "'; expected unified, sphere, cone or table");
 }

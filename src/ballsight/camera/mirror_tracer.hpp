@@ -20,6 +20,8 @@ enum class MirrorKind { kUnified, kSphere, kCone, kTable };
 
 /// "unified", "sphere", "cone", "table".
 std::string_view mirror_kind_name(MirrorKind kind);
+/// The kind named `name`, or nullopt.
+std::optional<MirrorKind> mirror_kind_named(std::string_view name);
 /// The kind named `name`; throws InputError naming `where` and the choices otherwise.
 MirrorKind parse_mirror_kind(std::string_view name, const std::string& where);
 

@@ -63,15 +63,11 @@ Json mirror_json(const MirrorProfile& m) {
 MirrorProfile read_mirror(const JsonReader& r) {
   MirrorProfile m;
   const Json& kind = r.at("kind");
-  bool known = false;
-  for (const MirrorKind k :
-       {MirrorKind::kUnified, MirrorKind::kSphere, MirrorKind::kCone, MirrorKind::kTable}) {
-    if (kind.is_string() && kind.get<std::string>() == mirror_kind_name(k)) {
-      m.kind = k;
-      known = true;
-    }
-  }
-  r.require_that(known, "kind", "expected \"unified\", \"sphere\", \"cone\" or \"table\"");
+  const std::optional<MirrorKind> known =
+      kind.is_string() ? mirror_kind_named(kind.get<std::string>()) : std::nullopt;
+  r.require_that(known.has_value(), "kind",
+                 "expected \"unified\", \"sphere\", \"cone\" or \"table\"");
+  m.kind = *known;
   m.rim_radius_m = r.number("rim_radius_m");
   m.apex_above_camera_m = r.number("apex_above_camera_m");
   m.sphere_radius_m = r.number("sphere_radius_m");
