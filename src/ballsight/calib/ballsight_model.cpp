@@ -14,6 +14,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/statistics.hpp"
 
 namespace ballsight {
 
@@ -216,9 +217,7 @@ std::vector<double> residual_components(const std::vector<SampleTerm>& terms, co
 
 double robust_sigma(std::vector<double> components) {
   for (double& c : components) c = std::abs(c);
-  const auto middle = components.begin() + static_cast<std::ptrdiff_t>(components.size() / 2);
-  std::nth_element(components.begin(), middle, components.end());
-  return 1.4826 * *middle;  // the median absolute deviation of a normal distribution
+  return 1.4826 * median(std::move(components));  // the MAD of a normal distribution
 }
 
 void solve(const std::vector<SampleTerm>& terms, const PriorResidual& prior, const OmniImage& image,

@@ -6,6 +6,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/statistics.hpp"
 
 namespace ballsight {
 
@@ -114,12 +115,6 @@ class Calibrator {
   std::vector<cv::Point3f> object_;
   cv::Size size_;
 };
-
-double median(std::vector<double> values) {
-  const std::size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
-  return values[mid];
-}
 
 }  // namespace
 

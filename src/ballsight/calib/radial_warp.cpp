@@ -9,6 +9,7 @@
 
 #include "ballsight/calib/json_fields.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/statistics.hpp"
 
 namespace ballsight {
 
@@ -159,9 +160,7 @@ RadialWarp fit_radial_warp(std::span<const WarpTarget> targets,
       for (int j = 0; j < 16; ++j) fitted += bases[i].weight[j] * coefficients(bases[i].index[j]);
       residuals[i] = std::abs(fitted - targets[i].shift_px);
     }
-    std::vector<double> sorted = residuals;
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    const double k = std::max(options.huber_px, 2.0 * 1.4826 * sorted[sorted.size() / 2]);
+    const double k = std::max(options.huber_px, 2.0 * 1.4826 * median(residuals));
     for (std::size_t i = 0; i < targets.size(); ++i) {
       weights[i] = residuals[i] <= k ? 1.0 : k / residuals[i];
     }

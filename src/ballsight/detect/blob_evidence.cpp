@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+
+#include "ballsight/core/statistics.hpp"
 
 namespace ballsight {
 
@@ -28,16 +31,6 @@ void weighted_moments(const std::vector<EvidencePixel>& pixels, double& mass, Ve
   }
   covariance << sxx / m, sxy / m, sxy / m, syy / m;
 }
-
-namespace {
-
-double median_of(std::vector<float>& values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
-}  // namespace
 
 BlobEvidence measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
                                    const cv::Vec3f& evidence_bgr, int margin_px) {
@@ -68,8 +61,8 @@ BlobEvidence measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
   std::vector<float> steps(ring.size());
   for (size_t i = 0; i < ring.size(); ++i)
     steps[i] = std::abs(ring[i] - ring[(i + 1) % ring.size()]);
-  out.noise_sigma = std::max(1.0, 1.4826 / std::numbers::sqrt2 * median_of(steps));
-  out.background = std::max(0.0, median_of(ring));
+  out.noise_sigma = std::max(1.0, 1.4826 / std::numbers::sqrt2 * median(std::move(steps)));
+  out.background = std::max(0.0, median(std::move(ring)));
 
   // Support: the blob grown by one pixel, so that the faint rim of the object counts.
   cv::Mat1b support(window.size(), uchar{0});

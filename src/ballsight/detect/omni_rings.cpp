@@ -7,6 +7,7 @@
 
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/statistics.hpp"
 
 namespace ballsight {
 
@@ -20,12 +21,6 @@ struct Peak {
   double radius_px = 0.0;
   double height = 0.0;  // top-hat grey levels
 };
-
-double median(std::vector<double> values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 double bilinear(const cv::Mat1b& grey, const Vec2& p) {
   const int x0 = static_cast<int>(std::floor(p.x())), y0 = static_cast<int>(std::floor(p.y()));

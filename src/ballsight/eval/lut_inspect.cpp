@@ -8,6 +8,7 @@
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/statistics.hpp"
 
 namespace ballsight {
 
@@ -179,12 +180,6 @@ RayScan scan_ray(const RadialTable& rays, int theta_deg, int run,
     running_max = std::max(running_max, ray[i]);
   }
   return scan;
-}
-
-double median(std::vector<double> values) {
-  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
-  return *mid;
 }
 
 }  // namespace
