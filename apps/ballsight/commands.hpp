@@ -49,5 +49,9 @@ void add_eval_plan_command(CLI::App& eval);
 void add_eval_loop_command(CLI::App& eval);
 /// `eval tsplib` (eval_tsplib_command.cpp), registered on the `eval` group.
 void add_eval_tsplib_command(CLI::App& eval);
+/// `eval tennis-real` (eval_tennis_command.cpp), registered on the `eval` group.
+void add_eval_tennis_command(CLI::App& eval);
+/// `detect balls` and `colours learn` (detect_balls_command.cpp).
+void add_detect_commands(CLI::App& app);
 
 }  // namespace ballsight::app

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   ballsight::app::add_eval_plan_command(*eval);
   ballsight::app::add_eval_loop_command(*eval);
   ballsight::app::add_eval_tsplib_command(*eval);
+  ballsight::app::add_eval_tennis_command(*eval);
   ballsight::app::add_demo_command(app);
 
   CLI::App* calibrate = app.add_subcommand("calibrate", "Camera calibration from chessboards");
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
   court->require_subcommand(1);
   ballsight::app::add_court_calibrate_command(*court);
   ballsight::app::add_court_run_command(*court);
+  ballsight::app::add_detect_commands(app);
   ballsight::app::add_plan_command(app);
   ballsight::app::add_serve_command(app);
   ballsight::app::add_robot_command(app);

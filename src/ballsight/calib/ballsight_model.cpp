@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "ballsight/calib/json_fields.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"

@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "ballsight/calib/json_fields.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/calib/omni_model_fit.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "ballsight/calib/json_fields.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {

@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 
-#include "ballsight/calib/json_fields.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {

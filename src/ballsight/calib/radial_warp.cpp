@@ -7,7 +7,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "ballsight/calib/json_fields.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/statistics.hpp"
 

@@ -2,9 +2,15 @@
 // Splitting one line of a CSV file (comma-separated, no quoting) into trimmed fields that remember
 // where they start, so that a message can name the line and column of a bad value.
 
+#include <charconv>
+#include <cmath>
 #include <cstddef>
+#include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
+
+#include "ballsight/core/error.hpp"
 
 namespace ballsight {
 
@@ -30,6 +36,17 @@ inline std::vector<CsvField> split_csv_fields(std::string_view line) {
     if (comma == std::string_view::npos) return fields;
     start = comma + 1;
   }
+}
+
+/// The field as a finite number; throws InputError "<where>:<column>: expected a finite number".
+inline double csv_number(const CsvField& field, const std::string& where) {
+  double value = 0.0;
+  const auto [end, ec] =
+      std::from_chars(field.text.data(), field.text.data() + field.text.size(), value);
+  require(ec == std::errc() && end == field.text.data() + field.text.size() && std::isfinite(value),
+          where + ":" + std::to_string(field.column),
+          "expected a finite number, got '" + std::string(field.text) + "'");
+  return value;
 }
 
 }  // namespace ballsight

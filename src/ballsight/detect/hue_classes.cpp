@@ -11,6 +11,9 @@ void HueBand::validate(const char* name) const {
   require(hue_min_deg >= 0.0 && hue_min_deg <= 360.0 && hue_max_deg >= 0.0 && hue_max_deg <= 360.0,
           name, "hue bounds must be within [0, 360] degrees");
   require(min_chroma >= 0.0 && min_chroma <= 255.0, name, "min_chroma must be within [0, 255]");
+  require(min_saturation >= 0.0 && min_saturation <= 1.0, name,
+          "min_saturation must be within [0, 1]");
+  require(min_value >= 0.0 && min_value <= 255.0, name, "min_value must be within [0, 255]");
 }
 
 double hue_deg(const cv::Vec3b& bgr) {
@@ -31,7 +34,8 @@ double hue_deg(const cv::Vec3b& bgr) {
 
 bool HueBand::contains(const cv::Vec3b& bgr) const {
   const int hi = std::max({bgr[0], bgr[1], bgr[2]}), lo = std::min({bgr[0], bgr[1], bgr[2]});
-  if (hi - lo < min_chroma || hi == lo) return false;
+  if (hi - lo < min_chroma || hi == lo || hi < min_value) return false;
+  if (hi - lo < min_saturation * hi) return false;
   const double hue = hue_deg(bgr);
   return hue_min_deg <= hue_max_deg ? hue >= hue_min_deg && hue <= hue_max_deg
                                     : hue >= hue_min_deg || hue <= hue_max_deg;

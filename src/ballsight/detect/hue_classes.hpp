@@ -10,12 +10,15 @@
 
 namespace ballsight {
 
-/// Hue in degrees (0 red, 120 green, 240 blue; a band with min > max wraps through 0) and chroma
-/// (max - min of B, G, R, 0-255) of 8-bit BGR colours.
+/// Hue in degrees (0 red, 120 green, 240 blue; a band with min > max wraps through 0), chroma
+/// (max - min of B, G, R, 0-255), saturation (chroma / max, 0-1) and value (max of B, G, R, 0-255)
+/// of 8-bit BGR colours.
 struct HueBand {
   double hue_min_deg = 0.0;
   double hue_max_deg = 360.0;
   double min_chroma = 0.0;
+  double min_saturation = 0.0;
+  double min_value = 0.0;
 
   /// Throws InputError naming `name` when a bound is out of range.
   void validate(const char* name) const;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -29,16 +28,6 @@ namespace {
 // method). One direction: the team uses one profile for all.
 constexpr int kMinhoProfiles[] = {0, 3, 4};
 constexpr double kMinhoTheta = 90.0;
-
-double csv_number(const CsvField& field, const std::string& where) {
-  double value = 0.0;
-  const auto [end, ec] =
-      std::from_chars(field.text.data(), field.text.data() + field.text.size(), value);
-  require(ec == std::errc() && end == field.text.data() + field.text.size() && std::isfinite(value),
-          where + ":" + std::to_string(field.column),
-          "expected a finite number, got '" + std::string(field.text) + "'");
-  return value;
-}
 
 // profile -> samples, from MinhoTeam's `profile,...,distance_m,radius_px` file.
 std::map<int, std::vector<PolarSample>> read_minho_profiles(const fs::path& path) {

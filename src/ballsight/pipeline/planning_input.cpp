@@ -9,21 +9,10 @@
 #include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/text_format.hpp"
 
 namespace ballsight {
-namespace {
-
-double json_number(const nlohmann::json& object, const char* key, const std::string& where) {
-  require(object.is_object(), where, "expected an object");
-  const auto it = object.find(key);
-  require(it != object.end(), where, std::string("key '") + key + "' missing");
-  require(it->is_number() && std::isfinite(it->get<double>()), where + "." + key,
-          "expected a finite number");
-  return it->get<double>();
-}
-
-}  // namespace
 
 DrivableCourt drivable_court(const SiteCourt& court) {
   DrivableCourt out;

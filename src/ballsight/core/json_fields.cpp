@@ -1,4 +1,4 @@
-#include "ballsight/calib/json_fields.hpp"
+#include "ballsight/core/json_fields.hpp"
 
 #include <cmath>
 

@@ -1,0 +1,39 @@
+// `ballsight eval tennis-real`: ball detectors on real labelled photos of other people.
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "ballsight/eval/tennis_real.hpp"
+#include "commands.hpp"
+
+namespace ballsight::app {
+
+void add_eval_tennis_command(CLI::App& eval) {
+  struct Args {
+    TennisRealOptions options;
+    std::optional<std::string> colours;
+    bool json = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = eval.add_subcommand(
+      "tennis-real",
+      "ballsight's ball detector and the tennis report's (HSV threshold, median filter, contour "
+      "centres) on the real labelled photos under real/tennis of the data folder: recall, "
+      "precision and centre error per photo, and the time per photo");
+  cmd->add_option("--data", args->options.data_dir, "The shared data folder")
+      ->capture_default_str();
+  cmd->add_option("--colours", args->colours, "ballsight's colour model (default: built in)")
+      ->type_name("FILE");
+  cmd->add_option("--timing-runs", args->options.timing_runs,
+                  "Runs per photo and method; the median time is reported")
+      ->capture_default_str();
+  cmd->add_flag("--json", args->json, "Print JSON instead of a table");
+  cmd->callback([args] {
+    if (args->colours) args->options.colours = read_ball_colours(*args->colours);
+    const TennisRealResult result = run_tennis_real(args->options);
+    std::cout << (args->json ? tennis_real_json(result).dump(2) + "\n" : tennis_real_table(result));
+  });
+}
+
+}  // namespace ballsight::app

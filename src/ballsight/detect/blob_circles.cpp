@@ -1,0 +1,267 @@
+#include "ballsight/detect/blob_circles.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <opencv2/imgproc.hpp>
+
+namespace ballsight {
+
+namespace {
+
+constexpr int kMaxCirclesPerBlob = 16;
+
+// Local maxima of the distance transform (image coordinates), largest first.
+std::vector<BlobCircle> distance_maxima(const cv::Mat1f& distance, cv::Point origin,
+                                        double min_radius) {
+  std::vector<BlobCircle> maxima;
+  for (int y = 0; y < distance.rows; ++y) {
+    for (int x = 0; x < distance.cols; ++x) {
+      const float d = distance(y, x);
+      if (d < min_radius) continue;
+      bool peak = true;
+      for (int dy = -1; dy <= 1 && peak; ++dy)
+        for (int dx = -1; dx <= 1 && peak; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx >= 0 && ny >= 0 && nx < distance.cols && ny < distance.rows &&
+              distance(ny, nx) > d)
+            peak = false;
+        }
+      if (peak) maxima.push_back({Vec2(origin.x + x, origin.y + y), d, 0.0});
+    }
+  }
+  std::stable_sort(maxima.begin(), maxima.end(), [](const BlobCircle& a, const BlobCircle& b) {
+    return a.radius_px > b.radius_px;
+  });
+  return maxima;
+}
+
+// Proposals: the largest maximum, then every maximum that lies outside the circles taken so far
+// by at least half its own radius (touching balls, a ball partly hidden by another).
+std::vector<BlobCircle> propose(const std::vector<BlobCircle>& maxima,
+                                const BlobCircleOptions& options) {
+  std::vector<BlobCircle> taken;
+  for (const BlobCircle& m : maxima) {
+    if (m.radius_px > 1.1 * options.max_radius_px + 1.0) continue;
+    const bool explained = std::any_of(taken.begin(), taken.end(), [&m](const BlobCircle& t) {
+      return (m.center_px - t.center_px).norm() < t.radius_px + 0.5 * m.radius_px;
+    });
+    if (explained) continue;
+    taken.push_back(m);
+    if (taken.size() == kMaxCirclesPerBlob) break;
+  }
+  return taken;
+}
+
+// Points of the blob's outline, halfway between a blob pixel and a neighbour outside it; the
+// image border is not an outline.
+std::vector<Vec2> outline(const cv::Mat1b& mask, cv::Point origin, cv::Size image_size) {
+  static constexpr int kStep[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  std::vector<Vec2> points;
+  for (int y = 0; y < mask.rows; ++y) {
+    for (int x = 0; x < mask.cols; ++x) {
+      if (!mask(y, x)) continue;
+      for (const auto& step : kStep) {
+        const int nx = x + step[0], ny = y + step[1];
+        const int ix = origin.x + nx, iy = origin.y + ny;
+        if (ix < 0 || iy < 0 || ix >= image_size.width || iy >= image_size.height) continue;
+        if (nx >= 0 && ny >= 0 && nx < mask.cols && ny < mask.rows && mask(ny, nx)) continue;
+        points.emplace_back(origin.x + x + 0.5 * step[0], origin.y + y + 0.5 * step[1]);
+      }
+    }
+  }
+  return points;
+}
+
+// Least-squares circle through `points`: algebraic (Kasa) start, then Gauss-Newton on the
+// geometric distances. False when the points do not determine a circle.
+bool fit_circle(const std::vector<Vec2>& points, Vec2& center, double& radius) {
+  if (points.size() < 5) return false;
+  Vec2 mean = Vec2::Zero();
+  for (const Vec2& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::MatrixX3d a(static_cast<Eigen::Index>(points.size()), 3);
+  Eigen::VectorXd b(static_cast<Eigen::Index>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec2 q = points[i] - mean;
+    const auto row = static_cast<Eigen::Index>(i);
+    a.row(row) << q.x(), q.y(), 1.0;
+    b(row) = -q.squaredNorm();
+  }
+  const Eigen::Vector3d abc = a.colPivHouseholderQr().solve(b);
+  Vec2 c = mean - 0.5 * abc.head<2>();
+  double r2 = 0.25 * abc.head<2>().squaredNorm() - abc(2);
+  if (!(r2 > 0.0) || !std::isfinite(r2)) return false;
+  double r = std::sqrt(r2);
+  for (int iteration = 0; iteration < 5; ++iteration) {
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+    for (const Vec2& p : points) {
+      const Vec2 d = p - c;
+      const double n = d.norm();
+      if (n < 1e-9) continue;
+      const Eigen::Vector3d j(-d.x() / n, -d.y() / n, -1.0);
+      jtj += j * j.transpose();
+      jtr += j * (n - r);
+    }
+    const Eigen::Vector3d step = jtj.ldlt().solve(-jtr);
+    if (!step.allFinite()) return false;
+    c += step.head<2>();
+    r += step(2);
+    if (step.norm() < 1e-4) break;
+  }
+  if (!(r > 0.0) || !c.allFinite()) return false;
+  center = c;
+  radius = r;
+  return true;
+}
+
+double tolerance(double radius, bool first) {
+  return first ? std::max(1.5, 0.25 * radius) : std::max(1.0, 0.12 * radius);
+}
+
+// The outline points nearest each circle (within its tolerance).
+std::vector<std::vector<Vec2>> assign(const std::vector<Vec2>& points,
+                                      const std::vector<BlobCircle>& circles, bool first) {
+  std::vector<std::vector<Vec2>> parts(circles.size());
+  for (const Vec2& p : points) {
+    std::size_t best = circles.size();
+    double best_residual = 0.0;
+    for (std::size_t k = 0; k < circles.size(); ++k) {
+      const double residual = std::abs((p - circles[k].center_px).norm() - circles[k].radius_px);
+      if (residual <= tolerance(circles[k].radius_px, first) &&
+          (best == circles.size() || residual < best_residual))
+        best = k, best_residual = residual;
+    }
+    if (best < circles.size()) parts[best].push_back(p);
+  }
+  return parts;
+}
+
+// Mean resultant length of the directions from `center` to `points`: 0 for a full circle, near 1
+// for a short arc.
+double arc_concentration(const std::vector<Vec2>& points, const Vec2& center) {
+  Vec2 sum = Vec2::Zero();
+  for (const Vec2& p : points) sum += (p - center).normalized();
+  return points.empty() ? 1.0 : sum.norm() / static_cast<double>(points.size());
+}
+
+void refine(const std::vector<Vec2>& points, std::vector<BlobCircle>& circles) {
+  const std::vector<BlobCircle> proposed = circles;
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    const auto parts = assign(points, circles, iteration == 0);
+    for (std::size_t k = 0; k < circles.size(); ++k) {
+      Vec2 c;
+      double r = 0.0;
+      if (arc_concentration(parts[k], circles[k].center_px) > 0.85 || !fit_circle(parts[k], c, r))
+        continue;
+      const BlobCircle& start = proposed[k];
+      if (r < 0.6 * start.radius_px || r > 1.6 * start.radius_px + 1.0 ||
+          (c - start.center_px).norm() > 0.6 * start.radius_px + 1.0)
+        continue;
+      circles[k].center_px = c;
+      circles[k].radius_px = r;
+    }
+  }
+}
+
+bool inside_other(const std::vector<BlobCircle>& circles, std::size_t self, const Vec2& q,
+                  double margin) {
+  for (std::size_t j = 0; j < circles.size(); ++j)
+    if (j != self && (q - circles[j].center_px).norm() < circles[j].radius_px + margin) return true;
+  return false;
+}
+
+bool in_mask(const cv::Mat1b& mask, cv::Point origin, int x, int y) {
+  const int mx = x - origin.x, my = y - origin.y;
+  return mx >= 0 && my >= 0 && mx < mask.cols && my < mask.rows && mask(my, mx);
+}
+
+// Share of the circle's outline bins holding an outline point, among the bins that are neither
+// outside the image nor hidden by another circle (at least 30 % of all bins count).
+double outline_support(const std::vector<Vec2>& part, const std::vector<BlobCircle>& circles,
+                       std::size_t self, cv::Size image_size) {
+  const BlobCircle& circle = circles[self];
+  const int bins = std::clamp(static_cast<int>(std::numbers::pi * circle.radius_px), 12, 72);
+  std::vector<char> hit(static_cast<std::size_t>(bins), 0);
+  for (const Vec2& p : part) {
+    const Vec2 d = p - circle.center_px;
+    const double angle = std::atan2(d.y(), d.x()) + std::numbers::pi;
+    hit[static_cast<std::size_t>(
+        std::min(bins - 1, static_cast<int>(angle / (2.0 * std::numbers::pi) * bins)))] = 1;
+  }
+  int supported = 0, neutral = 0;
+  for (int b = 0; b < bins; ++b) {
+    if (hit[static_cast<std::size_t>(b)]) {
+      ++supported;
+      continue;
+    }
+    const double angle = (b + 0.5) / bins * 2.0 * std::numbers::pi - std::numbers::pi;
+    const Vec2 q = circle.center_px + circle.radius_px * Vec2(std::cos(angle), std::sin(angle));
+    if (q.x() < -0.5 || q.y() < -0.5 || q.x() > image_size.width - 0.5 ||
+        q.y() > image_size.height - 0.5 || inside_other(circles, self, q, 0.5))
+      ++neutral;
+  }
+  return supported / std::max(static_cast<double>(bins - neutral), 0.3 * bins);
+}
+
+// Share of blob pixels in the disc (fill) and in the ring just outside it (ring), over pixels
+// inside the image and, for the ring, not inside another circle.
+void fill_and_ring(const cv::Mat1b& mask, cv::Point origin, cv::Size image_size,
+                   const std::vector<BlobCircle>& circles, std::size_t self, double& fill,
+                   double& ring) {
+  const BlobCircle& circle = circles[self];
+  const double r = circle.radius_px;
+  const double ring_in = r + std::max(1.0, 0.15 * r), ring_out = r + std::max(2.5, 0.5 * r);
+  const int step = std::max(1, static_cast<int>(r / 12.0));
+  const auto x0 = static_cast<int>(std::floor(circle.center_px.x() - ring_out));
+  const auto y0 = static_cast<int>(std::floor(circle.center_px.y() - ring_out));
+  const auto x1 = static_cast<int>(std::ceil(circle.center_px.x() + ring_out));
+  const auto y1 = static_cast<int>(std::ceil(circle.center_px.y() + ring_out));
+  int disc = 0, disc_in = 0, around = 0, around_in = 0;
+  for (int y = std::max(0, y0); y <= std::min(image_size.height - 1, y1); y += step) {
+    for (int x = std::max(0, x0); x <= std::min(image_size.width - 1, x1); x += step) {
+      const Vec2 q(x, y);
+      const double d = (q - circle.center_px).norm();
+      if (d <= r) {
+        ++disc;
+        disc_in += in_mask(mask, origin, x, y);
+      } else if (d >= ring_in && d <= ring_out &&
+                 !inside_other(circles, self, q, std::max(1.0, 0.15 * r))) {
+        ++around;
+        around_in += in_mask(mask, origin, x, y);
+      }
+    }
+  }
+  fill = disc > 0 ? static_cast<double>(disc_in) / disc : 0.0;
+  ring = around > 0 ? static_cast<double>(around_in) / around : 0.0;
+}
+
+}  // namespace
+
+std::vector<BlobCircle> circles_in_blob(const cv::Mat1b& mask, cv::Point origin,
+                                        cv::Size image_size, const BlobCircleOptions& options) {
+  cv::Mat1f distance;
+  cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_5);
+  std::vector<BlobCircle> circles =
+      propose(distance_maxima(distance, origin, options.min_radius_px - 0.5), options);
+  if (circles.empty()) return circles;
+  const std::vector<Vec2> points = outline(mask, origin, image_size);
+  refine(points, circles);
+  const auto parts = assign(points, circles, false);
+  std::vector<BlobCircle> kept;
+  for (std::size_t k = 0; k < circles.size(); ++k) {
+    double fill = 0.0, ring = 0.0;
+    fill_and_ring(mask, origin, image_size, circles, k, fill, ring);
+    BlobCircle circle = circles[k];
+    circle.score = outline_support(parts[k], circles, k, image_size) * fill * (1.0 - ring);
+    // The size bounds are what is looked for; a measured radius may pass them by 5 %.
+    if (circle.score >= options.min_score && circle.radius_px >= 0.95 * options.min_radius_px &&
+        circle.radius_px <= 1.05 * options.max_radius_px)
+      kept.push_back(circle);
+  }
+  return kept;
+}
+
+}  // namespace ballsight

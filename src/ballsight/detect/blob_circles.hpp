@@ -1,0 +1,34 @@
+#pragma once
+// The balls in one colour blob of a photo, with no camera model: a blob holds one ball, a few
+// touching or hiding each other, or none (foliage, a cone, a line). Circles are proposed at the
+// maxima of the blob's distance transform, largest first (each one explains its part of the
+// blob), refined by a geometric circle fit to the blob's own outline (the parts of the outline
+// nearest each circle), and scored by how much of the circle's outline the blob shows, how full
+// the disc is and how empty the ring around it is. Edges on the image border and outline hidden
+// by a neighbouring circle count neither for nor against a circle.
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "ballsight/core/geometry.hpp"
+
+namespace ballsight {
+
+struct BlobCircle {
+  Vec2 center_px = Vec2::Zero();  // image pixels (pixel centres at integers)
+  double radius_px = 0.0;
+  double score = 0.0;  // 0-1: outline support x disc fill x ring emptiness
+};
+
+struct BlobCircleOptions {
+  double min_radius_px = 2.0;
+  double max_radius_px = 150.0;
+  double min_score = 0.35;
+};
+
+/// Circles in a blob. `mask` (255 inside, holes filled) covers the image region whose top-left
+/// pixel is `origin`; `image_size` is the whole image's.
+std::vector<BlobCircle> circles_in_blob(const cv::Mat1b& mask, cv::Point origin,
+                                        cv::Size image_size, const BlobCircleOptions& options);
+
+}  // namespace ballsight

@@ -1,0 +1,186 @@
+#include "ballsight/detect/photo_balls.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <opencv2/imgproc.hpp>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+void PhotoBallOptions::validate() const {
+  colours.validate("ball colours");
+  require(circles.min_radius_px >= 1.0, "min_radius_px", "must be at least 1 pixel");
+  require(circles.max_radius_px >= circles.min_radius_px, "max_radius_px",
+          "must be at least min_radius_px");
+  require(circles.min_score >= 0.0 && circles.min_score <= 1.0, "min_score",
+          "must be within [0, 1]");
+}
+
+namespace {
+
+// A ball is mostly its own colour: at least this share of its inner disc is of a seed colour
+// (the growth colours are for its rim, its shade and its pale top).
+constexpr double kMinSeedShare = 0.3;
+constexpr double kMinBoxFill = 0.15;
+// Ring pixels of the ball's own hue family (within this of its mean hue, saturation >= 0.2):
+// foliage, a wall or a court of the ball's colour, not a ball standing out.
+constexpr double kAlikeHueDeg = 40.0;
+constexpr double kAlikeSaturation = 0.2;
+
+struct ColourSupport {
+  double seed_share = 0.0;  // seed-colour pixels in the disc of 0.8 r
+  double ring_alike = 0.0;  // ring pixels (r + max(1, 0.2 r) to r + max(3, 0.8 r)) of its hue
+};
+
+double saturation_of(const cv::Vec3b& p) {
+  const int hi = std::max({p[0], p[1], p[2]}), lo = std::min({p[0], p[1], p[2]});
+  return hi > 0 ? static_cast<double>(hi - lo) / hi : 0.0;
+}
+
+ColourSupport colour_support(const cv::Mat& bgr, const ColorClassTable& table,
+                             const BlobCircle& circle) {
+  const double r = circle.radius_px;
+  const double inner = 0.8 * r, ring_in = r + std::max(1.0, 0.2 * r),
+               ring_out = r + std::max(3.0, 0.8 * r);
+  const int step = std::max(1, static_cast<int>(r / 12.0));
+  const Vec2& c = circle.center_px;
+  const int x0 = std::max(0, static_cast<int>(std::floor(c.x() - ring_out)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(c.y() - ring_out)));
+  const int x1 = std::min(bgr.cols - 1, static_cast<int>(std::ceil(c.x() + ring_out)));
+  const int y1 = std::min(bgr.rows - 1, static_cast<int>(std::ceil(c.y() + ring_out)));
+  int disc = 0, seeds = 0;
+  Vec2 hue_sum = Vec2::Zero();
+  std::vector<cv::Vec3b> ring;
+  for (int y = y0; y <= y1; y += step) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = x0; x <= x1; x += step) {
+      const double d = (Vec2(x, y) - c).norm();
+      if (d <= inner) {
+        ++disc;
+        if (table.classify(row[x]) & kBallSeedClass) {
+          ++seeds;
+          const double h = hue_deg(row[x]) * std::numbers::pi / 180.0;
+          hue_sum += saturation_of(row[x]) * Vec2(std::cos(h), std::sin(h));
+        }
+      } else if (d >= ring_in && d <= ring_out) {
+        ring.push_back(row[x]);
+      }
+    }
+  }
+  ColourSupport support;
+  if (disc == 0 || seeds == 0) return support;
+  support.seed_share = static_cast<double>(seeds) / disc;
+  const double mean_hue = std::atan2(hue_sum.y(), hue_sum.x()) * 180.0 / std::numbers::pi;
+  int alike = 0;
+  for (const cv::Vec3b& p : ring) {
+    const double d = std::abs(std::remainder(hue_deg(p) - mean_hue, 360.0));
+    alike += saturation_of(p) >= kAlikeSaturation && d <= kAlikeHueDeg;
+  }
+  support.ring_alike =
+      ring.empty() ? 0.0 : static_cast<double>(alike) / static_cast<double>(ring.size());
+  return support;
+}
+
+// A small ball (a few pixels: its shape says little) stands apart from everything of a ball
+// colour: weeds, leaves and foliage come in clusters of specks. Its wide ring
+// (r + max(3, 0.3 r) to r + max(12, 0.6 r)) holds almost no pixel of a growth colour, apart from
+// the balls already kept (best score first).
+constexpr double kSmallRadiusPx = 8.0;
+constexpr double kMaxWideShare = 0.02;
+
+double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const PhotoBall& ball,
+                       const std::vector<PhotoBall>& kept) {
+  const double r = ball.radius_px;
+  const double ring_in = r + std::max(3.0, 0.3 * r), ring_out = r + std::max(12.0, 0.6 * r);
+  const Vec2& c = ball.center_px;
+  int count = 0, coloured = 0;
+  for (int y = std::max(0, static_cast<int>(std::floor(c.y() - ring_out)));
+       y <= std::min(bgr.rows - 1, static_cast<int>(std::ceil(c.y() + ring_out))); ++y) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = std::max(0, static_cast<int>(std::floor(c.x() - ring_out)));
+         x <= std::min(bgr.cols - 1, static_cast<int>(std::ceil(c.x() + ring_out))); ++x) {
+      const Vec2 q(x, y);
+      const double d = (q - c).norm();
+      if (d < ring_in || d > ring_out) continue;
+      const bool in_kept = std::any_of(kept.begin(), kept.end(), [&q](const PhotoBall& k) {
+        return (q - k.center_px).norm() <= k.radius_px + 2.0;
+      });
+      if (in_kept) continue;
+      ++count;
+      coloured += (table.classify(row[x]) & kBallGrowClass) != 0;
+    }
+  }
+  return count > 0 ? static_cast<double>(coloured) / count : 0.0;
+}
+
+std::vector<PhotoBall> keep_isolated(const cv::Mat& bgr, const ColorClassTable& table,
+                                     const std::vector<PhotoBall>& balls) {
+  std::vector<PhotoBall> kept;
+  for (const PhotoBall& ball : balls)
+    if (ball.radius_px > kSmallRadiusPx || wide_ring_share(bgr, table, ball, kept) <= kMaxWideShare)
+      kept.push_back(ball);
+  return kept;
+}
+
+}  // namespace
+
+PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
+    : options_(options), table_((options.validate(), ball_colour_table(options.colours))) {}
+
+std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
+  require(!bgr.empty() && bgr.type() == CV_8UC3, "ball detector", "expected an 8-bit BGR image");
+  const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
+  buffers_.reset(static_cast<int>(image.total()));
+  const auto* pixels = image.ptr<cv::Vec3b>(0);
+  std::vector<PhotoBall> out;
+  const auto count = static_cast<int>(image.total());
+  for (int seed = 0; seed < count; ++seed) {
+    if (buffers_.visited[static_cast<std::size_t>(seed)] ||
+        !(table_.classify(pixels[seed]) & kBallSeedClass))
+      continue;
+    grow_blob(image, table_, kBallGrowClass, seed, buffers_, blob_);
+    find_circles(image, out);
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const PhotoBall& a, const PhotoBall& b) { return a.score > b.score; });
+  return keep_isolated(image, table_, out);
+}
+
+void PhotoBallDetector::find_circles(const cv::Mat& bgr, std::vector<PhotoBall>& out) {
+  const double min_r = options_.circles.min_radius_px, max_r = options_.circles.max_radius_px;
+  // A ball's blob holds at least a third of its disc; a blob larger than a few of the largest
+  // balls is ground, foliage or a wall.
+  // A blob of balls fills a good part of its box (one ball 0.79, three in a diagonal row 0.26);
+  // foliage and leaf litter do not.
+  const double area = static_cast<double>(blob_.pixels.size());
+  if (area < std::numbers::pi * min_r * min_r / 3.0 ||
+      area > 6.0 * std::numbers::pi * max_r * max_r || area < kMinBoxFill * blob_.bbox.area())
+    return;
+  constexpr int kMargin = 3;
+  const cv::Rect region =
+      cv::Rect(blob_.bbox.x - kMargin, blob_.bbox.y - kMargin, blob_.bbox.width + 2 * kMargin,
+               blob_.bbox.height + 2 * kMargin) &
+      cv::Rect(0, 0, bgr.cols, bgr.rows);
+  // The blob with a one-pixel frame, so that the flood from the frame reaches every outside
+  // pixel; what it does not reach is a hole.
+  patch_.create(region.height + 2, region.width + 2);
+  patch_.setTo(0);
+  for (int index : blob_.pixels)
+    patch_(index / bgr.cols - region.y + 1, index % bgr.cols - region.x + 1) = 255;
+  cv::floodFill(patch_, cv::Point(0, 0), 128);
+  cv::Mat1b filled;
+  cv::compare(patch_(cv::Rect(1, 1, region.width, region.height)), 128, filled, cv::CMP_NE);
+  BlobCircleOptions geometry = options_.circles;
+  geometry.min_score = 0.0;
+  for (const BlobCircle& circle : circles_in_blob(filled, region.tl(), bgr.size(), geometry)) {
+    const ColourSupport colour = colour_support(bgr, table_, circle);
+    if (colour.seed_share < kMinSeedShare) continue;
+    const double score = circle.score * (1.0 - colour.ring_alike);
+    if (score >= options_.circles.min_score)
+      out.push_back({circle.center_px, circle.radius_px, score});
+  }
+}
+
+}  // namespace ballsight

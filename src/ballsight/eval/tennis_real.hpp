@@ -1,0 +1,80 @@
+#pragma once
+// Ball detectors on real labelled photos of other people (../shared/data/real/tennis): every set
+// folder with a `balls.csv` (file, box x_min, y_min, width, height; empty box fields for a photo
+// without balls) and its photos under images/. A detection counts when its centre lies inside a
+// labelled box, each box matching once (detections taken best score first, each to the nearest
+// free box holding it); the centre error is measured between the box and the detection's circle
+// clipped to the image like the label, relative to the ball's radius (half the box's longer side).
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "ballsight/detect/ball_colours.hpp"
+#include "ballsight/detect/photo_balls.hpp"
+
+namespace ballsight {
+
+struct LabelledPhoto {
+  std::string file;  // name in the set's images/ folder
+  std::vector<cv::Rect> boxes;
+};
+
+struct LabelledPhotoSet {
+  std::string name;
+  std::filesystem::path images_dir;
+  std::vector<LabelledPhoto> photos;
+};
+
+/// The sets under `data_dir`/real/tennis; throws InputError naming the file and line of a
+/// malformed label.
+std::vector<LabelledPhotoSet> load_labelled_photo_sets(const std::filesystem::path& data_dir);
+
+struct BoxMatch {
+  int labelled = 0;
+  int detected = 0;
+  int matched = 0;
+  std::vector<double> center_error_ratio;  // per matched box: centre error / ball radius
+};
+
+/// Matches `balls` (best first) to `boxes` in an image of `image_size`.
+BoxMatch match_balls_to_boxes(const std::vector<cv::Rect>& boxes,
+                              const std::vector<PhotoBall>& balls, cv::Size image_size);
+
+struct PhotoResult {
+  std::string set;
+  std::string file;
+  BoxMatch match;
+  double milliseconds = 0.0;  // median of the timing runs
+};
+
+struct MethodResult {
+  std::string method;  // "ballsight", "report-hsv"
+  std::vector<PhotoResult> photos;
+  BoxMatch total;
+};
+
+struct TennisRealOptions {
+  std::filesystem::path data_dir = "../shared/data";
+  BallColours colours = default_ball_colours();  // ballsight's colour model
+  int timing_runs = 5;                           // per photo and method
+};
+
+struct TennisRealResult {
+  std::vector<MethodResult> methods;  // ballsight, then the report's HSV detector
+};
+
+/// Runs ballsight's detector and the tennis report's (HSV threshold, median filter, contours'
+/// centres of mass, radius from the contour's area) on every labelled photo. Throws InputError
+/// when `data_dir` holds no labelled set.
+TennisRealResult run_tennis_real(const TennisRealOptions& options);
+
+double recall(const BoxMatch& match);
+double precision(const BoxMatch& match);
+
+nlohmann::json tennis_real_json(const TennisRealResult& result);
+std::string tennis_real_table(const TennisRealResult& result);
+
+}  // namespace ballsight

@@ -1,0 +1,122 @@
+// ballsight's ball detector for photos without a camera model, on drawn scenes whose balls are
+// known exactly: sizes from 2 to 150 px, touching balls, balls cut by the border, shaded balls,
+// and things of a ball's colour that are not balls.
+#include "ballsight/detect/photo_balls.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+namespace {
+
+struct DrawnBall {
+  Vec2 center;
+  double radius;
+};
+
+// A blue-grey hard court with pixel noise.
+cv::Mat court(cv::Size size, unsigned seed = 1) {
+  cv::Mat image(size, CV_8UC3, cv::Scalar(150, 120, 95));
+  cv::Mat noise(size, CV_8UC3);
+  cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(4));
+  cv::theRNG().state = seed;
+  cv::add(image, noise, image, cv::noArray(), CV_8UC3);
+  return image;
+}
+
+// An optic-yellow ball lit from above: its lower part in its own shade, antialiased.
+void draw_ball(cv::Mat& image, const DrawnBall& ball) {
+  constexpr int kShift = 4;
+  const cv::Point c(static_cast<int>(std::lround(ball.center.x() * 16)),
+                    static_cast<int>(std::lround(ball.center.y() * 16)));
+  const int r = static_cast<int>(std::lround(ball.radius * 16));
+  cv::circle(image, c, r, cv::Scalar(40, 200, 175), -1, cv::LINE_AA, kShift);
+  const cv::Point lit(c.x, c.y - r / 4);
+  cv::circle(image, lit, r * 3 / 4, cv::Scalar(45, 245, 220), -1, cv::LINE_AA, kShift);
+}
+
+// The detection nearest `ball`, or nullptr when none is within its radius.
+const PhotoBall* nearest(const std::vector<PhotoBall>& found, const DrawnBall& ball) {
+  const PhotoBall* best = nullptr;
+  for (const PhotoBall& b : found)
+    if ((b.center_px - ball.center).norm() < ball.radius &&
+        (!best || (b.center_px - ball.center).norm() < (best->center_px - ball.center).norm()))
+      best = &b;
+  return best;
+}
+
+void expect_found(const std::vector<PhotoBall>& found, const std::vector<DrawnBall>& balls) {
+  EXPECT_EQ(found.size(), balls.size());
+  for (const DrawnBall& ball : balls) {
+    const PhotoBall* b = nearest(found, ball);
+    ASSERT_NE(b, nullptr) << "ball at (" << ball.center.transpose() << ") r " << ball.radius;
+    EXPECT_LE((b->center_px - ball.center).norm(), 0.15 * ball.radius + 0.3) << "r " << ball.radius;
+    EXPECT_NEAR(b->radius_px, ball.radius, 0.15 * ball.radius + 0.6) << "r " << ball.radius;
+    EXPECT_GT(b->score, 0.5);
+  }
+}
+
+TEST(PhotoBalls, FindsSingleBallsFromTwoTo150Pixels) {
+  for (const double r : {2.0, 3.0, 5.0, 10.0, 30.0, 80.0, 150.0}) {
+    const auto side = static_cast<int>(2 * r + 60);
+    cv::Mat image = court({side, side});
+    const DrawnBall ball{Vec2(side / 2.0 + 0.3, side / 2.0 - 0.2), r};
+    draw_ball(image, ball);
+    PhotoBallDetector detector;
+    expect_found(detector.detect(image), {ball});
+  }
+}
+
+TEST(PhotoBalls, SeparatesTouchingBalls) {
+  cv::Mat image = court({400, 200});
+  const std::vector<DrawnBall> balls{{Vec2(100, 100), 30},
+                                     {Vec2(160, 100), 30},
+                                     {Vec2(300, 120), 40},
+                                     {Vec2(300 + 40 + 15, 120 - 10), 15}};
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), balls);
+}
+
+TEST(PhotoBalls, GivesTheWholeCircleOfABallCutByTheBorder) {
+  cv::Mat image = court({300, 200});
+  const DrawnBall ball{Vec2(20, 150), 45};  // a third of it outside the image
+  draw_ball(image, ball);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), {ball});
+}
+
+TEST(PhotoBalls, IgnoresALineAndFoliageOfABallsColour) {
+  cv::Mat image = court({400, 300});
+  cv::line(image, {20, 50}, {380, 60}, cv::Scalar(40, 230, 200), 3);  // a painted line
+  std::mt19937 random(3);
+  std::uniform_int_distribution<int> x(40, 360), y(150, 280);
+  cv::rectangle(image, {30, 140}, {370, 290}, cv::Scalar(40, 90, 50), -1);  // dark foliage
+  for (int i = 0; i < 300; ++i)                                             // sunlit leaves
+    cv::circle(image, {x(random), y(random)}, 2, cv::Scalar(40, 200, 170), -1);
+  PhotoBallDetector detector;
+  EXPECT_TRUE(detector.detect(image).empty());
+}
+
+TEST(PhotoBalls, RefusesAnImageThatIsNotColour) {
+  PhotoBallDetector detector;
+  EXPECT_THROW(detector.detect(cv::Mat1b(10, 10)), InputError);
+  EXPECT_THROW(detector.detect(cv::Mat()), InputError);
+}
+
+TEST(PhotoBalls, ValidatesItsOptions) {
+  PhotoBallOptions options;
+  options.circles.max_radius_px = 1.0;
+  EXPECT_THROW(PhotoBallDetector{options}, InputError);
+  options = {};
+  options.colours.colours.clear();
+  EXPECT_THROW(PhotoBallDetector{options}, InputError);
+}
+
+}  // namespace
+}  // namespace ballsight
