@@ -65,8 +65,8 @@ void run_detect(DetectArgs& args) {
   std::cout << balls.size() << " ball" << (balls.size() == 1 ? "" : "s") << " in " << args.image
             << " (" << image.cols << "x" << image.rows << ")\n";
   for (std::size_t i = 0; i < balls.size(); ++i)
-    std::cout << "  " << i + 1 << ": centre ("
-              << fixed_pair(balls[i].center_px.x(), balls[i].center_px.y(), 1) << ") px, radius "
+    std::cout << "  " << i + 1 << ": centre "
+              << fixed_pair(balls[i].center_px.x(), balls[i].center_px.y(), 1) << " px, radius "
               << fixed(balls[i].radius_px, 1) << " px, score " << fixed(balls[i].score, 2) << "\n";
 }
 

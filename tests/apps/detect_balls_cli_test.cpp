@@ -1,0 +1,77 @@
+// `ballsight detect balls` and `ballsight colours learn` as a user runs them.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "run_cli.hpp"
+#include "temp_dir.hpp"
+
+namespace ballsight::test {
+namespace {
+
+// Two touching optic-yellow balls and a pink one on a blue-grey court.
+std::string write_photo(const TempDir& dir) {
+  cv::Mat image(240, 320, CV_8UC3, cv::Scalar(150, 120, 95));
+  cv::circle(image, {100, 120}, 25, cv::Scalar(45, 245, 220), -1, cv::LINE_AA);
+  cv::circle(image, {150, 120}, 25, cv::Scalar(45, 245, 220), -1, cv::LINE_AA);
+  cv::circle(image, {250, 80}, 20, cv::Scalar(180, 80, 255), -1, cv::LINE_AA);
+  const std::string path = (dir / "photo.png").string();
+  cv::imwrite(path, image);
+  return path;
+}
+
+TEST(DetectBallsCli, PrintsTheBallsAsJsonAndDrawsThem) {
+  TempDir dir;
+  const std::string photo = write_photo(dir);
+  const CliResult r = run_cli(
+      {"detect", "balls", "--image", photo, "--json", "--plot", (dir / "plot.png").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const nlohmann::json json = nlohmann::json::parse(r.stdout_text);
+  ASSERT_EQ(json["balls"].size(), 2u);
+  for (const auto& ball : json["balls"]) {
+    EXPECT_NEAR(ball["y_px"].get<double>(), 120.0, 1.0);
+    EXPECT_NEAR(ball["radius_px"].get<double>(), 25.0, 2.0);
+    EXPECT_GT(ball["score"].get<double>(), 0.5);
+  }
+  EXPECT_EQ(cv::imread((dir / "plot.png").string()).size(), cv::Size(320, 240));
+}
+
+TEST(DetectBallsCli, ALearnedColourModelFindsThePinkBall) {
+  TempDir dir;
+  const std::string photo = write_photo(dir);
+  const std::string model = (dir / "pink.json").string();
+  const CliResult learn =
+      run_cli({"colours", "learn", "--image", photo, "--at", "250,80;245,85", "--out", model});
+  ASSERT_EQ(learn.exit_code, 0) << learn.stderr_text;
+  EXPECT_NE(learn.stdout_text.find("1 colour from 2 clicks"), std::string::npos)
+      << learn.stdout_text;
+  const CliResult r = run_cli({"detect", "balls", "--image", photo, "--colours", model, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const nlohmann::json json = nlohmann::json::parse(r.stdout_text);
+  ASSERT_EQ(json["balls"].size(), 1u);
+  EXPECT_NEAR(json["balls"][0]["x_px"].get<double>(), 250.0, 1.0);
+}
+
+TEST(DetectBallsCli, BadInputGetsOneLineNamingIt) {
+  TempDir dir;
+  const std::string photo = write_photo(dir);
+  expect_one_line_error(run_cli({"detect", "balls", "--image", (dir / "none.png").string()}),
+                        "none.png");
+  expect_one_line_error(
+      run_cli({"detect", "balls", "--image", photo, "--colours", (dir / "none.json").string()}),
+      "none.json");
+  expect_one_line_error(run_cli({"detect", "balls", "--image", photo, "--min-radius-px", "0"}),
+                        "min_radius_px");
+  expect_one_line_error(run_cli({"colours", "learn", "--image", photo, "--at", "10,x", "--out",
+                                 (dir / "c.json").string()}),
+                        "--at (click 1)");
+  expect_one_line_error(run_cli({"colours", "learn", "--image", photo, "--at", "400,10", "--out",
+                                 (dir / "c.json").string()}),
+                        "click 1");
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.json"));
+}
+
+}  // namespace
+}  // namespace ballsight::test
