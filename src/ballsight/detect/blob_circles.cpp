@@ -13,22 +13,22 @@ namespace {
 constexpr int kMaxCirclesPerBlob = 16;
 
 // Local maxima of the distance transform (image coordinates), largest first.
-std::vector<BlobCircle> distance_maxima(const cv::Mat1f& distance, cv::Point origin,
+std::vector<BlobCircle> distance_maxima(const cv::Mat1f& distance, const BlobMask& blob,
                                         double min_radius) {
   std::vector<BlobCircle> maxima;
   for (int y = 0; y < distance.rows; ++y) {
     for (int x = 0; x < distance.cols; ++x) {
-      const float d = distance(y, x);
+      const double d = distance(y, x);
       if (d < min_radius) continue;
       bool peak = true;
       for (int dy = -1; dy <= 1 && peak; ++dy)
         for (int dx = -1; dx <= 1 && peak; ++dx) {
           const int nx = x + dx, ny = y + dy;
           if (nx >= 0 && ny >= 0 && nx < distance.cols && ny < distance.rows &&
-              distance(ny, nx) > d)
+              distance(ny, nx) > distance(y, x))
             peak = false;
         }
-      if (peak) maxima.push_back({Vec2(origin.x + x, origin.y + y), d, 0.0});
+      if (peak) maxima.push_back({blob.to_image(x, y), d, 0.0});
     }
   }
   std::stable_sort(maxima.begin(), maxima.end(), [](const BlobCircle& a, const BlobCircle& b) {
@@ -56,18 +56,21 @@ std::vector<BlobCircle> propose(const std::vector<BlobCircle>& maxima,
 
 // Points of the blob's outline, halfway between a blob pixel and a neighbour outside it; the
 // image border is not an outline.
-std::vector<Vec2> outline(const cv::Mat1b& mask, cv::Point origin, cv::Size image_size) {
+std::vector<Vec2> outline(const BlobMask& blob) {
   static constexpr int kStep[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  const cv::Mat1b& mask = blob.mask;
   std::vector<Vec2> points;
   for (int y = 0; y < mask.rows; ++y) {
     for (int x = 0; x < mask.cols; ++x) {
       if (!mask(y, x)) continue;
       for (const auto& step : kStep) {
         const int nx = x + step[0], ny = y + step[1];
-        const int ix = origin.x + nx, iy = origin.y + ny;
-        if (ix < 0 || iy < 0 || ix >= image_size.width || iy >= image_size.height) continue;
+        const Vec2 outside = blob.to_image(nx, ny);
+        if (outside.x() < -0.5 || outside.y() < -0.5 || outside.x() > blob.image_size.width - 0.5 ||
+            outside.y() > blob.image_size.height - 0.5)
+          continue;
         if (nx >= 0 && ny >= 0 && nx < mask.cols && ny < mask.rows && mask(ny, nx)) continue;
-        points.emplace_back(origin.x + x + 0.5 * step[0], origin.y + y + 0.5 * step[1]);
+        points.push_back(blob.to_image(x + 0.5 * step[0], y + 0.5 * step[1]));
       }
     }
   }
@@ -173,11 +176,6 @@ bool inside_other(const std::vector<BlobCircle>& circles, std::size_t self, cons
   return false;
 }
 
-bool in_mask(const cv::Mat1b& mask, cv::Point origin, int x, int y) {
-  const int mx = x - origin.x, my = y - origin.y;
-  return mx >= 0 && my >= 0 && mx < mask.cols && my < mask.rows && mask(my, mx);
-}
-
 // Share of the circle's outline bins holding an outline point, among the bins that are neither
 // outside the image nor hidden by another circle (at least 30 % of all bins count).
 double outline_support(const std::vector<Vec2>& part, const std::vector<BlobCircle>& circles,
@@ -208,9 +206,9 @@ double outline_support(const std::vector<Vec2>& part, const std::vector<BlobCirc
 
 // Share of blob pixels in the disc (fill) and in the ring just outside it (ring), over pixels
 // inside the image and, for the ring, not inside another circle.
-void fill_and_ring(const cv::Mat1b& mask, cv::Point origin, cv::Size image_size,
-                   const std::vector<BlobCircle>& circles, std::size_t self, double& fill,
-                   double& ring) {
+void fill_and_ring(const BlobMask& blob, const std::vector<BlobCircle>& circles, std::size_t self,
+                   double& fill, double& ring) {
+  const cv::Size image_size = blob.image_size;
   const BlobCircle& circle = circles[self];
   const double r = circle.radius_px;
   const double ring_in = r + std::max(1.0, 0.15 * r), ring_out = r + std::max(2.5, 0.5 * r);
@@ -226,11 +224,11 @@ void fill_and_ring(const cv::Mat1b& mask, cv::Point origin, cv::Size image_size,
       const double d = (q - circle.center_px).norm();
       if (d <= r) {
         ++disc;
-        disc_in += in_mask(mask, origin, x, y);
+        disc_in += blob.contains(q);
       } else if (d >= ring_in && d <= ring_out &&
                  !inside_other(circles, self, q, std::max(1.0, 0.15 * r))) {
         ++around;
-        around_in += in_mask(mask, origin, x, y);
+        around_in += blob.contains(q);
       }
     }
   }
@@ -240,20 +238,26 @@ void fill_and_ring(const cv::Mat1b& mask, cv::Point origin, cv::Size image_size,
 
 }  // namespace
 
-std::vector<BlobCircle> circles_in_blob(const cv::Mat1b& mask, cv::Point origin,
-                                        cv::Size image_size, const BlobCircleOptions& options) {
+bool BlobMask::contains(const Vec2& q) const {
+  const Vec2 m = q - origin;
+  const auto x = static_cast<int>(std::lround(m.x())), y = static_cast<int>(std::lround(m.y()));
+  return x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask(y, x);
+}
+
+std::vector<BlobCircle> circles_in_blob(const BlobMask& blob, const BlobCircleOptions& options) {
   cv::Mat1f distance;
-  cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_5);
+  cv::distanceTransform(blob.mask, distance, cv::DIST_L2, cv::DIST_MASK_5);
   std::vector<BlobCircle> circles =
-      propose(distance_maxima(distance, origin, options.min_radius_px - 0.5), options);
+      propose(distance_maxima(distance, blob, options.min_radius_px - 0.5), options);
   if (circles.empty()) return circles;
-  const std::vector<Vec2> points = outline(mask, origin, image_size);
+  const std::vector<Vec2> points = outline(blob);
+  const cv::Size image_size = blob.image_size;
   refine(points, circles);
   const auto parts = assign(points, circles, false);
   std::vector<BlobCircle> kept;
   for (std::size_t k = 0; k < circles.size(); ++k) {
     double fill = 0.0, ring = 0.0;
-    fill_and_ring(mask, origin, image_size, circles, k, fill, ring);
+    fill_and_ring(blob, circles, k, fill, ring);
     BlobCircle circle = circles[k];
     circle.score = outline_support(parts[k], circles, k, image_size) * fill * (1.0 - ring);
     // The size bounds are what is looked for; a measured radius may pass them by 5 %.

@@ -26,9 +26,19 @@ struct BlobCircleOptions {
   double min_score = 0.35;
 };
 
-/// Circles in a blob. `mask` (255 inside, holes filled) covers the image region whose top-left
-/// pixel is `origin`; `image_size` is the whole image's.
-std::vector<BlobCircle> circles_in_blob(const cv::Mat1b& mask, cv::Point origin,
-                                        cv::Size image_size, const BlobCircleOptions& options);
+/// A blob's filled mask (255 inside) over part of an image: mask pixel (x, y) is image pixel
+/// origin + (x, y).
+struct BlobMask {
+  cv::Mat1b mask;
+  Vec2 origin = Vec2::Zero();
+  cv::Size image_size;  // the whole image's
+
+  Vec2 to_image(double x, double y) const { return origin + Vec2(x, y); }
+  /// Whether the image point `q` lies in the blob (nearest mask pixel).
+  bool contains(const Vec2& q) const;
+};
+
+/// Circles in a blob, in image pixels.
+std::vector<BlobCircle> circles_in_blob(const BlobMask& blob, const BlobCircleOptions& options);
 
 }  // namespace ballsight

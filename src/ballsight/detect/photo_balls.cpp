@@ -24,6 +24,7 @@ namespace {
 // (the growth colours are for its rim, its shade and its pale top).
 constexpr double kMinSeedShare = 0.3;
 constexpr double kMinBoxFill = 0.15;
+constexpr double kMinBlobSeedShare = 0.15;
 // Ring pixels of the ball's own hue family (within this of its mean hue, saturation >= 0.2):
 // foliage, a wall or a court of the ball's colour, not a ball standing out.
 constexpr double kAlikeHueDeg = 40.0;
@@ -158,6 +159,12 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, std::vector<PhotoBall>&
   if (area < std::numbers::pi * min_r * min_r / 3.0 ||
       area > 6.0 * std::numbers::pi * max_r * max_r || area < kMinBoxFill * blob_.bbox.area())
     return;
+  // Most of a ball is of a seed colour (kMinSeedShare of its disc); a blob grown mostly through
+  // the looser growth colours is shade, foliage or a wall.
+  std::size_t seeds = 0;
+  const auto* pixels = bgr.ptr<cv::Vec3b>(0);
+  for (int index : blob_.pixels) seeds += (table_.classify(pixels[index]) & kBallSeedClass) != 0;
+  if (static_cast<double>(seeds) < kMinBlobSeedShare * area) return;
   constexpr int kMargin = 3;
   const cv::Rect region =
       cv::Rect(blob_.bbox.x - kMargin, blob_.bbox.y - kMargin, blob_.bbox.width + 2 * kMargin,
@@ -170,11 +177,13 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, std::vector<PhotoBall>&
   for (int index : blob_.pixels)
     patch_(index / bgr.cols - region.y + 1, index % bgr.cols - region.x + 1) = 255;
   cv::floodFill(patch_, cv::Point(0, 0), 128);
-  cv::Mat1b filled;
-  cv::compare(patch_(cv::Rect(1, 1, region.width, region.height)), 128, filled, cv::CMP_NE);
+  BlobMask blob;
+  cv::compare(patch_(cv::Rect(1, 1, region.width, region.height)), 128, blob.mask, cv::CMP_NE);
+  blob.origin = Vec2(region.x, region.y);
+  blob.image_size = bgr.size();
   BlobCircleOptions geometry = options_.circles;
   geometry.min_score = 0.0;
-  for (const BlobCircle& circle : circles_in_blob(filled, region.tl(), bgr.size(), geometry)) {
+  for (const BlobCircle& circle : circles_in_blob(blob, geometry)) {
     const ColourSupport colour = colour_support(bgr, table_, circle);
     if (colour.seed_share < kMinSeedShare) continue;
     const double score = circle.score * (1.0 - colour.ring_alike);
