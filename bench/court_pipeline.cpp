@@ -1,10 +1,10 @@
-// Court vision speed: four 1280x720 frames (one per corner camera) -> world model, for the
-// report's pipeline (HSV, median filter, contours, z = 0, fixed-distance merge) and ballsight's
-// (the targets: at most 15 ms and at least 4x faster than the report's in the same run), and the
-// stages of ballsight's alone. Both run one std::async task per camera (the report's section 7.7);
-// OpenCV's own threads are off so that the cameras share the cores the same way in both.
-// Run: build/bin/bench_court_pipeline (items processed = frame sets or frames; CPU time is the
-// whole process's, wall time is real time).
+// Court vision speed: four 1920x1080 frames (the report's IP cameras, one per corner camera) ->
+// world model, for the report's pipeline (HSV, median filter, contours, z = 0, fixed-distance
+// merge) and ballsight's (the targets: at most 15 ms and at least 4x faster than the report's in
+// the same run), and the stages of ballsight's alone. Both run one std::async task per camera (the
+// report's section 7.7); OpenCV's own threads are off so that the cameras share the cores the same
+// way in both. Run: build/bin/bench_court_pipeline (items processed = frame sets or frames; CPU
+// time is the whole process's, wall time is real time).
 
 #include "ballsight/pipeline/court_pipeline.hpp"
 
@@ -27,11 +27,15 @@ struct Setup {
   std::vector<cv::Mat> frames;
 };
 
-// 40 balls (a quarter in clusters, some by the robot), shadow band, noise: rendered once.
+// 40 balls (a quarter in clusters, some by the robot), the weather of scene 7, noise: rendered
+// once.
 const Setup& setup() {
   static const Setup s = [] {
     cv::setNumThreads(1);
-    const sim::CourtRig rig = sim::make_court_rig({}, {}, 1);
+    sim::CourtRigOptions report_cameras;
+    report_cameras.width = sim::kReportCameraWidth;
+    report_cameras.height = sim::kReportCameraHeight;
+    const sim::CourtRig rig = sim::make_court_rig({}, report_cameras, 1);
     sim::CourtScenarioOptions options;
     options.ball_count = 40;
     const sim::CourtScene scene = sim::make_court_scene(rig.court, options, 7);
@@ -54,7 +58,7 @@ void run_frame_sets(benchmark::State& state, CourtPipeline& pipeline) {
 void BM_CourtFrameSetSeedPipeline(benchmark::State& state) {
   const auto pipeline = make_seed_pipeline(setup().cameras);
   run_frame_sets(state, *pipeline);
-  state.SetLabel("4 x 1280x720 -> world model, the report's pipeline");
+  state.SetLabel("4 x 1920x1080 -> world model, the report's pipeline");
 }
 BENCHMARK(BM_CourtFrameSetSeedPipeline)
     ->Unit(benchmark::kMillisecond)
@@ -64,7 +68,7 @@ BENCHMARK(BM_CourtFrameSetSeedPipeline)
 void BM_CourtFrameSetBallsight(benchmark::State& state) {
   const auto pipeline = make_ballsight_pipeline(setup().cameras);
   run_frame_sets(state, *pipeline);
-  state.SetLabel("4 x 1280x720 -> world model, ballsight");
+  state.SetLabel("4 x 1920x1080 -> world model, ballsight");
 }
 BENCHMARK(BM_CourtFrameSetBallsight)
     ->Unit(benchmark::kMillisecond)
@@ -77,7 +81,7 @@ void BM_CourtDetectorOneFrame(benchmark::State& state) {
   CourtDetector detector(s.cameras[0]);
   for (auto _ : state) benchmark::DoNotOptimize(detector.detect(s.frames[0]));
   state.SetItemsProcessed(state.iterations());
-  state.SetLabel("1280x720, camera 0");
+  state.SetLabel("1920x1080, camera 0");
 }
 BENCHMARK(BM_CourtDetectorOneFrame)->Unit(benchmark::kMillisecond);
 
@@ -98,7 +102,7 @@ void BM_SeedDetectorOneFrame(benchmark::State& state) {
   const SeedDetectorOptions options;
   for (auto _ : state) benchmark::DoNotOptimize(detect_seed(s.frames[0], options));
   state.SetItemsProcessed(state.iterations());
-  state.SetLabel("1280x720, camera 0");
+  state.SetLabel("1920x1080, camera 0");
 }
 BENCHMARK(BM_SeedDetectorOneFrame)->Unit(benchmark::kMillisecond);
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ballsight/eval/court_eval.hpp"
+#include "ballsight/sim/court_rig.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -36,6 +37,8 @@ void run_eval_court(const EvalCourtArgs& args) {
 
 void add_eval_court_command(CLI::App& eval) {
   auto args = std::make_shared<EvalCourtArgs>();
+  args->options.rig.width = sim::kReportCameraWidth;
+  args->options.rig.height = sim::kReportCameraHeight;
   CLI::App* cmd = eval.add_subcommand(
       "court",
       "Both court methods (seed: the report's pipeline; ballsight) on simulated scenes with 20-60 "
@@ -45,6 +48,12 @@ void add_eval_court_command(CLI::App& eval) {
   add_seed_option(*cmd, args->options.seed, "Random seed: same seed, same figures");
   cmd->add_option("--scenes", args->options.scenes, "Number of scenes [1, 1000]")
       ->capture_default_str();
+  cmd->add_option("--width", args->options.rig.width, "Camera image width, px")
+      ->capture_default_str();
+  cmd->add_option("--height", args->options.rig.height, "Camera image height, px")
+      ->capture_default_str();
+  cmd->add_flag("--distractors", args->options.scenario.distractors,
+                "Fallen leaves and a water bottle of a ball's colour on some scenes");
   cmd->add_flag("--no-net", args->no_net,
                 "Scenes on a court without a net (the simulator of before the net)");
   cmd->add_flag("--json", args->json,

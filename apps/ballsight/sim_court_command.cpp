@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "ballsight/core/error.hpp"
 #include "ballsight/sim/court_dataset.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
@@ -18,15 +19,28 @@ struct SimCourtArgs {
   sim::CourtDatasetOptions dataset;
   std::optional<int> balls;
   std::optional<double> brightness;
+  std::string light = "random";
   bool no_shadow = false;
+  bool no_wear = false;
+  bool distractors = false;
   bool no_net = false;
 };
+
+std::optional<sim::LightCondition> parse_light(const std::string& name) {
+  if (name == "random") return std::nullopt;
+  if (const auto light = sim::light_condition_named(name)) return light;
+  throw InputError("--light: unknown light '" + name +
+                   "'; expected random, sun, hard_shadow or overcast");
+}
 
 void run_sim_court(const SimCourtArgs& args) {
   sim::CourtDatasetOptions options = args.dataset;
   options.scenario.ball_count = args.balls;
   options.scenario.brightness_gain = args.brightness;
+  options.scenario.light = parse_light(args.light);
   options.scenario.shadow = !args.no_shadow;
+  if (args.no_wear) options.scenario.worn_share_max = 0.0;
+  options.scenario.distractors = args.distractors;
   options.court.net.enabled = !args.no_net;
   const auto files = sim::write_court_dataset(options, args.out_dir);
   std::cout << "wrote " << files.size() << " files to " << args.out_dir << "\n";
@@ -36,6 +50,8 @@ void run_sim_court(const SimCourtArgs& args) {
 
 void add_sim_court_command(CLI::App& sim) {
   auto args = std::make_shared<SimCourtArgs>();
+  args->dataset.rig.width = sim::kReportCameraWidth;
+  args->dataset.rig.height = sim::kReportCameraHeight;
   CLI::App* cmd = sim.add_subcommand(
       "court",
       "Tennis court seen by four corner-pole cameras: court_KKKK_camC.png and court_KKKK.json "
@@ -56,7 +72,13 @@ void add_sim_court_command(CLI::App& sim) {
       ->capture_default_str();
   cmd->add_option("--brightness", args->brightness,
                   "Brightness gain (0, 4] (default: random 0.8-1.2 per scene)");
+  cmd->add_option("--light", args->light,
+                  "sun, hard_shadow, overcast, or random: one of them per scene")
+      ->capture_default_str();
   cmd->add_flag("--no-shadow", args->no_shadow, "No shadow band across the court");
+  cmd->add_flag("--no-wear", args->no_wear, "No worn (paler) balls");
+  cmd->add_flag("--distractors", args->distractors,
+                "Fallen leaves and a water bottle of a ball's colour on some scenes");
   cmd->add_flag("--no-net", args->no_net, "No net across the court (the simulator of before)");
   cmd->callback([args] { run_sim_court(*args); });
 }

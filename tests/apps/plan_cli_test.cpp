@@ -107,7 +107,7 @@ TEST(PlanCli, BadInputFailsWithOneLine) {
   expect_one_line_error(plan({"--balls", header, "--robot", "0,0,0"}), "header x_m,y_m");
   expect_one_line_error(plan({"--balls", twice, "--robot", "0,0,0"}),
                         "balls[0] and balls[2]: duplicate ball");
-  expect_one_line_error(plan({"--world", json, "--robot", "0,0,0"}), "balls[0]: key 'y_m'");
+  expect_one_line_error(plan({"--world", json, "--robot", "0,0,0"}), "balls[0].y_m: missing");
   expect_one_line_error(plan({"--balls", good, "--robot", "0.05,3,0", "--site", kSite}),
                         "inside the net");
   expect_one_line_error(

@@ -28,8 +28,9 @@ TEST(SimCourtCli, WritesImagesAndTruth) {
 TEST(SimCourtCli, HelpNamesEveryOption) {
   const CliResult r = run_cli({"sim", "court", "--help"});
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* option : {"--out", "--seed", "--scenes", "--balls", "--width", "--height",
-                             "--chessboards", "--noise", "--brightness", "--no-shadow"}) {
+  for (const char* option :
+       {"--out", "--seed", "--scenes", "--balls", "--width", "--height", "--chessboards", "--noise",
+        "--brightness", "--light", "--no-shadow", "--no-wear", "--distractors"}) {
     EXPECT_NE(r.stdout_text.find(option), std::string::npos) << option;
   }
 }
@@ -44,6 +45,7 @@ TEST(SimCourtCli, BadOptionsFailWithOneLine) {
       {"--out", dir.string(), "--scenes", "-1"},    {"--out", dir.string(), "--noise", "-2"},
       {"--out", dir.string(), "--brightness", "0"}, {"--out", dir.string(), "--chessboards", "x"},
       {"--out", dir.string(), "--frobnicate"},      {"--seed", "1"},
+      {"--out", dir.string(), "--light", "dusk"},
   };
   for (const auto& args : bad) {
     std::vector<std::string> command = {"sim", "court"};

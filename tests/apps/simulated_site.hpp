@@ -1,7 +1,8 @@
 #pragma once
-// A site whose cameras are recorded: two simulated scenes (`ballsight sim court`), each camera's
-// frames in a folder of its own, its true calibration in camC.yml, and the example site pointing
-// at the folders. For the CLI tests of `court run` and `serve --site`.
+// A site whose cameras are recorded: two simulated scenes (`ballsight sim court`, 1280 x 720 in
+// sun: the light conditions are measured by `eval court`), each camera's frames in a folder of
+// its own, its true calibration in camC.yml, and the example site pointing at the folders. For the
+// CLI tests of `court run` and `serve --site`.
 
 #include <gtest/gtest.h>
 
@@ -24,8 +25,8 @@ inline const char* const kNames[] = {"ne", "se", "sw", "nw"};
 // and the example site with folder sources.
 inline std::filesystem::path simulated_site(const TempDir& temp) {
   const std::filesystem::path dir = temp / "site";
-  const CliResult sim =
-      run_cli({"sim", "court", "--out", dir.string(), "--seed", "4", "--scenes", "2"});
+  const CliResult sim = run_cli({"sim", "court", "--out", dir.string(), "--seed", "4", "--scenes",
+                                 "2", "--width", "1280", "--height", "720", "--light", "sun"});
   EXPECT_EQ(sim.exit_code, 0) << sim.stderr_text;
   const nlohmann::json truth = nlohmann::json::parse(read_file(dir / "court_0000.json"));
   for (int c = 0; c < 4; ++c) {

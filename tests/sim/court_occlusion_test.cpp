@@ -54,6 +54,44 @@ TEST(CourtOcclusion, BallRightBehindTheRobotIsHiddenFromThatCameraOnly) {
   }
 }
 
+// A bottle stands up like the robot: it hides a ball right behind it from one camera, and is
+// seen by all four; a leaf lies flat and hides nothing, but colours the floor.
+TEST(CourtOcclusion, ABottleHidesTheBallBehindItALeafColoursTheFloor) {
+  const testing::CourtFixture& court = shared_court();
+  CourtScene scene;
+  scene.robot.pose = {{-8.0, 1.0}, 0.3};
+  scene.effects.noise_sigma = 0.0;
+  FloorBottle bottle;
+  bottle.center_in_field = Vec2(5.0, -2.0);
+  scene.bottles.push_back(bottle);
+  const Vec3 eye = court.rig.cameras[0].center_in_field();
+  const Vec3 d = Vec3(5.0, -2.0, 0.12) - eye;
+  const Vec3 ball = eye + (kTennisBallRadiusM - eye.z()) / d.z() * d;
+  ASSERT_GT((ball.head<2>() - bottle.center_in_field).norm(),
+            bottle.radius_m + kTennisBallRadiusM + 0.01);
+  scene.balls.push_back({ObjectKind::tennis_ball, 0, ball, kTennisBallRadiusM, kTennisBallBgr});
+
+  const auto rendered = render_in_all_cameras(scene);
+  EXPECT_LT(rendered.truth[0].views[0].visible_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(rendered.truth[0].views[2].visible_fraction, 1.0);
+  const int bottle_index = static_cast<int>(scene.spheres().size()) + 1;
+  for (size_t c = 0; c < 4; ++c)
+    EXPECT_GT(pixels_showing(rendered.renders[c], bottle_index), 4) << "camera " << c;
+
+  FloorLeaf leaf;
+  leaf.center_in_field = Vec2(3.0, 3.0);
+  leaf.half_length_m = 0.09;
+  leaf.half_width_m = 0.05;
+  scene.leaves.push_back(leaf);
+  const cv::Mat with_leaf = court.renderers[0].render(scene, 0).bgr;
+  cv::Mat differs;
+  cv::compare(with_leaf, rendered.renders[0].bgr, differs, cv::CMP_NE);
+  EXPECT_GT(cv::countNonZero(differs.reshape(1)), 10);
+  EXPECT_EQ(cv::countNonZero(court.renderers[0].render(scene, 0).object_ids !=
+                             rendered.renders[0].object_ids),
+            0);
+}
+
 TEST(CourtOcclusion, TouchingBallsHideEachOtherOnlyPartly) {
   CourtScene scene;
   scene.robot.pose = {{-8.0, -3.0}, 0.0};

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
 #include <opencv2/imgproc.hpp>
 
+#include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/sim/tennis_net.hpp"
 #include "sim/court_test_support.hpp"
@@ -132,6 +135,75 @@ TEST(CourtScenario, BallCountLightingAndNoiseFollowTheOptions) {
   EXPECT_EQ(scene.lighting.sun_visibility(scene.lighting.shadow->point_in_field), 0.0);
 }
 
+// Over a few dozen scenes every light condition comes up with its own sun and band, some balls
+// are worn (paler: less saturated), and with distractors some scenes have leaves or a bottle clear
+// of the balls.
+TEST(CourtScenario, WeatherWearAndDistractorsVaryBetweenScenes) {
+  const TennisCourtSpec court;
+  CourtScenarioOptions options;
+  options.distractors = true;
+  std::map<LightCondition, int> conditions;
+  int worn = 0, leafy = 0, bottled = 0;
+  const auto saturation = [](const cv::Vec3b& bgr) {
+    const int hi = std::max({bgr[0], bgr[1], bgr[2]}), lo = std::min({bgr[0], bgr[1], bgr[2]});
+    return static_cast<double>(hi - lo) / hi;
+  };
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const CourtScene scene = make_court_scene(court, options, seed);
+    EXPECT_EQ(make_court_scene(court, {}, seed).balls.size(), scene.balls.size());
+    const Lighting& light = scene.lighting;
+    ++conditions[light.condition];
+    if (light.condition == LightCondition::overcast) {
+      EXPECT_FALSE(light.shadow);
+      EXPECT_GE(light.ambient, 0.6);
+      EXPECT_LT(scene.effects.brightness_gain, 0.9);
+    } else {
+      ASSERT_TRUE(light.shadow);
+      if (light.condition == LightCondition::hard_shadow) {
+        EXPECT_LE(light.shadow->soft_edge_m, 0.06);
+        EXPECT_LE(light.ambient, 0.35);
+        EXPECT_LT(light.to_sun.z(), std::sin(rad_from_deg(40.0)) + 1e-9);
+      }
+    }
+    for (const SceneSphere* ball : of_kind(scene, ObjectKind::tennis_ball)) {
+      if (ball->bgr == kTennisBallBgr) continue;
+      ++worn;
+      EXPECT_LT(saturation(ball->bgr), saturation(kTennisBallBgr));
+    }
+    leafy += !scene.leaves.empty();
+    for (const FloorBottle& bottle : scene.bottles) {
+      ++bottled;
+      for (const SceneSphere& ball : scene.balls)
+        EXPECT_GT((ball.center_in_field.head<2>() - bottle.center_in_field).norm(),
+                  ball.radius_m + bottle.radius_m);
+    }
+  }
+  EXPECT_EQ(conditions.size(), 3u);
+  EXPECT_GT(worn, 20);
+  EXPECT_GT(leafy, 4);
+  EXPECT_LT(leafy, 20);
+  EXPECT_GT(bottled, 1);
+  EXPECT_LT(bottled, 14);
+}
+
+TEST(CourtScenario, LightWearAndDistractorsFollowTheOptions) {
+  CourtScenarioOptions options;
+  options.light = LightCondition::hard_shadow;
+  options.worn_share_max = 0.0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const CourtScene scene = make_court_scene({}, options, seed);
+    EXPECT_EQ(scene.lighting.condition, LightCondition::hard_shadow);
+    EXPECT_TRUE(scene.leaves.empty());  // distractors are off by default
+    EXPECT_TRUE(scene.bottles.empty());
+    for (const SceneSphere* ball : of_kind(scene, ObjectKind::tennis_ball))
+      EXPECT_EQ(ball->bgr, kTennisBallBgr);
+  }
+  EXPECT_EQ(light_condition_named("overcast"), LightCondition::overcast);
+  EXPECT_EQ(light_condition_name(LightCondition::hard_shadow), "hard_shadow");
+  EXPECT_FALSE(light_condition_named("dusk"));
+}
+
 TEST(CourtScenario, EveryCameraSeesSixWellSpreadReferenceBalls) {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     SCOPED_TRACE("seed " + std::to_string(seed));
@@ -189,6 +261,22 @@ TEST(CourtScenario, InvalidOptionsAndScenesAreNamed) {
   scene.lighting.shadow = ShadowBand{};
   scene.lighting.shadow->width_m = 0.0;
   EXPECT_THROW(scene.validate(), InputError);
+  scene.lighting = {};
+  scene.leaves.push_back(FloorLeaf{});
+  scene.leaves[0].axis = Vec2(1, 1);
+  EXPECT_THROW(scene.validate(), InputError);
+  scene.leaves.clear();
+  scene.bottles.push_back(FloorBottle{});
+  scene.bottles[0].radius_m = -0.03;
+  try {
+    scene.validate();
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bottles[0]"), std::string::npos) << e.what();
+  }
+  options = {};
+  options.worn_share_max = 1.5;
+  EXPECT_THROW(make_court_scene({}, options, 1), InputError);
 }
 
 }  // namespace

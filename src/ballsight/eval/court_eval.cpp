@@ -11,6 +11,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/court_plots.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/sim/court_renderer.hpp"
@@ -179,6 +180,8 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
                       options.match_radius_m);
       if (method.method == CourtMethod::ballsight) ballsight_mistakes = score.mistakes;
       method.scores.add(score);
+      method.by_condition[std::string(sim::light_condition_name(scene.lighting.condition))].add(
+          score);
     }
     if (options.plot_dir &&
         (k < options.plot_scenes || (options.plot_mistakes && !ballsight_mistakes.empty())))
@@ -194,30 +197,39 @@ nlohmann::json finite_or_null(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
+// The ball and robot figures of `s`.
+nlohmann::json scores_json(const CourtScores& s) {
+  nlohmann::json j;
+  j["scenes"] = s.scenes;
+  j["recall"] = finite_or_null(s.recall());
+  j["precision"] = finite_or_null(s.precision());
+  j["duplicates"] = s.duplicates;
+  j["false_positives"] = s.false_positives;
+  j["ball_error_mean_cm"] = finite_or_null(100.0 * s.ball_error_mean_m());
+  j["ball_error_p95_cm"] = finite_or_null(100.0 * s.ball_error_p95_m());
+  j["robot_position_error_cm"] = finite_or_null(100.0 * s.robot_position_error_mean_m());
+  j["robot_position_error_max_cm"] = finite_or_null(100.0 * s.robot_position_error_max_m());
+  j["robot_heading_error_deg"] = finite_or_null(deg_from_rad(s.robot_heading_error_mean_rad()));
+  j["robot_heading_error_max_deg"] = finite_or_null(deg_from_rad(s.robot_heading_error_max_rad()));
+  j["robot_found_scenes"] = s.robot_found;
+  j["balls_counted"] = s.counted;
+  j["balls_unseen"] = s.unseen;
+  j["estimates"] = s.estimates;
+  j["true_positives"] = s.true_positives;
+  j["correct_extras"] = s.correct_extras;
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json court_eval_json(const CourtEvalReport& report) {
   nlohmann::json methods = nlohmann::json::object();
   for (const MethodReport& m : report.methods) {
     const CourtScores& s = m.scores;
-    nlohmann::json j;
-    j["recall"] = finite_or_null(s.recall());
-    j["precision"] = finite_or_null(s.precision());
-    j["duplicates"] = s.duplicates;
-    j["false_positives"] = s.false_positives;
-    j["ball_error_mean_cm"] = finite_or_null(100.0 * s.ball_error_mean_m());
-    j["ball_error_p95_cm"] = finite_or_null(100.0 * s.ball_error_p95_m());
-    j["robot_position_error_cm"] = finite_or_null(100.0 * s.robot_position_error_mean_m());
-    j["robot_position_error_max_cm"] = finite_or_null(100.0 * s.robot_position_error_max_m());
-    j["robot_heading_error_deg"] = finite_or_null(deg_from_rad(s.robot_heading_error_mean_rad()));
-    j["robot_heading_error_max_deg"] =
-        finite_or_null(deg_from_rad(s.robot_heading_error_max_rad()));
-    j["robot_found_scenes"] = s.robot_found;
-    j["balls_counted"] = s.counted;
-    j["balls_unseen"] = s.unseen;
-    j["estimates"] = s.estimates;
-    j["true_positives"] = s.true_positives;
-    j["correct_extras"] = s.correct_extras;
+    nlohmann::json j = scores_json(s);
+    nlohmann::json conditions = nlohmann::json::object();
+    for (const auto& [name, scores] : m.by_condition) conditions[name] = scores_json(scores);
+    j["by_condition"] = conditions;
     j["frame_set_ms_mean"] =
         finite_or_null(m.frame_set_ms.empty()
                            ? NAN
@@ -244,6 +256,22 @@ nlohmann::json court_eval_json(const CourtEvalReport& report) {
   return out;
 }
 
+namespace {
+
+// One row of the table without its time: recall, precision, duplicates, false positives, ball
+// and robot errors.
+std::string scores_line(const std::string& name, const CourtScores& s) {
+  char line[256];
+  std::snprintf(
+      line, sizeof line, "%-10s %6.2f%%  %8.2f%%  %3d %3d  %5.2f cm  %5.2f cm  %6.2f cm  %6.3f deg",
+      name.c_str(), 100.0 * s.recall(), 100.0 * s.precision(), s.duplicates, s.false_positives,
+      100.0 * s.ball_error_mean_m(), 100.0 * s.ball_error_p95_m(),
+      100.0 * s.robot_position_error_mean_m(), deg_from_rad(s.robot_heading_error_mean_rad()));
+  return line;
+}
+
+}  // namespace
+
 std::string court_eval_text(const CourtEvalReport& report) {
   constexpr size_t kMistakesShown = 20;
   std::ostringstream out;
@@ -263,14 +291,9 @@ std::string court_eval_text(const CourtEvalReport& report) {
     const CourtScores& s = m.scores;
     double ms = 0.0;
     for (double v : m.frame_set_ms) ms += v / static_cast<double>(m.frame_set_ms.size());
-    std::snprintf(
-        line, sizeof line,
-        "%-10s %6.2f%%  %8.2f%%  %3d %3d  %5.2f cm  %5.2f cm  %6.2f cm  %6.3f deg  %6.1f\n",
-        court_method_name(m.method).c_str(), 100.0 * s.recall(), 100.0 * s.precision(),
-        s.duplicates, s.false_positives, 100.0 * s.ball_error_mean_m(),
-        100.0 * s.ball_error_p95_m(), 100.0 * s.robot_position_error_mean_m(),
-        deg_from_rad(s.robot_heading_error_mean_rad()), ms);
-    out << line;
+    out << scores_line(court_method_name(m.method), s) << "  " << fixed(ms, 1) << "\n";
+    for (const auto& [name, scores] : m.by_condition)
+      out << scores_line("  " + name, scores) << "  (" << scores.scenes << " scenes)\n";
     if (m.method == CourtMethod::ballsight && !s.mistakes.empty()) {
       out << "  ballsight's mistakes (scene: kind at field position):\n";
       const size_t shown = std::min<size_t>(s.mistakes.size(), kMistakesShown);

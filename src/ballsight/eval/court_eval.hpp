@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -42,6 +43,8 @@ struct MethodReport {
   EvalCalibration calibration;
   std::string calibration_error;     // why the method could not be calibrated ("" when it was)
   std::vector<double> frame_set_ms;  // wall time of one frame set -> world model, per scene
+  /// The scores of the scenes of each light condition (sim::light_condition_name).
+  std::map<std::string, CourtScores> by_condition;
 };
 
 struct CourtEvalReport {

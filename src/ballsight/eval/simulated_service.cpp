@@ -131,7 +131,8 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   std::vector<FieldCamera> cameras;
   for (const sim::CourtCamera& c : s.rig.cameras) {
     s.renderers.emplace_back(c, s.rig.court);
-    s.lit.push_back(s.renderers.back().lit_background(s.world->scene().lighting));  // one sun
+    s.lit.push_back(s.renderers.back().lit_background(s.world->scene().lighting,
+                                                      s.world->scene().leaves));  // one sun
     cameras.push_back({c.camera, c.camera_from_field});
   }
   s.publisher = std::make_unique<UpdatePublisher>(

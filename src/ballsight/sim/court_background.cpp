@@ -1,5 +1,6 @@
 #include "ballsight/sim/court_background.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -115,14 +116,28 @@ void CourtBackground::precompute_net(const CourtCamera& camera, const RayTable& 
   }
 }
 
-void CourtBackground::light(const Lighting& lighting, cv::Mat& bgr) const {
+void CourtBackground::light(const Lighting& lighting, const std::vector<FloorLeaf>& leaves,
+                            cv::Mat& bgr) const {
+  // The leaves' bounding box on the floor: most pixels need no test against each leaf.
+  Eigen::AlignedBox2d litter;
+  for (const FloorLeaf& leaf : leaves) {
+    litter.extend(leaf.center_in_field - Vec2::Constant(leaf.half_length_m));
+    litter.extend(leaf.center_in_field + Vec2::Constant(leaf.half_length_m));
+  }
   for (int y = 0; y < bgr.rows; ++y) {
     const auto* albedo_row = floor_albedo_.ptr<cv::Vec3f>(y);
     const auto* haze_row = floor_haze_.ptr<cv::Vec3f>(y);
     const auto* point_row = floor_point_.ptr<cv::Vec2f>(y);
     auto* row = bgr.ptr<cv::Vec3b>(y);
     for (int x = 0; x < bgr.cols; ++x) {
-      row[x] = to_bgr8(lit_floor(lighting, albedo_row[x], haze_row[x], point_row[x]));
+      cv::Vec3f albedo = albedo_row[x];
+      const Vec2 p(point_row[x][0], point_row[x][1]);
+      if (!leaves.empty() && albedo != cv::Vec3f() && litter.contains(p)) {
+        for (const FloorLeaf& leaf : leaves)
+          if (leaf.covers(p))
+            albedo = to_float(leaf.bgr) * (1.0f - haze_row[x][0] / kSkyHorizonBgr[0]);
+      }
+      row[x] = to_bgr8(lit_floor(lighting, albedo, haze_row[x], point_row[x]));
     }
   }
   for (const NetPixel& p : net_pixels_) {

@@ -29,8 +29,9 @@ class CourtBackground {
   CourtBackground(const CourtCamera& camera, const RayTable& rays, const TennisCourtSpec& court,
                   int samples_per_axis);
 
-  /// Writes the background lit by `lighting` into `bgr` (CV_8UC3, the camera's image size).
-  void light(const Lighting& lighting, cv::Mat& bgr) const;
+  /// Writes the background lit by `lighting`, with `leaves` on the floor, into `bgr` (CV_8UC3,
+  /// the camera's image size). A pixel takes a leaf's colour where its ground point lies in it.
+  void light(const Lighting& lighting, const std::vector<FloorLeaf>& leaves, cv::Mat& bgr) const;
 
   /// Distance from the camera centre along the unit ray `direction` to the net or a post;
   /// infinity when the ray misses them or the court has no net.

@@ -33,15 +33,16 @@ CourtRenderer::CourtRenderer(const CourtCamera& camera, const TennisCourtSpec& c
       rays_(camera.camera, camera.camera_from_field.rotation.transpose()),
       background_(camera, rays_, court, kSamplesPerAxis) {}
 
-cv::Mat CourtRenderer::lit_background(const Lighting& lighting) const {
+cv::Mat CourtRenderer::lit_background(const Lighting& lighting,
+                                      const std::vector<FloorLeaf>& leaves) const {
   cv::Mat bgr(rays_.height(), rays_.width(), CV_8UC3);
-  background_.light(lighting, bgr);
+  background_.light(lighting, leaves, bgr);
   return bgr;
 }
 
 CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_seed) const {
   scene.validate();
-  return render(scene, noise_seed, lit_background(scene.lighting));
+  return render(scene, noise_seed, lit_background(scene.lighting, scene.leaves));
 }
 
 CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_seed,
@@ -62,7 +63,26 @@ CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_s
   std::vector<PixelBox> boxes;
   for (const SceneSphere& s : spheres) boxes.push_back(sphere_pixel_box(camera_, s, size));
   boxes.push_back(floor_box_pixel_box(camera_, robot, size));
+  for (const FloorBottle& b : scene.bottles)
+    boxes.push_back(floor_box_pixel_box(camera_, b.bounds(), size));
   out.coverage.assign(boxes.size(), {});
+
+  const Vec3& o = center_in_field_;
+  // Object i: a sphere, the robot, or a bottle (in the order of `boxes`).
+  const auto hit = [&](int i, const Vec3& d) -> std::optional<BoxHit> {
+    if (i == robot_index) return intersect_floor_box(o, d, robot);
+    if (i > robot_index)
+      return scene.bottles[static_cast<size_t>(i - robot_index - 1)].intersect(o, d);
+    const SceneSphere& s = spheres[static_cast<size_t>(i)];
+    const std::optional<double> t = intersect_sphere(o, d, s.center_in_field, s.radius_m);
+    if (!t) return std::nullopt;
+    return BoxHit{*t, (o + *t * d - s.center_in_field) / s.radius_m};
+  };
+  const auto albedo = [&](int i) -> const cv::Vec3b& {
+    if (i == robot_index) return scene.robot.bgr;
+    if (i > robot_index) return scene.bottles[static_cast<size_t>(i - robot_index - 1)].bgr;
+    return spheres[static_cast<size_t>(i)].bgr;
+  };
 
   cv::Mat1b in_some_box(size, uchar{0});
   for (const PixelBox& b : boxes) {
@@ -70,7 +90,6 @@ CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_s
   }
 
   constexpr int n = kSamplesPerAxis;
-  const Vec3& o = center_in_field_;
   std::vector<int> candidates;
   for (int y = 0; y < size.height; ++y) {
     const uchar* mask_row = in_some_box.ptr<uchar>(y);
@@ -92,27 +111,15 @@ CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_s
           int best = -1;
           Vec3 best_normal = Vec3::UnitZ();
           for (const int i : candidates) {
-            std::optional<double> t;
-            Vec3 normal;
-            if (i == robot_index) {
-              const std::optional<BoxHit> hit = intersect_floor_box(o, d, robot);
-              if (hit) {
-                t = hit->t;
-                normal = hit->normal_in_field;
-              }
-            } else {
-              const SceneSphere& s = spheres[static_cast<size_t>(i)];
-              t = intersect_sphere(o, d, s.center_in_field, s.radius_m);
-              if (t) normal = (o + *t * d - s.center_in_field) / s.radius_m;
-            }
-            if (!t) continue;
+            const std::optional<BoxHit> h = hit(i, d);
+            if (!h) continue;
             ObjectCoverage& coverage = out.coverage[static_cast<size_t>(i)];
             ++coverage.unoccluded_samples;
-            if (*t > net_t) ++coverage.net_samples;
-            if (*t < best_t) {
-              best_t = *t;
+            if (h->t > net_t) ++coverage.net_samples;
+            if (h->t < best_t) {
+              best_t = h->t;
               best = i;
-              best_normal = normal;
+              best_normal = h->normal_in_field;
             }
           }
           if (2 * sx + 1 == n && 2 * sy + 1 == n) out.object_ids.at<int>(y, x) = best;
@@ -121,9 +128,7 @@ CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_s
             continue;
           }
           ++out.coverage[static_cast<size_t>(best)].visible_samples;
-          const cv::Vec3b& base =
-              best == robot_index ? scene.robot.bgr : spheres[static_cast<size_t>(best)].bgr;
-          sum += scaled(base, scene.lighting.irradiance(best_normal, o + best_t * d));
+          sum += scaled(albedo(best), scene.lighting.irradiance(best_normal, o + best_t * d));
         }
       }
       sum *= 1.0f / (n * n);

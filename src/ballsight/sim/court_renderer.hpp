@@ -36,7 +36,8 @@ struct ObjectCoverage {
 struct CourtRender {
   cv::Mat bgr;         // CV_8UC3, after the scene's image effects
   cv::Mat object_ids;  // CV_32S: object seen at each pixel centre, -1 for the background
-  /// Per object: scene.spheres() in order, then the robot box (index spheres().size()).
+  /// Per object: scene.spheres() in order, then the robot box (index spheres().size()), then
+  /// scene.bottles in order.
   std::vector<ObjectCoverage> coverage;
 };
 
@@ -51,12 +52,13 @@ class CourtRenderer {
 
   /// Renders the scene; `noise_seed` seeds the sensor noise of scene.effects.
   CourtRender render(const CourtScene& scene, std::uint64_t noise_seed) const;
-  /// The same from the background already lit by scene.lighting (lit_background): a sequence of
-  /// views under one sun lights it once.
+  /// The same from the background already lit by scene.lighting with scene.leaves
+  /// (lit_background): a sequence of views under one sun lights it once.
   CourtRender render(const CourtScene& scene, std::uint64_t noise_seed,
                      const cv::Mat& lit_background) const;
-  /// The background under `lighting` (CV_8UC3, the camera's image size).
-  cv::Mat lit_background(const Lighting& lighting) const;
+  /// The background under `lighting` with `leaves` on the floor (CV_8UC3, the camera's image
+  /// size).
+  cv::Mat lit_background(const Lighting& lighting, const std::vector<FloorLeaf>& leaves) const;
 
  private:
   CourtCamera camera_;

@@ -21,7 +21,14 @@ struct CourtCamera {
   Vec3 center_in_field() const { return camera_from_field.inverse().translation; }
 };
 
+/// The report's IP cameras: its printed image coordinates reach x = 1523. `sim court` and `eval
+/// court` render at this size unless told otherwise.
+inline constexpr int kReportCameraWidth = 1920;
+inline constexpr int kReportCameraHeight = 1080;
+
 struct CourtRigOptions {
+  // The service's simulated court, the demo and the tests keep 1280 x 720: less than half the
+  // pixels to render and detect per frame.
   int width = 1280;
   int height = 720;
   double hfov_deg = 90.0;  // horizontal field of view including the lens distortion

@@ -78,20 +78,61 @@ SceneSphere tennis_ball(int id, const Vec2& xy) {
           kTennisBallBgr};
 }
 
-Lighting random_lighting(std::mt19937_64& rng, const TennisCourtSpec& court, bool shadow) {
+// Sun: 35-70 deg high, 40-50 % sky light, a soft-edged band (trees). Hard shadow: 20-40 deg
+// high, 25-35 % sky light, a wide band with an edge of a few cm (a building). Overcast: the light
+// comes from the whole sky (modelled as a weak sun at the zenith over 60-75 % sky light), no
+// band; the scene is darker (the brightness gain is drawn lower, make_court_scene).
+Lighting random_lighting(std::mt19937_64& rng, const TennisCourtSpec& court, bool shadow,
+                         LightCondition condition) {
   Lighting lighting;
-  const double elevation = rad_from_deg(uniform(rng, 35.0, 70.0));
+  lighting.condition = condition;
+  const bool hard = condition == LightCondition::hard_shadow;
+  const double elevation =
+      condition == LightCondition::overcast
+          ? kPi / 2.0
+          : rad_from_deg(hard ? uniform(rng, 20.0, 40.0) : uniform(rng, 35.0, 70.0));
   const double azimuth = uniform(rng, -kPi, kPi);
   lighting.to_sun = Vec3(std::cos(elevation) * std::cos(azimuth),
                          std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-  lighting.ambient = uniform(rng, 0.40, 0.50);
-  if (shadow) {
+  lighting.ambient = condition == LightCondition::overcast ? uniform(rng, 0.60, 0.75)
+                     : hard                                ? uniform(rng, 0.25, 0.35)
+                                                           : uniform(rng, 0.40, 0.50);
+  if (shadow && condition != LightCondition::overcast) {
     const Vec2 point = uniform_in(rng, court.court_rect(), 1.0);
     const double direction = uniform(rng, 0.0, kPi);
     lighting.shadow = ShadowBand{point, Vec2(std::cos(direction), std::sin(direction)),
-                                 uniform(rng, 2.0, 5.0), uniform(rng, 0.2, 0.6)};
+                                 hard ? uniform(rng, 3.0, 8.0) : uniform(rng, 2.0, 5.0),
+                                 hard ? uniform(rng, 0.02, 0.06) : uniform(rng, 0.2, 0.6)};
   }
   return lighting;
+}
+
+// Worn felt: paler, towards a dirty light grey.
+cv::Vec3b worn_colour(const cv::Vec3b& fresh, double wear) {
+  const cv::Vec3d grey(185.0, 195.0, 195.0);
+  cv::Vec3b out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = cv::saturate_cast<uchar>((1.0 - wear) * fresh[c] + wear * grey[c]);
+  return out;
+}
+
+// A fallen leaf anywhere on the fenced surface: 8-18 cm long, yellow-green (the colour of a
+// ball in the shade or the sun) or, one in four, dry and brown.
+FloorLeaf random_leaf(std::mt19937_64& rng, const TennisCourtSpec& court) {
+  FloorLeaf leaf;
+  leaf.center_in_field = uniform_in(rng, court.surround_rect(), 0.2);
+  const double angle = uniform(rng, 0.0, kPi);
+  leaf.axis = Vec2(std::cos(angle), std::sin(angle));
+  leaf.half_length_m = uniform(rng, 0.04, 0.09);
+  leaf.half_width_m = leaf.half_length_m * uniform(rng, 0.35, 0.6);
+  const bool dry = uniform_int(rng, 0, 3) == 0;
+  leaf.bgr = dry ? cv::Vec3b(cv::saturate_cast<uchar>(uniform(rng, 30, 60)),
+                             cv::saturate_cast<uchar>(uniform(rng, 80, 120)),
+                             cv::saturate_cast<uchar>(uniform(rng, 130, 170)))
+                 : cv::Vec3b(cv::saturate_cast<uchar>(uniform(rng, 30, 80)),
+                             cv::saturate_cast<uchar>(uniform(rng, 170, 225)),
+                             cv::saturate_cast<uchar>(uniform(rng, 120, 200)));
+  return leaf;
 }
 
 }  // namespace
@@ -104,6 +145,8 @@ void CourtScenarioOptions::validate() const {
   }
   require(std::isfinite(cluster_share) && cluster_share >= 0.0 && cluster_share <= 1.0,
           "cluster_share", "must be in [0, 1]");
+  require(std::isfinite(worn_share_max) && worn_share_max >= 0.0 && worn_share_max <= 1.0,
+          "worn_share_max", "must be in [0, 1]");
   ImageEffects effects;
   effects.noise_sigma = noise_sigma;
   if (brightness_gain) effects.brightness_gain = *brightness_gain;
@@ -197,9 +240,33 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
     add_ball(place(rng, placement, r, [&](auto& g) { return uniform_in(g, area, 0.3); }));
   }
 
-  scene.lighting = random_lighting(rng, court, options.shadow);
-  scene.effects.brightness_gain =
-      options.brightness_gain ? *options.brightness_gain : uniform(rng, 0.8, 1.2);
+  // Drawn after the balls, so that the balls of a seed do not depend on the weather.
+  const LightCondition light =
+      options.light ? *options.light : static_cast<LightCondition>(uniform_int(rng, 0, 2));
+  scene.lighting = random_lighting(rng, court, options.shadow, light);
+  scene.effects.brightness_gain = options.brightness_gain             ? *options.brightness_gain
+                                  : light == LightCondition::overcast ? uniform(rng, 0.65, 0.9)
+                                                                      : uniform(rng, 0.8, 1.2);
+  const double worn_share = uniform(rng, 0.0, options.worn_share_max);
+  for (SceneSphere& ball : scene.balls)
+    if (ball.kind == ObjectKind::tennis_ball && uniform(rng, 0.0, 1.0) < worn_share)
+      ball.bgr = worn_colour(ball.bgr, uniform(rng, 0.25, 0.55));
+  if (options.distractors && uniform_int(rng, 0, 1) == 1) {
+    const int leaves = uniform_int(rng, 3, 12);
+    for (int k = 0; k < leaves; ++k) scene.leaves.push_back(random_leaf(rng, court));
+  }
+  if (options.distractors && uniform_int(rng, 0, 3) == 0) {
+    FloorBottle bottle;
+    bottle.radius_m = uniform(rng, 0.032, 0.04);
+    bottle.height_m = uniform(rng, 0.2, 0.26);
+    bottle.center_in_field = place(rng, placement, bottle.radius_m, [&](auto& g) {
+      return uniform_in(g, court.surround_rect(), 0.3);
+    });
+    bottle.bgr = cv::Vec3b(cv::saturate_cast<uchar>(uniform(rng, 30, 70)),
+                           cv::saturate_cast<uchar>(uniform(rng, 190, 235)),
+                           cv::saturate_cast<uchar>(uniform(rng, 150, 210)));
+    scene.bottles.push_back(bottle);
+  }
   scene.effects.noise_sigma = options.noise_sigma;
   scene.validate();
   return scene;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "ballsight/core/enum_names.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight::sim {
@@ -19,7 +20,20 @@ SceneSphere marker(const RobotBox& robot, ObjectKind kind, double forward_m, con
           robot.marker_radius_m, bgr};
 }
 
+constexpr EnumNames<LightCondition, 3> kLightConditions{
+    {{LightCondition::sun, "sun"},
+     {LightCondition::hard_shadow, "hard_shadow"},
+     {LightCondition::overcast, "overcast"}}};
+
 }  // namespace
+
+std::string_view light_condition_name(LightCondition condition) {
+  return enum_name(kLightConditions, condition);
+}
+
+std::optional<LightCondition> light_condition_named(std::string_view name) {
+  return enum_named(kLightConditions, name);
+}
 
 std::string_view object_kind_name(ObjectKind kind) {
   switch (kind) {
@@ -85,6 +99,40 @@ double Lighting::irradiance(const Vec3& normal, const Vec3& p_in_field) const {
   return ambient + (1.0 - ambient) * lambert * sun_visibility(p_in_field.head<2>());
 }
 
+bool FloorLeaf::covers(const Vec2& p_in_field) const {
+  const Vec2 d = p_in_field - center_in_field;
+  const double u = d.dot(axis) / half_length_m,
+               v = (d.x() * axis.y() - d.y() * axis.x()) / half_width_m;
+  return u * u + v * v <= 1.0;
+}
+
+std::optional<BoxHit> FloorBottle::intersect(const Vec3& origin, const Vec3& direction) const {
+  const Vec3 o = origin - Vec3(center_in_field.x(), center_in_field.y(), 0.0);
+  std::optional<BoxHit> best;
+  // The side: |o_xy + t d_xy| = radius, with z in [0, height].
+  const double a = direction.head<2>().squaredNorm();
+  const double b = o.head<2>().dot(direction.head<2>());
+  const double c = o.head<2>().squaredNorm() - radius_m * radius_m;
+  if (a > 1e-15 && c > 0.0 && b * b - a * c >= 0.0) {
+    const double t = (-b - std::sqrt(b * b - a * c)) / a;
+    const Vec3 p = o + t * direction;
+    if (t > 1e-9 && p.z() >= 0.0 && p.z() <= height_m)
+      best = BoxHit{t, Vec3(p.x() / radius_m, p.y() / radius_m, 0.0)};
+  }
+  // The top, seen from above.
+  if (o.z() > height_m && direction.z() < 0.0) {
+    const double t = (height_m - o.z()) / direction.z();
+    if ((o + t * direction).head<2>().squaredNorm() <= radius_m * radius_m &&
+        (!best || t < best->t))
+      best = BoxHit{t, Vec3::UnitZ()};
+  }
+  return best;
+}
+
+FloorBox FloorBottle::bounds() const {
+  return {Pose2D{center_in_field, 0.0}, Vec2::Constant(radius_m), height_m};
+}
+
 void CourtScene::validate() const {
   for (size_t i = 0; i < balls.size(); ++i) {
     const SceneSphere& b = balls[i];
@@ -95,6 +143,23 @@ void CourtScene::validate() const {
     require(b.center_in_field.allFinite(), where + ".center_in_field", "must be finite");
     require(b.center_in_field.z() >= b.radius_m - 1e-9, where + ".center_in_field",
             "the ball must not sink into the floor (z >= radius)");
+  }
+  for (size_t i = 0; i < leaves.size(); ++i) {
+    const FloorLeaf& leaf = leaves[i];
+    const std::string where = "leaves[" + std::to_string(i) + "]";
+    require(leaf.center_in_field.allFinite(), where + ".center_in_field", "must be finite");
+    require(std::abs(leaf.axis.norm() - 1.0) < 1e-6, where + ".axis", "must be a unit vector");
+    require(positive(leaf.half_length_m) && positive(leaf.half_width_m) &&
+                leaf.half_length_m < 1.0 && leaf.half_width_m < 1.0,
+            where, "half length and width must be in (0, 1) m");
+  }
+  for (size_t i = 0; i < bottles.size(); ++i) {
+    const FloorBottle& bottle = bottles[i];
+    const std::string where = "bottles[" + std::to_string(i) + "]";
+    require(bottle.center_in_field.allFinite(), where + ".center_in_field", "must be finite");
+    require(positive(bottle.radius_m) && positive(bottle.height_m) && bottle.radius_m < 1.0 &&
+                bottle.height_m < 2.0,
+            where, "radius must be in (0, 1) m and height in (0, 2) m");
   }
   robot.validate();
   lighting.validate();

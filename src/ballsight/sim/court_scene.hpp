@@ -2,7 +2,8 @@
 // What stands on the simulated tennis court: tennis balls, reference balls (table-tennis balls at
 // known positions, for the cameras' extrinsics), the robot (a box marked by a pink ball at the
 // front and a blue ball at the back, as in the tennis-ball-collecting-robot report, section 7.6)
-// and the lighting. The court and the cameras are the installation (court_rig.hpp).
+// , the lighting and distractors of a ball's colour (fallen leaves, a water bottle). The court and
+// the cameras are the installation (court_rig.hpp).
 
 #include <opencv2/core.hpp>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/core/raycast_box.hpp"
 #include "ballsight/sim/image_effects.hpp"
 
 namespace ballsight::sim {
@@ -61,7 +63,18 @@ struct ShadowBand {
   double soft_edge_m = 0.3;  // width of the penumbra on each side
 };
 
+/// The weather of a scene: sun with a soft-edged shadow band (the shade of trees), low sun with
+/// a hard-edged one and little sky light (the shade of a building), or overcast (light from the
+/// whole sky: top-lit, no shadow, darker).
+enum class LightCondition { sun, hard_shadow, overcast };
+
+/// "sun", "hard_shadow", "overcast".
+std::string_view light_condition_name(LightCondition condition);
+/// The condition of that name, or nullopt.
+std::optional<LightCondition> light_condition_named(std::string_view name);
+
 struct Lighting {
+  LightCondition condition = LightCondition::sun;   // what the values below were drawn for
   Vec3 to_sun = Vec3(0.3, 0.2, 0.93).normalized();  // unit vector towards the sun, z > 0
   double ambient = 0.45;                            // share of light that is not direct sun
   std::optional<ShadowBand> shadow;
@@ -74,8 +87,37 @@ struct Lighting {
   double irradiance(const Vec3& normal, const Vec3& p_in_field) const;
 };
 
+/// A fallen leaf flat on the floor: an ellipse of its own colour (a yellow-green one looks like a
+/// ball's colour, not a ball's shape).
+struct FloorLeaf {
+  Vec2 center_in_field = Vec2::Zero();
+  Vec2 axis = Vec2::UnitX();  // unit vector along its length
+  double half_length_m = 0.06;
+  double half_width_m = 0.03;
+  cv::Vec3b bgr{60, 200, 170};
+
+  bool covers(const Vec2& p_in_field) const;
+};
+
+/// A plastic water bottle standing upright on the floor: a cylinder of one colour (a sports
+/// drink's yellow-green is a ball's colour, not a ball's shape).
+struct FloorBottle {
+  Vec2 center_in_field = Vec2::Zero();
+  double radius_m = 0.035;
+  double height_m = 0.23;
+  cv::Vec3b bgr{40, 215, 175};
+
+  /// First hit of the ray `origin + t * direction` (unit direction) with the bottle's side or
+  /// top, from outside; nullopt when it misses.
+  std::optional<BoxHit> intersect(const Vec3& origin, const Vec3& direction) const;
+  /// The box that holds it (for the pixel box of its image).
+  FloorBox bounds() const;
+};
+
 struct CourtScene {
-  std::vector<SceneSphere> balls;  // tennis balls and reference balls
+  std::vector<SceneSphere> balls;    // tennis balls and reference balls
+  std::vector<FloorLeaf> leaves;     // distractors flat on the floor
+  std::vector<FloorBottle> bottles;  // distractors standing on it
   RobotBox robot;
   Lighting lighting;
   ImageEffects effects;  // brightness gain (exposure), blur and sensor noise

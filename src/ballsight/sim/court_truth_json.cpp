@@ -37,12 +37,34 @@ Json lighting_json(const Lighting& l, const ImageEffects& e) {
               {"width_m", l.shadow->width_m},
               {"soft_edge_m", l.shadow->soft_edge_m}};
   }
-  return {{"to_sun", json_vec3(l.to_sun)},
+  return {{"condition", light_condition_name(l.condition)},
+          {"to_sun", json_vec3(l.to_sun)},
           {"ambient", l.ambient},
           {"shadow_band", shadow},
           {"brightness_gain", e.brightness_gain},
           {"blur_sigma_px", e.blur_sigma_px},
           {"noise_sigma", e.noise_sigma}};
+}
+
+Json leaves_json(const std::vector<FloorLeaf>& leaves) {
+  Json out = Json::array();
+  for (const FloorLeaf& leaf : leaves)
+    out.push_back({{"center_m", json_vec2(leaf.center_in_field)},
+                   {"axis", json_vec2(leaf.axis)},
+                   {"half_length_m", leaf.half_length_m},
+                   {"half_width_m", leaf.half_width_m},
+                   {"bgr", {leaf.bgr[0], leaf.bgr[1], leaf.bgr[2]}}});
+  return out;
+}
+
+Json bottles_json(const std::vector<FloorBottle>& bottles) {
+  Json out = Json::array();
+  for (const FloorBottle& bottle : bottles)
+    out.push_back({{"center_m", json_vec2(bottle.center_in_field)},
+                   {"radius_m", bottle.radius_m},
+                   {"height_m", bottle.height_m},
+                   {"bgr", {bottle.bgr[0], bottle.bgr[1], bottle.bgr[2]}}});
+  return out;
 }
 
 Json robot_json(const RobotBox& r) {
@@ -71,6 +93,7 @@ Json object_json(const SphereTruth& t) {
           {"id", t.sphere.id},
           {"position_m", json_vec3(t.sphere.center_in_field)},
           {"radius_m", t.sphere.radius_m},
+          {"bgr", {t.sphere.bgr[0], t.sphere.bgr[1], t.sphere.bgr[2]}},
           {"views", views}};
 }
 
@@ -113,6 +136,8 @@ Json court_scene_json(const CourtRig& rig, const CourtScene& scene,
           {"court", court_json(rig.court)},
           {"cameras", cameras},
           {"lighting", lighting_json(scene.lighting, scene.effects)},
+          {"leaves", leaves_json(scene.leaves)},
+          {"bottles", bottles_json(scene.bottles)},
           {"robot", robot_json(scene.robot)},
           {"objects", objects}};
 }

@@ -16,7 +16,7 @@
 
 namespace ballsight::sim {
 
-inline constexpr int kCourtTruthVersion = 2;  // 2: the net (court.net, views[].hidden_by_net)
+inline constexpr int kCourtTruthVersion = 3;  // 2: the net; 3: light, leaves, bottles, colours
 
 /// {"rvec", "tvec", "rotation"} of a rigid transform (OpenCV's rvec; rotation row by row).
 Json rigid3_json(const Rigid3& transform);
