@@ -27,6 +27,7 @@ struct ServeArgs {
   std::string site;
   std::string listen = "127.0.0.1:8080";
   std::string token_file = "ballsight-token";
+  std::string web = BALLSIGHT_WEB_DIR;  // "": no pages
   std::string planner = "ballsight";
   bool open_reads = false;
   int balls = -1;           // simulated court: tennis balls (-1: the scenario's)
@@ -84,6 +85,7 @@ void run_serve(const ServeArgs& args) {
   server_options.port = static_cast<unsigned short>(port[0]);
   server_options.token = read_or_create_token(args.token_file);
   server_options.open_reads = args.open_reads;
+  server_options.web_root = args.web;
   NavigationHub hub;
   const auto started = std::chrono::steady_clock::now();
   std::atomic<HttpServer*> server{nullptr};  // health is asked on the server's thread
@@ -103,6 +105,9 @@ void run_serve(const ServeArgs& args) {
   server = &http;
   std::cout << "ballsight serve: http://" << server_options.address << ":" << http.port()
             << "/api/v1/ (token in " << args.token_file << ")" << std::endl;
+  if (!args.web.empty())
+    std::cout << "ballsight serve: dashboard at http://" << server_options.address << ":"
+              << http.port() << "/" << std::endl;
   std::atomic<bool> stop{false};
   std::exception_ptr failure;  // the court service's, ends the command with its message
   std::thread loop([&] {
@@ -142,6 +147,9 @@ void add_serve_command(CLI::App& app) {
   cmd->add_flag("--sim", args->sim, "Serve the built-in simulated court (rendered frames)");
   add_seed_option(*cmd, args->service.seed, "Simulated court: seed of the rig and the scene");
   cmd->add_option("--listen", args->listen, "HOST:PORT to listen on (port 0: a free one)")
+      ->capture_default_str();
+  cmd->add_option("--web", args->web,
+                  "Folder of the web pages served at / (the dashboard) and /web/; \"\": none")
       ->capture_default_str();
   cmd->add_option("--token-file", args->token_file,
                   "Bearer token for writes; created (mode 0600) when missing")

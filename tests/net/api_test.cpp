@@ -98,6 +98,17 @@ TEST(Api, AClientOfAnEarlierRunOfTheServiceStartsAgainFromTheLatest) {
   EXPECT_EQ(std::get<StreamSubscription>(s).after, 2u);
 }
 
+TEST(Api, TheSiteDescribesTheCourt) {
+  Fixture f;
+  const json site = json::parse(f.call("GET", "/api/v1/site").body);
+  EXPECT_EQ(site["court"]["length_m"], f.context.court.length_m);
+  EXPECT_EQ(site["court"]["area_width_m"], f.context.court.area_width_m);
+  EXPECT_EQ(site["cameras"], json(f.context.camera_names));
+  EXPECT_EQ(site["ball_radius_m"], f.context.ball_radius_m);
+  EXPECT_FALSE(site["simulated"]);
+  EXPECT_EQ(f.call("PUT", "/api/v1/site").status, 405);
+}
+
 TEST(Api, TheStreamTakesTopics) {
   Fixture f;
   const auto sub = [&](const std::string& target) {
@@ -111,8 +122,15 @@ TEST(Api, TheStreamTakesTopics) {
   EXPECT_EQ(chosen.after, 3u);
   EXPECT_FALSE(chosen.navigation);
   EXPECT_TRUE(chosen.world && chosen.health);
+  // As a browser's URLSearchParams writes it.
+  const StreamSubscription encoded =
+      std::get<StreamSubscription>(sub("/api/v1/stream?topics=navigation%2Chealth&after=%32"));
+  EXPECT_EQ(encoded.after, 2u);
+  EXPECT_TRUE(encoded.navigation && encoded.health);
+  EXPECT_FALSE(encoded.world);
   expect_error(std::get<ApiResponse>(sub("/api/v1/stream?topics=navigation,weather")), 400,
                "query topics");
+  expect_error(std::get<ApiResponse>(sub("/api/v1/stream?topics=%zz")), 400, "query topics");
   expect_error(std::get<ApiResponse>(sub("/api/v1/stream?after=-1")), 400, "query after");
   f.hub.publish(update_with_robot(1.0));
   const json world = json::parse(world_message(*f.hub.latest(), f.context));
@@ -181,7 +199,7 @@ TEST(Api, TheOpenApiDocumentListsExactlyTheRoutesThatAnswer) {
       EXPECT_EQ(f.call(method, path).status, 405) << method << " " << path;
     }
   }
-  EXPECT_EQ(operations, 13);
+  EXPECT_EQ(operations, 14);
 }
 
 }  // namespace

@@ -2,58 +2,15 @@
 // client, @foxglove/ws-protocol over ws. Needs scripts/setup-npm; run from the repository root:
 //   BALLSIGHT_BIN=build/bin/ballsight node --test tests/web/foxglove_conformance.test.mjs
 import assert from "node:assert/strict";
-import { spawn } from "node:child_process";
-import { existsSync, mkdtempSync, rmSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { join } from "node:path";
-import { createInterface } from "node:readline";
+import { existsSync } from "node:fs";
 import test from "node:test";
 import { setTimeout as sleep } from "node:timers/promises";
 
-const WAIT_MS = 20_000; // every wait is bounded by this
+import { startSimulatedService, until } from "./serve_support.mjs";
+
 const TOPICS = ["/court", "/balls", "/robot_pose", "/route", "/navigation"];
 const modules = new URL("../../node_modules/", import.meta.url);
 const decoder = new TextDecoder();
-
-/** Polls `done` until it is true, or fails after `ms` naming `what`. */
-async function until(done, what, ms = WAIT_MS) {
-  const end = Date.now() + ms;
-  while (!done()) {
-    if (Date.now() > end) throw new Error(`timed out after ${ms} ms waiting for ${what}`);
-    await sleep(50);
-  }
-}
-
-/** The port of `ballsight serve`, from its "ballsight serve: http://127.0.0.1:PORT/..." line. */
-function listeningPort(child, stderr) {
-  return new Promise((resolve, reject) => {
-    const fail = (error) => {
-      clearTimeout(timer);
-      reject(error);
-    };
-    const timer = setTimeout(() => fail(new Error(`no listening line in ${WAIT_MS} ms`)), WAIT_MS);
-    createInterface({ input: child.stdout }).on("line", (line) => {
-      const m = /^ballsight serve: http:\/\/127\.0\.0\.1:(\d+)\//.exec(line);
-      if (!m) return;
-      clearTimeout(timer);
-      resolve(Number(m[1]));
-    });
-    child.once("error", fail);
-    child.once("exit", (code, signal) => {
-      fail(new Error(`ballsight exited (${code ?? signal}) before listening:\n${stderr()}`));
-    });
-  });
-}
-
-/** SIGTERM, then SIGKILL if it has not exited within 10 s. */
-async function stop(child) {
-  if (child.exitCode !== null || child.signalCode !== null) return;
-  const exited = new Promise((resolve) => child.once("exit", resolve));
-  child.kill("SIGTERM");
-  const timer = setTimeout(() => child.kill("SIGKILL"), 10_000);
-  await exited;
-  clearTimeout(timer);
-}
 
 /** Timestamps strictly increasing. */
 function assertIncreasing(messages, what) {
@@ -77,17 +34,8 @@ test("Foxglove WebSocket v1 with @foxglove/ws-protocol", { timeout: 180_000 }, a
   const { FoxgloveClient } = protocol;
   const { default: WebSocket } = await import("ws");
 
-  const dir = mkdtempSync(join(tmpdir(), "ballsight-foxglove-"));
-  const args = ["serve", "--sim", "--listen", "127.0.0.1:0", "--duration", "60"];
-  args.push("--token-file", join(dir, "token"));
-  const child = spawn(bin, args, { stdio: ["ignore", "pipe", "pipe"] });
-  let stderr = "";
-  child.stderr.on("data", (d) => (stderr = (stderr + d).slice(-4000)));
-  t.after(async () => {
-    await stop(child);
-    rmSync(dir, { recursive: true, force: true });
-  });
-  const url = `ws://127.0.0.1:${await listeningPort(child, () => stderr)}/`;
+  const { port } = await startSimulatedService(t, bin);
+  const url = `ws://127.0.0.1:${port}/`;
 
   const ws = new WebSocket(url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]);
   const client = new FoxgloveClient({ ws });

@@ -83,14 +83,33 @@ json point_json(const Vec2& p) {
   return {{"x_m", p.x()}, {"y_m", p.y()}};
 }
 
-/// The value of `key` in "a=1&b=2", or nullopt when absent.
+/// `text` with its %XX escapes and '+' (a browser's URLSearchParams) decoded; a '%' that does
+/// not start an escape stays as it is.
+std::string percent_decoded(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    unsigned value = 0;
+    if (text[i] == '%' && i + 2 < text.size() &&
+        std::from_chars(text.data() + i + 1, text.data() + i + 3, value, 16).ptr ==
+            text.data() + i + 3) {
+      out += static_cast<char>(value);
+      i += 2;
+    } else {
+      out += text[i] == '+' ? ' ' : text[i];
+    }
+  }
+  return out;
+}
+
+/// The value of `key` in "a=1&b=2" (percent-decoded), or nullopt when absent.
 std::optional<std::string> query_text(const std::string& query, const std::string& key) {
   std::size_t start = 0;
   while (start < query.size()) {
     const std::size_t end = std::min(query.find('&', start), query.size());
     const std::string item = query.substr(start, end - start);
     const std::size_t eq = item.find('=');
-    if (item.substr(0, eq) == key) return eq == std::string::npos ? "" : item.substr(eq + 1);
+    if (percent_decoded(item.substr(0, eq)) == key)
+      return eq == std::string::npos ? "" : percent_decoded(item.substr(eq + 1));
     start = end + 1;
   }
   return std::nullopt;
@@ -291,6 +310,20 @@ ApiResponse plan_route(const ApiRequest&, const std::string&, const ApiContext& 
   return ok(j);
 }
 
+ApiResponse site_route(const ApiRequest&, const std::string&, const ApiContext& c) {
+  const SiteCourt& court = c.court;
+  return ok(json{{"court",
+                  {{"length_m", court.length_m},
+                   {"width_m", court.width_m},
+                   {"area_length_m", court.area_length_m},
+                   {"area_width_m", court.area_width_m},
+                   {"net", court.net},
+                   {"net_posts_outside_m", court.net_posts_outside_m}}},
+                 {"cameras", c.camera_names},
+                 {"ball_radius_m", c.ball_radius_m},
+                 {"simulated", static_cast<bool>(c.drive)}});
+}
+
 ApiResponse health_route(const ApiRequest&, const std::string&, const ApiContext& c) {
   return ok(c.health ? c.health() : json::object());
 }
@@ -405,6 +438,7 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       {"/api/v1/sim/drive", {"PUT"}, drive_route},
       {"/api/v1/world", {"GET"}, world_route},
       {"/api/v1/route", {"GET"}, plan_route},
+      {"/api/v1/site", {"GET"}, site_route},
       {"/api/v1/health", {"GET"}, health_route},
       {"/api/v1/stream", {"GET"}, stream_route},
       {"/api/v1/openapi.json", {"GET"}, openapi_route},

@@ -31,7 +31,8 @@ struct ApiResponse {
       : status(status_), body(std::move(body_)) {}
 
   int status;
-  std::string body;  // JSON, or empty for 204
+  std::string body;  // JSON (or a web page's file: content_type), or empty for 204
+  std::string content_type = "application/json";
   /// A long-poll with nothing newer than `wait_after` yet: the transport waits up to `wait` for
   /// an update, then answers with `poll_answer` (204 when none came). Empty: answer now.
   std::optional<std::uint64_t> wait_after;

@@ -30,6 +30,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/net/foxglove.hpp"
+#include "ballsight/net/web_files.hpp"
 
 namespace ballsight {
 namespace {
@@ -51,11 +52,11 @@ bool same_secret(std::string_view a, std::string_view b) {
   return diff == 0;
 }
 
-http::response<http::string_body> json_response(const ApiResponse& response, unsigned version,
-                                                bool keep_alive) {
+http::response<http::string_body> http_answer(const ApiResponse& response, unsigned version,
+                                              bool keep_alive) {
   http::response<http::string_body> res{static_cast<http::status>(response.status), version};
   res.set(http::field::server, "ballsight");
-  if (!response.body.empty()) res.set(http::field::content_type, "application/json");
+  if (!response.body.empty()) res.set(http::field::content_type, response.content_type);
   if (response.status == 401) res.set(http::field::www_authenticate, "Bearer");
   if (response.status == 426) res.set(http::field::upgrade, "websocket");
   res.keep_alive(keep_alive);
@@ -145,10 +146,13 @@ void HttpServerOptions::validate() const {
 }
 
 struct HttpServer::Impl {
-  Impl(const HttpServerOptions& o, ApiContext& c) : options(o), context(c) {}
+  Impl(const HttpServerOptions& o, ApiContext& c) : options(o), context(c) {
+    if (!o.web_root.empty()) pages.emplace(o.web_root);
+  }
 
   HttpServerOptions options;
   ApiContext& context;
+  std::optional<WebFiles> pages;
   asio::io_context io{1};
   asio::executor_work_guard<asio::io_context::executor_type> work{io.get_executor()};
   tcp::acceptor acceptor{io};
@@ -242,7 +246,7 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
   if (open_now > options.max_connections) {
     stream.expires_after(options.idle_timeout);
     co_await http::async_write(
-        stream, json_response(api_error(503, "too many connections", "server"), 11, false),
+        stream, http_answer(api_error(503, "too many connections", "server"), 11, false),
         asio::redirect_error(asio::use_awaitable, ec));
     co_return;
   }
@@ -260,9 +264,9 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
                          : ec == http::error::header_limit ? 431
                                                            : 400;
       stream.expires_after(options.idle_timeout);
-      co_await http::async_write(
-          stream, json_response(api_error(status, ec.message(), "request"), 11, false),
-          asio::redirect_error(asio::use_awaitable, ec));
+      co_await http::async_write(stream,
+                                 http_answer(api_error(status, ec.message(), "request"), 11, false),
+                                 asio::redirect_error(asio::use_awaitable, ec));
       co_return;
     }
     if (ec || stopping) co_return;
@@ -296,12 +300,15 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
         }
         response = std::get<ApiResponse>(subscription);
       }
+    } else if (pages && request.method == "GET" &&
+               WebFiles::is_page_path(request.target.substr(0, request.target.find('?')))) {
+      response = pages->get(request.target.substr(0, request.target.find('?')));
     } else {
       response = handle_api(request, context);
       if (response.wait_after) response = co_await long_poll(*response.wait_after, response.wait);
     }
     stream.expires_after(options.idle_timeout);
-    co_await http::async_write(stream, json_response(response, req.version(), req.keep_alive()),
+    co_await http::async_write(stream, http_answer(response, req.version(), req.keep_alive()),
                                asio::redirect_error(asio::use_awaitable, ec));
     if (ec || !req.keep_alive()) break;
   }

@@ -34,6 +34,8 @@ struct HttpServerOptions {
   /// The kernel's send buffer of a WebSocket client (SO_SNDBUF): small, so that a slow client's
   /// backlog waits in its queue, where the oldest is dropped, not in the kernel, where it ages.
   int client_send_buffer = 64 * 1024;
+  /// The web pages' folder (web_files.hpp), served at / and /web/; empty: API only.
+  std::filesystem::path web_root;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

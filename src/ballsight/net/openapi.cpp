@@ -79,6 +79,10 @@ const nlohmann::json& openapi_document() {
       "get": {"summary": "The latest route: order, waypoints, length, time; its seq, service id, capture and publish times",
               "responses": {"200": {"description": "route"}, "503": {"description": "no update yet"}}}
     },
+    "/api/v1/site": {
+      "get": {"summary": "The court the service watches: its size, fenced area and net, the cameras' names, the ball radius, and whether it is the simulated court",
+              "responses": {"200": {"description": "site"}}}
+    },
     "/api/v1/health": {
       "get": {"summary": "The service: cameras, rates, latency, clients", "responses": {"200": {"description": "health"}}}
     },

@@ -1,0 +1,74 @@
+#include "ballsight/net/web_files.hpp"
+
+#include <array>
+#include <fstream>
+#include <iterator>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kPagePrefix = "/web/";
+
+constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kContentTypes{{
+    {".html", "text/html; charset=utf-8"},
+    {".js", "text/javascript; charset=utf-8"},
+    {".mjs", "text/javascript; charset=utf-8"},
+    {".css", "text/css; charset=utf-8"},
+    {".svg", "image/svg+xml"},
+    {".png", "image/png"},
+    {".json", "application/json"},
+}};
+
+std::optional<std::string_view> content_type(const fs::path& file) {
+  const std::string extension = file.extension().string();
+  for (const auto& [ext, type] : kContentTypes)
+    if (extension == ext) return type;
+  return std::nullopt;
+}
+
+}  // namespace
+
+WebFiles::WebFiles(const fs::path& root) {
+  std::error_code ec;
+  root_ = fs::canonical(root, ec);
+  if (ec || !fs::is_directory(root_))
+    throw InputError(root.string() + ": the web pages' folder does not exist");
+  if (!fs::is_regular_file(root_ / "index.html"))
+    throw InputError(root.string() + ": the web pages' folder has no index.html");
+}
+
+bool WebFiles::is_page_path(const std::string& path) {
+  return path == "/" || path.starts_with(kPagePrefix);
+}
+
+ApiResponse WebFiles::get(const std::string& path) const {
+  const std::string relative =
+      path == "/" ? "index.html" : path.substr(std::min(path.size(), kPagePrefix.size()));
+  const fs::path requested = fs::path(relative).lexically_normal();
+  const auto not_found = [&] { return api_error(404, "no such page", path); };
+  if (relative.empty() || requested.is_absolute() || requested.empty() ||
+      *requested.begin() == "..")
+    return not_found();
+  const std::optional<std::string_view> type = content_type(requested);
+  if (!type) return not_found();
+  std::error_code ec;
+  const fs::path file = fs::canonical(root_ / requested, ec);
+  if (ec || !fs::is_regular_file(file) || !file.string().starts_with(root_.string() + "/"))
+    return not_found();
+  if (fs::file_size(file, ec) > kMaxFileBytes || ec) return not_found();
+  std::ifstream in(file, std::ios::binary);
+  std::string body((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) return api_error(500, "cannot read the page", path);
+  ApiResponse response(200, std::move(body));
+  response.content_type = std::string(*type);
+  return response;
+}
+
+}  // namespace ballsight

@@ -1,0 +1,128 @@
+// The dashboard (web/index.html) in a real Chromium (Debian's, driven by playwright-core; no
+// browser download) against a real `ballsight serve --sim` on 127.0.0.1. Needs scripts/setup;
+// run from the repository root:
+//   BALLSIGHT_BIN=build/bin/ballsight node --test tests/web/dashboard.test.mjs
+// Screenshots go to $BALLSIGHT_SCREENSHOT_DIR (ctest: build/screenshots).
+import assert from "node:assert/strict";
+import { existsSync, mkdirSync } from "node:fs";
+import { join } from "node:path";
+import test from "node:test";
+
+import { startSimulatedService, stop, until } from "./serve_support.mjs";
+
+const CHROMIUM = "/usr/bin/chromium";
+// No traffic but to the page's own server: Chromium's background services stay off.
+const CHROMIUM_ARGS = [
+  "--no-sandbox",
+  "--disable-gpu",
+  "--disable-quic",
+  "--no-first-run",
+  "--disable-background-networking",
+  "--disable-component-update",
+  "--disable-sync",
+  "--disable-default-apps",
+  "--disable-extensions",
+];
+const installed = existsSync(new URL("../../node_modules/playwright-core/package.json", import.meta.url));
+
+function screenshotPath(name) {
+  const dir = process.env.BALLSIGHT_SCREENSHOT_DIR;
+  if (!dir) return null;
+  mkdirSync(dir, { recursive: true });
+  return join(dir, name);
+}
+
+test("the dashboard in Chromium", { timeout: 240_000 }, async (t) => {
+  const bin = process.env.BALLSIGHT_BIN;
+  if (!bin) return t.skip("BALLSIGHT_BIN is not set (the path of the ballsight executable)");
+  const ready = installed && existsSync(CHROMIUM);
+  // CI installs both (scripts/setup): there a missing browser is a failure, not a skip.
+  if (!ready && process.env.CI) assert.fail(`playwright-core or ${CHROMIUM} is missing: scripts/setup did not run`);
+  if (!ready) return t.skip(`playwright-core or ${CHROMIUM} is missing: run scripts/setup`);
+  const { chromium } = await import("playwright-core");
+
+  const service = await startSimulatedService(t, bin, { seconds: 120 });
+  const origin = `http://127.0.0.1:${service.port}`;
+  const browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS });
+  t.after(() => browser.close());
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  const pageErrors = [];
+  page.on("pageerror", (e) => pageErrors.push(e.message));
+  page.on("requestfailed", (r) => pageErrors.push(`request failed: ${r.url()}`));
+  page.on("request", (r) => {
+    if (!r.url().startsWith(origin) && !r.url().startsWith(`ws://127.0.0.1:${service.port}/`))
+      pageErrors.push(`request to another host: ${r.url()}`);
+  });
+  await page.goto(`${origin}/`);
+  const shown = () => page.evaluate(() => window.ballsightDashboard);
+  await until(async () => (await shown()).seq > 0 && (await shown()).robot, "a navigation update with the robot");
+
+  await t.test("shows exactly the balls and robot pose the API returns at that seq", async () => {
+    // What the page holds and shows, read at one moment (an update may come in between reads).
+    const { drawn, seqText, ballsText } = await page.evaluate(() => ({
+      drawn: window.ballsightDashboard,
+      seqText: document.getElementById("seq").textContent,
+      ballsText: document.getElementById("balls").textContent,
+    }));
+    const response = await fetch(`${origin}/api/v1/navigation?after=${drawn.seq - 1}`);
+    assert.equal(response.status, 200);
+    const update = await response.json();
+    assert.equal(update.seq, drawn.seq, "the service still keeps the update shown");
+    assert.deepEqual(drawn.balls, update.world.balls);
+    assert.deepEqual(drawn.robot, update.world.robot);
+    assert.ok(update.world.balls.length > 0, "the simulated court has balls");
+    assert.equal(seqText, String(drawn.seq));
+    assert.equal(ballsText, String(update.world.balls.length));
+  });
+
+  await t.test("every ball is drawn where it lies", async () => {
+    // The canvas at each ball away from the robot (drawn over the balls), read in the same task
+    // as the state, so that both are of one update.
+    const colours = await page.evaluate(async () => {
+      const { courtTransform } = await import("/web/court_map.js");
+      const site = await (await fetch("/api/v1/site")).json();
+      const canvas = document.getElementById("court");
+      const { balls, robot } = window.ballsightDashboard;
+      const t = courtTransform(site, canvas);
+      const ctx = canvas.getContext("2d");
+      const clear = (b) => Math.hypot(b.x_m - robot.x_m, b.y_m - robot.y_m) > 0.8;
+      return balls.filter(clear).map((b) => {
+        const [px, py] = t.toCanvas(b.x_m, b.y_m);
+        return Array.from(ctx.getImageData(Math.round(px), Math.round(py), 1, 1).data);
+      });
+    });
+    assert.ok(colours.length > 0, "some balls away from the robot");
+    // A ball's yellow fill (#e4f53c), its dark olive outline (#3a4a10) or a blend of the two (a
+    // touching ball's outline crosses it: clusters are a few pixels apart); not the court's
+    // greens (#3f7a55, #2f5a4e), a site's ring (#7fe07f) or the route (#2f6fd6).
+    const ballish = ([r, g, b]) => r > 0.6 * g && b < 0.5 * g;
+    for (const c of colours) assert.ok(ballish(c), `ball pixel ${c}`);
+  });
+
+  await t.test("health, cameras and the latency plot are filled in", async () => {
+    await until(async () => (await page.locator("#cameras li").count()) === 4, "four cameras");
+    assert.match(await page.textContent("#rate"), /\d \/s/);
+    assert.match(await page.textContent("#collected"), /^\d+ \(\d+ left\)$/);
+    assert.equal(await page.textContent("#connection"), "live");
+    const path = screenshotPath("dashboard-1280x800.png");
+    if (path) await page.screenshot({ path, fullPage: true });
+  });
+
+  await t.test("fits a tablet (768 x 1024) without scrolling sideways", async () => {
+    const tablet = await browser.newPage({ viewport: { width: 768, height: 1024 } });
+    await tablet.goto(`${origin}/`);
+    await until(async () => (await tablet.evaluate(() => window.ballsightDashboard.seq)) > 0, "an update");
+    const width = await tablet.evaluate(() => document.documentElement.scrollWidth);
+    assert.ok(width <= 768, `page ${width} px wide`);
+    const path = screenshotPath("dashboard-768x1024.png");
+    if (path) await tablet.screenshot({ path, fullPage: true });
+    await tablet.close();
+  });
+
+  await t.test("says so when the service goes away", async () => {
+    await stop(service.child);
+    await until(async () => /^reconnecting/.test(await page.textContent("#connection")), "reconnecting");
+  });
+
+  assert.deepEqual(pageErrors.filter((e) => !e.includes("/api/v1/stream")), []);
+});
