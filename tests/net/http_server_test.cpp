@@ -108,7 +108,7 @@ TEST(HttpServer, EveryDocumentedRouteAnswersAsDocumentedOverTheWire) {
       ++operations;
     }
   }
-  EXPECT_EQ(operations, 13);
+  EXPECT_EQ(operations, 14);
   // The errors' own headers.
   const auto refused = client.send(http::verb::put, "/api/v1/robot", "{}");
   EXPECT_EQ(refused[http::field::www_authenticate], "Bearer");
