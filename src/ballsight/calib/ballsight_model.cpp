@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/statistics.hpp"
 
 namespace ballsight {

@@ -2,10 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "ballsight/core/json_fields.hpp"
 #include "ballsight/calib/omni_model_fit.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/json_fields.hpp"
 
 namespace ballsight {
 

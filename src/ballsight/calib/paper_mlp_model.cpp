@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 
 namespace ballsight {
 

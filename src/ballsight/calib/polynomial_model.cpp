@@ -6,8 +6,8 @@
 #include <set>
 #include <string>
 
-#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 
 namespace ballsight {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/statistics.hpp"
 
 namespace ballsight {
