@@ -300,9 +300,9 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
         }
         response = std::get<ApiResponse>(subscription);
       }
-    } else if (pages && request.method == "GET" &&
-               WebFiles::is_page_path(request.target.substr(0, request.target.find('?')))) {
-      response = pages->get(request.target.substr(0, request.target.find('?')));
+    } else if (const std::string path = request.target.substr(0, request.target.find('?'));
+               pages && request.method == "GET" && WebFiles::is_page_path(path)) {
+      response = pages->get(path);
     } else {
       response = handle_api(request, context);
       if (response.wait_after) response = co_await long_poll(*response.wait_after, response.wait);

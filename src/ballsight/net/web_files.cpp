@@ -1,13 +1,12 @@
 #include "ballsight/net/web_files.hpp"
 
 #include <array>
-#include <fstream>
-#include <iterator>
 #include <string_view>
 #include <system_error>
 #include <utility>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/file_io.hpp"
 
 namespace ballsight {
 namespace {
@@ -63,12 +62,13 @@ ApiResponse WebFiles::get(const std::string& path) const {
   if (ec || !fs::is_regular_file(file) || !file.string().starts_with(root_.string() + "/"))
     return not_found();
   if (fs::file_size(file, ec) > kMaxFileBytes || ec) return not_found();
-  std::ifstream in(file, std::ios::binary);
-  std::string body((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) return api_error(500, "cannot read the page", path);
-  ApiResponse response(200, std::move(body));
-  response.content_type = std::string(*type);
-  return response;
+  try {
+    ApiResponse response(200, read_file(file));
+    response.content_type = std::string(*type);
+    return response;
+  } catch (const InputError&) {
+    return api_error(500, "cannot read the page", path);
+  }
 }
 
 }  // namespace ballsight

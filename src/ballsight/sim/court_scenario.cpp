@@ -107,6 +107,15 @@ Lighting random_lighting(std::mt19937_64& rng, const TennisCourtSpec& court, boo
   return lighting;
 }
 
+// A colour drawn uniformly per channel between `lo` and `hi` (BGR), red first: in the order
+// GCC evaluated the three draws when they were a constructor's arguments, so scenes stay as
+// they were.
+cv::Vec3b uniform_bgr(std::mt19937_64& rng, const cv::Vec3d& lo, const cv::Vec3d& hi) {
+  cv::Vec3b out;
+  for (int c = 2; c >= 0; --c) out[c] = cv::saturate_cast<uchar>(uniform(rng, lo[c], hi[c]));
+  return out;
+}
+
 // Worn felt: paler, towards a dirty light grey.
 cv::Vec3b worn_colour(const cv::Vec3b& fresh, double wear) {
   const cv::Vec3d grey(185.0, 195.0, 195.0);
@@ -126,12 +135,8 @@ FloorLeaf random_leaf(std::mt19937_64& rng, const TennisCourtSpec& court) {
   leaf.half_length_m = uniform(rng, 0.04, 0.09);
   leaf.half_width_m = leaf.half_length_m * uniform(rng, 0.35, 0.6);
   const bool dry = uniform_int(rng, 0, 3) == 0;
-  leaf.bgr = dry ? cv::Vec3b(cv::saturate_cast<uchar>(uniform(rng, 30, 60)),
-                             cv::saturate_cast<uchar>(uniform(rng, 80, 120)),
-                             cv::saturate_cast<uchar>(uniform(rng, 130, 170)))
-                 : cv::Vec3b(cv::saturate_cast<uchar>(uniform(rng, 30, 80)),
-                             cv::saturate_cast<uchar>(uniform(rng, 170, 225)),
-                             cv::saturate_cast<uchar>(uniform(rng, 120, 200)));
+  leaf.bgr = dry ? uniform_bgr(rng, {30, 80, 130}, {60, 120, 170})
+                 : uniform_bgr(rng, {30, 170, 120}, {80, 225, 200});
   return leaf;
 }
 
@@ -262,9 +267,7 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
     bottle.center_in_field = place(rng, placement, bottle.radius_m, [&](auto& g) {
       return uniform_in(g, court.surround_rect(), 0.3);
     });
-    bottle.bgr = cv::Vec3b(cv::saturate_cast<uchar>(uniform(rng, 30, 70)),
-                           cv::saturate_cast<uchar>(uniform(rng, 190, 235)),
-                           cv::saturate_cast<uchar>(uniform(rng, 150, 210)));
+    bottle.bgr = uniform_bgr(rng, {30, 190, 150}, {70, 235, 210});
     scene.bottles.push_back(bottle);
   }
   scene.effects.noise_sigma = options.noise_sigma;
