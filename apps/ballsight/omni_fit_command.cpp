@@ -9,7 +9,6 @@
 
 #include "ballsight/calib/ground_error.hpp"
 #include "ballsight/calib/ground_map_model.hpp"
-#include "ballsight/calib/model_ground_map.hpp"
 #include "ballsight/calib/model_json.hpp"
 #include "ballsight/calib/omni_model_fit.hpp"
 #include "ballsight/calib/prediction_csv.hpp"
@@ -17,6 +16,7 @@
 #include "ballsight/camera/ground_map_io.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/pipeline/omni_calibration.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -66,12 +66,12 @@ void run_fit(const FitArgs& args) {
   std::optional<Eigen::Vector2i> size;
   if (args.image_size) size = parse_image_size(*args.image_size, "--image-size");
   const OmniImage image = omni_image_for_samples(samples, center, size);
-  const std::unique_ptr<OmniGroundModel> model = fit_omni_model(method, samples, image, options);
-
-  save_ground_map(args.out, ground_map_from_model(*model));
+  const OmniCalibration fit = calibrate_omni(method, samples, image, options);
+  const OmniGroundModel* model = fit.model.get();
+  save_ground_map(args.out, fit.table);
   if (args.model) save_omni_model(*args.model, *model);
 
-  const GroundErrors errors = sample_errors(*model, samples);
+  const GroundErrors& errors = fit.errors;
   std::cout << std::fixed << std::setprecision(1) << model->name() << " model from "
             << samples.size() << " samples, image " << image.width << "x" << image.height
             << " centre (" << image.center_px.x() << ", " << image.center_px.y()

@@ -9,8 +9,7 @@
 #include "ballsight/calib/sample_csv.hpp"
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
-#include "ballsight/eval/omni_auto_calibration.hpp"
-#include "ballsight/sim/omni_marker_layout.hpp"
+#include "ballsight/pipeline/marker_frame_samples.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -36,7 +35,7 @@ struct MarkersArgs {
 
 void run_markers(const MarkersArgs& args) {
   const cv::Vec3b marker_bgr = parse_bgr(args.marker_bgr, "--marker-bgr");
-  sim::MarkerLayout layout;
+  MarkerLayout layout;
   layout.bearing_step_deg = args.bearing_step_deg;
   layout.min_distance_m = 0.01 * args.min_cm;
   layout.max_distance_m = 0.01 * args.max_cm;
@@ -45,10 +44,8 @@ void run_markers(const MarkersArgs& args) {
     require(std::isfinite(*args.diameter_cm) && *args.diameter_cm > 0.0, "--marker-diameter-cm",
             "expected a positive number");
   }
-  std::vector<LayoutMarker> markers;
-  for (const sim::FloorMarker& m : sim::calibration_markers(Pose2D{}, layout)) {
-    markers.push_back({m.position_in_field, args.diameter_cm ? 0.005 * *args.diameter_cm : 0.0});
-  }
+  const std::vector<LayoutMarker> markers =
+      markers_of_diameter(layout, args.diameter_cm ? 0.01 * *args.diameter_cm : 0.0);
   const cv::Mat frame = read_image_bgr(args.image);
   const Vec2 center = args.center ? parse_pixel_pair(*args.center, "--center")
                                   : Vec2(0.5 * (frame.cols - 1), 0.5 * (frame.rows - 1));

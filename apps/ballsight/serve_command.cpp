@@ -15,7 +15,9 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/simulated_service.hpp"
 #include "ballsight/net/http_server.hpp"
+#include "ballsight/net/omni_calibration_api.hpp"
 #include "ballsight/net/site_service.hpp"
+#include "ballsight/sim/omni_dataset.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -33,6 +35,7 @@ struct ServeArgs {
   int balls = -1;           // simulated court: tennis balls (-1: the scenario's)
   double duration_s = 0.0;  // 0: until SIGINT or SIGTERM
   std::string fail_camera;  // K@T
+  std::string omni_frames;  // the omni calibration page's folder of images
   SimulatedServiceOptions service;
 };
 
@@ -86,10 +89,22 @@ void run_serve(const ServeArgs& args) {
   server_options.token = read_or_create_token(args.token_file);
   server_options.open_reads = args.open_reads;
   server_options.web_root = args.web;
+  server_options.body_limit = 16u << 20;  // the calibration pages upload images
+  OmniCalibrationOptions omni_options;
+  omni_options.frames_dir = args.omni_frames;
+  if (args.sim) {
+    omni_options.simulated_frame = [seed = args.service.seed] {
+      sim::OmniScenarioOptions scenario;
+      scenario.seed = seed;
+      return sim::render_calibration_frame(scenario);
+    };
+  }
+  OmniCalibrationApi omni(omni_options);
   NavigationHub hub;
   const auto started = std::chrono::steady_clock::now();
   std::atomic<HttpServer*> server{nullptr};  // health is asked on the server's thread
   ApiContext context = service.api_context(hub);
+  context.omni = &omni;
   context.health = [&] {
     nlohmann::json h = service.health();
     h["uptime_s"] =
@@ -151,6 +166,9 @@ void add_serve_command(CLI::App& app) {
   cmd->add_option("--web", args->web,
                   "Folder of the web pages served at / (the dashboard) and /web/; \"\": none")
       ->capture_default_str();
+  cmd->add_option("--omni-frames", args->omni_frames,
+                  "Folder of omni images the calibration page may open by name")
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("--token-file", args->token_file,
                   "Bearer token for writes; created (mode 0600) when missing")
       ->capture_default_str();

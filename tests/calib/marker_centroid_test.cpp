@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "ballsight/sim/omni_marker_layout.hpp"
+#include "ballsight/sim/omni_scenario.hpp"
 #include "ballsight/sim/omni_truth.hpp"
 #include "calib/calib_fixtures.hpp"
 

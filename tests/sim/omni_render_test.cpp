@@ -5,8 +5,8 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
-#include "ballsight/sim/omni_marker_layout.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
+#include "ballsight/sim/omni_scenario.hpp"
 #include "ballsight/sim/silhouette.hpp"
 #include "omni_blobs.hpp"
 

@@ -8,7 +8,6 @@
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/sim/msl_field.hpp"
-#include "ballsight/sim/omni_marker_layout.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
 #include "ballsight/sim/omni_truth_json.hpp"
 

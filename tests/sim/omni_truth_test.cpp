@@ -5,7 +5,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
-#include "ballsight/sim/omni_marker_layout.hpp"
+#include "ballsight/sim/omni_scenario.hpp"
 #include "ballsight/sim/omni_truth_json.hpp"
 
 namespace ballsight::sim {

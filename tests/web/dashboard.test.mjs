@@ -4,55 +4,20 @@
 //   BALLSIGHT_BIN=build/bin/ballsight node --test tests/web/dashboard.test.mjs
 // Screenshots go to $BALLSIGHT_SCREENSHOT_DIR (ctest: build/screenshots).
 import assert from "node:assert/strict";
-import { existsSync, mkdirSync } from "node:fs";
-import { join } from "node:path";
 import test from "node:test";
 
+import { launchBrowser, screenshotPath, watchPage } from "./browser_support.mjs";
 import { startSimulatedService, stop, until } from "./serve_support.mjs";
 
-const CHROMIUM = "/usr/bin/chromium";
-// No traffic but to the page's own server: Chromium's background services stay off.
-const CHROMIUM_ARGS = [
-  "--no-sandbox",
-  "--disable-gpu",
-  "--disable-quic",
-  "--no-first-run",
-  "--disable-background-networking",
-  "--disable-component-update",
-  "--disable-sync",
-  "--disable-default-apps",
-  "--disable-extensions",
-];
-const installed = existsSync(new URL("../../node_modules/playwright-core/package.json", import.meta.url));
-
-function screenshotPath(name) {
-  const dir = process.env.BALLSIGHT_SCREENSHOT_DIR;
-  if (!dir) return null;
-  mkdirSync(dir, { recursive: true });
-  return join(dir, name);
-}
-
 test("the dashboard in Chromium", { timeout: 240_000 }, async (t) => {
-  const bin = process.env.BALLSIGHT_BIN;
-  if (!bin) return t.skip("BALLSIGHT_BIN is not set (the path of the ballsight executable)");
-  const ready = installed && existsSync(CHROMIUM);
-  // CI installs both (scripts/setup): there a missing browser is a failure, not a skip.
-  if (!ready && process.env.CI) assert.fail(`playwright-core or ${CHROMIUM} is missing: scripts/setup did not run`);
-  if (!ready) return t.skip(`playwright-core or ${CHROMIUM} is missing: run scripts/setup`);
-  const { chromium } = await import("playwright-core");
+  const launched = await launchBrowser(t);
+  if (!launched) return;
+  const { bin, browser } = launched;
 
   const service = await startSimulatedService(t, bin, { seconds: 120 });
   const origin = `http://127.0.0.1:${service.port}`;
-  const browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS });
-  t.after(() => browser.close());
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-  const pageErrors = [];
-  page.on("pageerror", (e) => pageErrors.push(e.message));
-  page.on("requestfailed", (r) => pageErrors.push(`request failed: ${r.url()}`));
-  page.on("request", (r) => {
-    if (!r.url().startsWith(origin) && !r.url().startsWith(`ws://127.0.0.1:${service.port}/`))
-      pageErrors.push(`request to another host: ${r.url()}`);
-  });
+  const pageErrors = watchPage(page, origin);
   await page.goto(`${origin}/`);
   const shown = () => page.evaluate(() => window.ballsightDashboard);
   await until(async () => (await shown()).seq > 0 && (await shown()).robot, "a navigation update with the robot");

@@ -44,7 +44,7 @@ bool has_ground_map_magic(std::string_view bytes) {
   return bytes.substr(0, kGroundMapMagic.size()) == kGroundMapMagic;
 }
 
-void save_ground_map(const std::filesystem::path& path, const GroundMap& map) {
+std::string ground_map_bytes(const GroundMap& map) {
   const GroundMapInfo& info = map.info();
   std::string file;
   file.reserve(kGroundMapHeaderBytes + payload_bytes(info));
@@ -71,7 +71,11 @@ void save_ground_map(const std::filesystem::path& path, const GroundMap& map) {
   std::string checksum;
   LittleEndianWriter(checksum).u32(file_checksum(file));
   file.replace(kChecksumOffset, checksum.size(), checksum);
-  write_file_atomic(path, file);
+  return file;
+}
+
+void save_ground_map(const std::filesystem::path& path, const GroundMap& map) {
+  write_file_atomic(path, ground_map_bytes(map));
 }
 
 GroundMap load_ground_map(const std::filesystem::path& path,

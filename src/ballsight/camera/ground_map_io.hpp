@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <opencv2/core/types.hpp>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "ballsight/camera/ground_map.hpp"
@@ -17,6 +18,8 @@ inline constexpr std::string_view kGroundMapMagic = "BSGRDMAP";
 inline constexpr std::uint32_t kGroundMapVersion = 1;
 inline constexpr std::size_t kGroundMapHeaderBytes = 144;
 
+/// The file's bytes for `map`.
+std::string ground_map_bytes(const GroundMap& map);
 /// Writes `map` atomically; throws InputError naming the path on failure.
 void save_ground_map(const std::filesystem::path& path, const GroundMap& map);
 

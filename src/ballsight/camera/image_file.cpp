@@ -15,22 +15,30 @@ std::string size_text(cv::Size size) {
 }
 }  // namespace
 
-cv::Mat read_image_bgr(const std::filesystem::path& path, std::optional<cv::Size> expected_size) {
-  const std::string bytes = read_file(path);
+cv::Mat decode_image_bgr(std::string_view bytes, const std::string& where,
+                         std::optional<cv::Size> expected_size) {
   const std::vector<uchar> buffer(bytes.begin(), bytes.end());
-  const cv::Mat image = cv::imdecode(buffer, cv::IMREAD_COLOR);
-  require(!image.empty(), path.string(), "not a readable image (PNG, JPEG, ...)");
+  const cv::Mat image = buffer.empty() ? cv::Mat() : cv::imdecode(buffer, cv::IMREAD_COLOR);
+  require(!image.empty(), where, "not a readable image (PNG, JPEG, ...)");
   if (expected_size) {
-    require(image.size() == *expected_size, path.string(),
+    require(image.size() == *expected_size, where,
             "image is " + size_text(image.size()) + ", expected " + size_text(*expected_size));
   }
   return image;
 }
 
-void write_png_atomic(const std::filesystem::path& path, const cv::Mat& image) {
+cv::Mat read_image_bgr(const std::filesystem::path& path, std::optional<cv::Size> expected_size) {
+  return decode_image_bgr(read_file(path), path.string(), expected_size);
+}
+
+std::string png_bytes(const cv::Mat& image, const std::string& where) {
   std::vector<uchar> png;
-  require(!image.empty() && cv::imencode(".png", image, png), path.string(), "cannot encode PNG");
-  write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  require(!image.empty() && cv::imencode(".png", image, png), where, "cannot encode PNG");
+  return std::string(reinterpret_cast<const char*>(png.data()), png.size());
+}
+
+void write_png_atomic(const std::filesystem::path& path, const cv::Mat& image) {
+  write_file_atomic(path, png_bytes(image, path.string()));
 }
 
 }  // namespace ballsight

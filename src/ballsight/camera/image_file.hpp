@@ -4,14 +4,22 @@
 #include <filesystem>
 #include <opencv2/core.hpp>
 #include <optional>
+#include <string>
+#include <string_view>
 
 namespace ballsight {
 
+/// Decodes an image file's bytes as 8-bit BGR; throws InputError naming `where` when they are
+/// not a readable image, or when its size differs from `expected_size`.
+cv::Mat decode_image_bgr(std::string_view bytes, const std::string& where,
+                         std::optional<cv::Size> expected_size = std::nullopt);
 /// Reads a colour image as 8-bit BGR; throws InputError naming the file when it cannot be read
 /// or decoded, or when its size differs from `expected_size`.
 cv::Mat read_image_bgr(const std::filesystem::path& path,
                        std::optional<cv::Size> expected_size = std::nullopt);
 
+/// `image` encoded as PNG; throws InputError naming `where` when it cannot be.
+std::string png_bytes(const cv::Mat& image, const std::string& where);
 /// Encodes `image` as PNG and writes it atomically (temporary file, then rename).
 void write_png_atomic(const std::filesystem::path& path, const cv::Mat& image);
 

@@ -62,12 +62,16 @@ IrisLut read_iris_lut(const std::filesystem::path& path, IrisLutKind kind) {
   return IrisLut(kind, std::move(values));
 }
 
-void write_iris_lut(const std::filesystem::path& path, const IrisLut& lut) {
+std::string iris_lut_bytes(const IrisLut& lut) {
   std::string file;
   file.reserve(2 * lut.values().size());
   LittleEndianWriter out(file);
   for (const std::int16_t v : lut.values()) out.i16(v);
-  write_file_atomic(path, file);
+  return file;
+}
+
+void write_iris_lut(const std::filesystem::path& path, const IrisLut& lut) {
+  write_file_atomic(path, iris_lut_bytes(lut));
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -57,6 +58,8 @@ class IrisLut {
 /// Reads a raw table; throws InputError naming the file when it is missing or not exactly
 /// 360 x bins int16 long.
 IrisLut read_iris_lut(const std::filesystem::path& path, IrisLutKind kind);
+/// The raw little-endian table's bytes.
+std::string iris_lut_bytes(const IrisLut& lut);
 /// Writes the raw little-endian table atomically.
 void write_iris_lut(const std::filesystem::path& path, const IrisLut& lut);
 

@@ -18,12 +18,12 @@
 #include "ballsight/eval/court_eval.hpp"
 #include "ballsight/eval/loop_demo.hpp"
 #include "ballsight/eval/loop_plot.hpp"
-#include "ballsight/eval/omni_auto_calibration.hpp"
 #include "ballsight/eval/plan_eval.hpp"
+#include "ballsight/pipeline/marker_frame_samples.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
 #include "ballsight/sim/court_dataset.hpp"
 #include "ballsight/sim/omni_dataset.hpp"
-#include "ballsight/sim/omni_marker_layout.hpp"
+#include "ballsight/sim/omni_scenario.hpp"
 
 namespace ballsight {
 
@@ -90,7 +90,7 @@ std::string omni_localisation(const fs::path& dir, std::vector<Figure>& figures)
   const auto start = Clock::now();
   const sim::OmniPalette palette;
   const Vec2 configured_center(319.5, 239.5);
-  const std::vector<LayoutMarker> layout = layout_of(sim::calibration_markers(Pose2D{}));
+  const std::vector<LayoutMarker> layout = layout_markers();
   const cv::Mat calibration_frame = read_image_bgr(dir / "omni_0000.png");
   const MarkerFrameSamples found =
       samples_from_marker_frame(calibration_frame, layout, palette.marker_bgr, configured_center);

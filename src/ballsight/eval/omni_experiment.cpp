@@ -16,10 +16,10 @@
 #include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
-#include "ballsight/eval/omni_auto_calibration.hpp"
+#include "ballsight/pipeline/marker_frame_samples.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
-#include "ballsight/sim/omni_marker_layout.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
+#include "ballsight/sim/omni_scenario.hpp"
 
 namespace ballsight {
 
@@ -104,7 +104,7 @@ Locate ballsight_locate(const YuvRange& ball_color, GroundMap map) {
 }
 
 // ballsight's own calibration, without clicking: the markers of one rendered calibration frame
-// found, matched and their centroid shifts removed (omni_auto_calibration.hpp).
+// found, matched and their centroid shifts removed (pipeline/marker_frame_samples.hpp).
 std::vector<PolarSample> auto_calibration_samples(const OmniRigParams& rig,
                                                   const OmniExperimentOptions& options,
                                                   const Vec2& configured_center) {
@@ -114,7 +114,7 @@ std::vector<PolarSample> auto_calibration_samples(const OmniRigParams& rig,
   scene.markers = sim::calibration_markers(scene.robot_pose);
   scene.effects.noise_sigma = options.sensor_noise;
   scene.noise_seed = options.seed * 1000 + 999;  // the test frames use seed * 1000 + 0..35
-  const std::vector<LayoutMarker> layout = layout_of(sim::calibration_markers(Pose2D{}));
+  const std::vector<LayoutMarker> layout = layout_markers();
   return samples_from_marker_frame(sim::render_omni_scene(scene).bgr, layout,
                                    scene.palette.marker_bgr, configured_center)
       .samples;

@@ -8,6 +8,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/net/omni_calibration_api.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 #include "ballsight/pipeline/world_model_json.hpp"
 
@@ -443,6 +444,10 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       {"/api/v1/stream", {"GET"}, stream_route},
       {"/api/v1/openapi.json", {"GET"}, openapi_route},
   };
+  if (OmniCalibrationApi::owns(path)) {
+    return c.omni ? c.omni->handle(request)
+                  : api_error(404, "no omni calibration on this service", path);
+  }
   try {
     const auto route = std::find_if(kRoutes.begin(), kRoutes.end(),
                                     [&](const ApiRoute& r) { return path == r.path; });

@@ -19,6 +19,8 @@
 
 namespace ballsight {
 
+class OmniCalibrationApi;
+
 struct ApiRequest {
   std::string method;  // "GET", "PUT", "POST", ...
   std::string target;  // path and query, e.g. "/api/v1/navigation?after=3&timeout_ms=500"
@@ -54,6 +56,8 @@ struct ApiContext {
   /// /api/v1/sim/drive); answers its collector's count. Empty elsewhere (404).
   std::function<nlohmann::json(std::uint64_t seq, double speed_mps, double turn_rate_rps)> drive;
   std::chrono::milliseconds max_wait{30000};  // cap on a long-poll's timeout_ms
+  /// The omni calibration page's API (/api/v1/omni/...); null: none (404).
+  OmniCalibrationApi* omni = nullptr;
 };
 
 /// `j` as JSON text; bytes that are not UTF-8 (a client's, a camera's message) become U+FFFD

@@ -96,6 +96,48 @@ const nlohmann::json& openapi_document() {
     },
     "/api/v1/openapi.json": {
       "get": {"summary": "This document", "responses": {"200": {"description": "OpenAPI 3"}}}
+    },
+    "/api/v1/omni/files": {
+      "get": {"summary": "Omni calibration: the images of the server's folder (serve --omni-frames) and whether a simulated omni robot is there",
+              "responses": {"200": {"description": "{\"files\": [names], \"simulated\": bool}"}}}
+    },
+    "/api/v1/omni/frames": {
+      "post": {"summary": "Omni calibration: a frame to work on, the body a PNG or JPEG image, or {\"file\": NAME} of the server's folder, or {\"simulated\": true}. Answers {\"frame\": id, width, height, source, rim: the mirror's rim circle {x_px, y_px, radius_px} or null}",
+               "responses": {"201": {"description": "frame"}, "400": {"description": "bad JSON"}, "404": {"description": "no such file, or no files or simulation here"},
+                             "413": {"description": "too large"}, "415": {"description": "not an image"}, "422": {"description": "not readable"}}}
+    },
+    "/api/v1/omni/frames/{frame}": {
+      "get": {"summary": "Omni calibration: the frame as PNG", "responses": {"200": {"description": "image/png"}, "404": {"description": "no such frame"}}}
+    },
+    "/api/v1/omni/frames/{frame}/markers": {
+      "post": {"summary": "Omni calibration: the layout's floor markers found in the frame (ballsight omni markers). Body {center: {x_px, y_px}, layout: {bearing_step_deg, min_cm, max_cm, step_cm}, marker_bgr: [b, g, r], marker_diameter_cm}; answers {markers: [{x_px, y_px, distance_cm, bearing_deg}], blobs, layout_markers}",
+               "responses": {"200": {"description": "markers"}, "400": {"description": "bad body"}, "404": {"description": "no such frame"}, "422": {"description": "bad layout"}}}
+    },
+    "/api/v1/omni/places": {
+      "post": {"summary": "Omni calibration: each point's place in the layout (its ray, and its ring by a fit's distance or by its rank on the ray). Body {center, layout, points: [{x_px, y_px}], fit: id or null}",
+               "responses": {"200": {"description": "{points: [{x_px, y_px, distance_cm, bearing_deg}]}"}, "400": {"description": "bad body"}, "404": {"description": "no such fit"}, "422": {"description": "bad layout"}}}
+    },
+    "/api/v1/omni/samples": {
+      "post": {"summary": "Omni calibration: the samples CSV of points (ballsight omni fit --samples). Body {center, points: [{x_px, y_px, distance_cm, bearing_deg}]}",
+               "responses": {"200": {"description": "text/csv"}, "400": {"description": "bad body"}, "422": {"description": "bad value"}}}
+    },
+    "/api/v1/omni/points": {
+      "post": {"summary": "Omni calibration: the points of a samples CSV (the body) taken around ?center=X,Y",
+               "parameters": [{"name": "center", "in": "query", "required": true, "schema": {"type": "string", "example": "319.5,239.5"}}],
+               "responses": {"200": {"description": "{points: [...]}"}, "400": {"description": "no centre"}, "422": {"description": "bad CSV (line and column named)"}}}
+    },
+    "/api/v1/omni/fits": {
+      "post": {"summary": "Omni calibration: fit a method (poly, paper-mlp, ballsight) to points on its own thread, as ballsight omni fit --center --image-size on the exported samples. Body {method, center, image: {width, height}, points}",
+               "responses": {"202": {"description": "{fit: id, state: running}"}, "400": {"description": "bad body"}, "422": {"description": "bad value"}, "429": {"description": "two fits running"}}}
+    },
+    "/api/v1/omni/fits/{fit}": {
+      "get": {"summary": "Omni calibration: a fit's state (running, done, failed: error), and when done its errors, every point's residual and the distance-vs-radius curves of 12 directions",
+              "responses": {"200": {"description": "fit"}, "404": {"description": "no such fit"}}}
+    },
+    "/api/v1/omni/fits/{fit}/table": {
+      "get": {"summary": "Omni calibration: a fit's lookup table, ?format=ballsight (docs/lut-format.md) or iris (the IRIS team's int16 px2cm)",
+              "parameters": [{"name": "format", "in": "query", "schema": {"type": "string", "enum": ["ballsight", "iris"]}}],
+              "responses": {"200": {"description": "application/octet-stream"}, "400": {"description": "bad format"}, "404": {"description": "no such fit"}, "409": {"description": "not done"}}}
     }
   }
 })json");

@@ -25,6 +25,18 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kContentT
     {".json", "application/json"},
 }};
 
+/// The pages' own addresses and their files.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 2> kPages{{
+    {"/", "index.html"},
+    {"/omni-calibration", "omni-calibration.html"},
+}};
+
+std::optional<std::string_view> page_file(const std::string& path) {
+  for (const auto& [address, file] : kPages)
+    if (path == address) return file;
+  return std::nullopt;
+}
+
 std::optional<std::string_view> content_type(const fs::path& file) {
   const std::string extension = file.extension().string();
   for (const auto& [ext, type] : kContentTypes)
@@ -44,12 +56,13 @@ WebFiles::WebFiles(const fs::path& root) {
 }
 
 bool WebFiles::is_page_path(const std::string& path) {
-  return path == "/" || path.starts_with(kPagePrefix);
+  return page_file(path) || path.starts_with(kPagePrefix);
 }
 
 ApiResponse WebFiles::get(const std::string& path) const {
+  const std::optional<std::string_view> page = page_file(path);
   const std::string relative =
-      path == "/" ? "index.html" : path.substr(std::min(path.size(), kPagePrefix.size()));
+      page ? std::string(*page) : path.substr(std::min(path.size(), kPagePrefix.size()));
   const fs::path requested = fs::path(relative).lexically_normal();
   const auto not_found = [&] { return api_error(404, "no such page", path); };
   if (relative.empty() || requested.is_absolute() || requested.empty() ||

@@ -21,7 +21,8 @@ class WebFiles {
   /// index.html.
   explicit WebFiles(const std::filesystem::path& root);
 
-  /// Whether `path` (no query) is a page's, not the API's: "/" and "/web/...".
+  /// Whether `path` (no query) is a page's, not the API's: "/" (the dashboard),
+  /// "/omni-calibration" and "/web/...".
   static bool is_page_path(const std::string& path);
   /// The file for a GET of `path`: 200 with its content type, or 404 naming the path.
   ApiResponse get(const std::string& path) const;

@@ -23,4 +23,11 @@ std::vector<std::string> write_omni_dataset(const OmniScenarioOptions& options,
   return std::move(writer).written();
 }
 
+cv::Mat render_calibration_frame(OmniScenarioOptions options) {
+  options.frames = 1;
+  options.calibration_frame = true;
+  const OmniScenario scenario = make_omni_scenario(options);
+  return render_omni_scene(scenario.scenes.front()).bgr;
+}
+
 }  // namespace ballsight::sim

@@ -3,6 +3,7 @@
 // omni scenario. What `ballsight sim omni` writes; documented in docs/sim-omni.md.
 
 #include <filesystem>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
@@ -14,5 +15,9 @@ namespace ballsight::sim {
 /// order. Same options, same bytes.
 std::vector<std::string> write_omni_dataset(const OmniScenarioOptions& options,
                                             const std::filesystem::path& out_dir);
+
+/// Frame 0 of the scenario with its calibration frame: the markers around the robot, as
+/// `ballsight sim omni` writes it to omni_0000.png.
+cv::Mat render_calibration_frame(OmniScenarioOptions options);
 
 }  // namespace ballsight::sim

@@ -8,7 +8,6 @@
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/sim/msl_field.hpp"
-#include "ballsight/sim/omni_marker_layout.hpp"
 #include "ballsight/sim/seeding.hpp"
 
 namespace ballsight::sim {
@@ -66,6 +65,15 @@ void OmniScenarioOptions::validate() const {
   require(std::isfinite(ball_max_distance_m) && ball_max_distance_m >= ball_min_distance_m &&
               ball_max_distance_m <= 10.0,
           "scenario.ball_max_distance_m", "must be in [ball_min_distance_m, 10] m");
+}
+
+std::vector<FloorMarker> calibration_markers(const Pose2D& robot_pose, const MarkerLayout& layout) {
+  std::vector<FloorMarker> markers;
+  for (const LayoutMarker& m : layout_markers(layout)) {
+    markers.push_back({static_cast<int>(markers.size()),
+                       field_from_robot_point(robot_pose, m.p_in_robot), m.radius_m});
+  }
+  return markers;
 }
 
 OmniScenario make_omni_scenario(const OmniScenarioOptions& options) {

@@ -10,6 +10,7 @@
 
 #include "ballsight/camera/omni_rig.hpp"
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/core/marker_layout.hpp"
 #include "ballsight/sim/image_effects.hpp"
 #include "ballsight/sim/omni_scene.hpp"
 
@@ -39,5 +40,9 @@ struct OmniScenario {
 };
 
 OmniScenario make_omni_scenario(const OmniScenarioOptions& options);
+
+/// The layout's markers around a robot at `robot_pose`, on the field; id = the layout's index.
+std::vector<FloorMarker> calibration_markers(const Pose2D& robot_pose,
+                                             const MarkerLayout& layout = {});
 
 }  // namespace ballsight::sim

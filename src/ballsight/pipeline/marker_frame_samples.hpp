@@ -9,7 +9,7 @@
 
 #include "ballsight/calib/polar_sample.hpp"
 #include "ballsight/core/geometry.hpp"
-#include "ballsight/sim/omni_scene.hpp"
+#include "ballsight/core/marker_layout.hpp"
 
 namespace ballsight {
 
@@ -18,15 +18,9 @@ struct MarkerFrameSamples {
   int blobs = 0;                     // marker-coloured blobs found
 };
 
-/// A marker of the layout: its centre in the robot frame (m) and its disc's radius (m, 0 when
-/// unknown).
-struct LayoutMarker {
-  Vec2 p_in_robot = Vec2::Zero();
-  double radius_m = 0.0;
-};
-
-/// The simulator's calibration markers around a robot at the origin, as a layout with sizes.
-std::vector<LayoutMarker> layout_of(const std::vector<sim::FloorMarker>& markers);
+/// The markers of `layout`, each `diameter_m` across (0: sizes unknown, the blob centroids keep
+/// their perspective shift). Throws InputError for an invalid layout or a negative diameter.
+std::vector<LayoutMarker> markers_of_diameter(const MarkerLayout& layout, double diameter_m);
 
 /// `layout`: the markers; `marker_bgr`: their colour. With every radius known, the samples are
 /// those of the discs' centres (ballsight's model fitted to predict the centroid shifts).

@@ -1,13 +1,13 @@
 #pragma once
 // The calibration marker layout of the omnivision paper (Fig. 6, Table I): floor markers on rays
-// around the robot every 10 deg, from 60 cm to 460 cm in 50 cm steps.
+// around the robot every 10 deg, from 60 cm to 460 cm in 50 cm steps. The simulator lays them on
+// its floor; calibration matches the markers it finds in an image to them.
 
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
-#include "ballsight/sim/omni_scene.hpp"
 
-namespace ballsight::sim {
+namespace ballsight {
 
 struct MarkerLayout {
   double bearing_step_deg = 10.0;  // rays at robot bearings 0, step, 2 step, ...
@@ -28,10 +28,16 @@ struct MarkerLayout {
 /// rays spread apart) up to the spacing along a ray.
 double calibration_marker_radius_m(double distance_m, const MarkerLayout& layout);
 
-/// The markers around a robot at `robot_pose`, placed in the robot frame and turned to the field.
-/// Ids are ray-major: id = ray_index * rings + ring_index, ray 0 straight ahead, counting
-/// counter-clockwise, ring 0 nearest.
-std::vector<FloorMarker> calibration_markers(const Pose2D& robot_pose,
-                                             const MarkerLayout& layout = {});
+/// A marker of a layout: its centre in the robot frame (m) and its disc's radius (m, 0 when
+/// unknown).
+struct LayoutMarker {
+  Vec2 p_in_robot = Vec2::Zero();
+  double radius_m = 0.0;
+};
 
-}  // namespace ballsight::sim
+/// The layout's markers around the robot. Ray-major: index = ray_index * rings + ring_index, ray
+/// 0 straight ahead, counting counter-clockwise, ring 0 nearest. Throws InputError for an invalid
+/// layout.
+std::vector<LayoutMarker> layout_markers(const MarkerLayout& layout = {});
+
+}  // namespace ballsight

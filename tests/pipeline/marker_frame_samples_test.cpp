@@ -1,12 +1,12 @@
-#include "ballsight/eval/omni_auto_calibration.hpp"
+#include "ballsight/pipeline/marker_frame_samples.hpp"
 
 #include <gtest/gtest.h>
 
 #include "ballsight/calib/ballsight_model.hpp"
 #include "ballsight/calib/ground_error.hpp"
 #include "ballsight/calib/simulated_calibration.hpp"
-#include "ballsight/sim/omni_marker_layout.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
+#include "ballsight/sim/omni_scenario.hpp"
 
 namespace ballsight {
 namespace {
@@ -36,9 +36,10 @@ const CalibrationFrame& calibration_frame() {
 // Calibrates from the frame's markers, their sizes known or not; the held-out ground error.
 GroundErrors auto_calibrated_errors(bool sizes_known) {
   const CalibrationFrame& frame = calibration_frame();
-  std::vector<LayoutMarker> layout;
-  for (const sim::FloorMarker& m : sim::calibration_markers(Pose2D{}))
-    layout.push_back({m.position_in_field, sizes_known ? m.radius_m : 0.0});
+  std::vector<LayoutMarker> layout = layout_markers();
+  if (!sizes_known) {
+    for (LayoutMarker& m : layout) m.radius_m = 0.0;
+  }
   const Vec2 center(319.5, 239.5);
   const MarkerFrameSamples found =
       samples_from_marker_frame(frame.bgr, layout, frame.scene.palette.marker_bgr, center);

@@ -1,17 +1,22 @@
-#include "ballsight/eval/omni_auto_calibration.hpp"
+#include "ballsight/pipeline/marker_frame_samples.hpp"
+
+#include <cmath>
 
 #include "ballsight/calib/marker_centroid.hpp"
 #include "ballsight/calib/marker_samples.hpp"
+#include "ballsight/core/error.hpp"
 #include "ballsight/detect/marker_matching.hpp"
 #include "ballsight/detect/omni_blobs.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
 
 namespace ballsight {
 
-std::vector<LayoutMarker> layout_of(const std::vector<sim::FloorMarker>& markers) {
-  std::vector<LayoutMarker> layout;
-  for (const sim::FloorMarker& m : markers) layout.push_back({m.position_in_field, m.radius_m});
-  return layout;
+std::vector<LayoutMarker> markers_of_diameter(const MarkerLayout& layout, double diameter_m) {
+  require(std::isfinite(diameter_m) && diameter_m >= 0.0, "marker diameter",
+          "must be a non-negative number of metres");
+  std::vector<LayoutMarker> markers = layout_markers(layout);
+  for (LayoutMarker& m : markers) m.radius_m = 0.5 * diameter_m;
+  return markers;
 }
 
 MarkerFrameSamples samples_from_marker_frame(const cv::Mat& bgr,

@@ -1,4 +1,4 @@
-#include "ballsight/sim/omni_marker_layout.hpp"
+#include "ballsight/core/marker_layout.hpp"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 
-namespace ballsight::sim {
+namespace ballsight {
 
 void MarkerLayout::validate() const {
   require(std::isfinite(bearing_step_deg) && bearing_step_deg >= 1.0 && bearing_step_deg <= 180.0,
@@ -29,24 +29,23 @@ double calibration_marker_radius_m(double distance_m, const MarkerLayout& layout
   return 0.5 * layout.fill * std::min(across_rays, along_ray);
 }
 
-std::vector<FloorMarker> calibration_markers(const Pose2D& robot_pose, const MarkerLayout& layout) {
+std::vector<LayoutMarker> layout_markers(const MarkerLayout& layout) {
   layout.validate();
   const int rays = static_cast<int>(std::floor(360.0 / layout.bearing_step_deg + 1e-9));
   const int rings =
       static_cast<int>(std::floor(
           (layout.max_distance_m - layout.min_distance_m) / layout.distance_step_m + 1e-9)) +
       1;
-  std::vector<FloorMarker> markers;
+  std::vector<LayoutMarker> markers;
   markers.reserve(static_cast<std::size_t>(rays) * rings);
   for (int ray = 0; ray < rays; ++ray) {
     for (int ring = 0; ring < rings; ++ring) {
       const double distance = layout.min_distance_m + ring * layout.distance_step_m;
-      const Vec2 p_in_robot = robot_point_from_bearing(ray * layout.bearing_step_deg, distance);
-      markers.push_back({ray * rings + ring, field_from_robot_point(robot_pose, p_in_robot),
+      markers.push_back({robot_point_from_bearing(ray * layout.bearing_step_deg, distance),
                          calibration_marker_radius_m(distance, layout)});
     }
   }
   return markers;
 }
 
-}  // namespace ballsight::sim
+}  // namespace ballsight
