@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/net/omni_calibration_api.hpp"
 #include "sample_update.hpp"
 
 namespace ballsight {
@@ -29,7 +30,12 @@ constexpr const char* kToken = "0123456789abcdef0123";
 
 struct Service {
   NavigationHub hub;
-  ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
+  OmniCalibrationApi omni;
+  ApiContext context = [this] {
+    ApiContext c{hub, {"ne"}, SiteCourt{}, 0.0335};
+    c.omni = &omni;
+    return c;
+  }();
   HttpServer server;
 
   explicit Service(HttpServerOptions options = with_token()) : server(options, context) {}
@@ -108,7 +114,7 @@ TEST(HttpServer, EveryDocumentedRouteAnswersAsDocumentedOverTheWire) {
       ++operations;
     }
   }
-  EXPECT_EQ(operations, 14);
+  EXPECT_EQ(operations, 24);
   // The errors' own headers.
   const auto refused = client.send(http::verb::put, "/api/v1/robot", "{}");
   EXPECT_EQ(refused[http::field::www_authenticate], "Bearer");

@@ -160,7 +160,7 @@ TEST(OmniCalibrationApi, MarkersFitAndTablesAreTheLibrarys) {
 TEST(OmniCalibrationApi, BadRequestsNameWhatIsWrong) {
   OmniFixture f;
   expect_error(f.call("POST", "/api/v1/omni/points?center=1,2", "theta_deg,radius_px\n1,2\n"), 422,
-               "samples CSV");
+               "samples CSV:1:1");
   expect_error(f.call("POST", "/api/v1/omni/points", "theta_deg,radius_px,distance_cm\n"), 400,
                "query");
   expect_error(f.call("POST", "/api/v1/omni/fits",

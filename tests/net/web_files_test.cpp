@@ -23,6 +23,7 @@ struct Pages {
   fs::path root = temp / "web";
   Pages() {
     write(root / "index.html", "<!doctype html>");
+    write(root / "omni-calibration.html", "<!doctype html><title>omni</title>");
     write(root / "js" / "page.js", "export {};");
     write(root / "notes.txt", "not a page's file");
     write(temp / "secret.json", "{\"token\": 1}");
@@ -42,6 +43,9 @@ TEST(WebFiles, ServesThePagesWithTheirTypes) {
   EXPECT_EQ(js.content_type, "text/javascript; charset=utf-8");
   EXPECT_TRUE(WebFiles::is_page_path("/"));
   EXPECT_TRUE(WebFiles::is_page_path("/web/x.js"));
+  EXPECT_TRUE(WebFiles::is_page_path("/omni-calibration"));
+  EXPECT_EQ(files.get("/omni-calibration").body, "<!doctype html><title>omni</title>");
+  EXPECT_FALSE(WebFiles::is_page_path("/omni-calibration/x"));
   EXPECT_FALSE(WebFiles::is_page_path("/api/v1/site"));
 }
 
