@@ -425,7 +425,8 @@ $('points').addEventListener('click', (event) => {
 async function start() {
   const { files, simulated } = await api('GET', '/api/v1/omni/files');
   $('server-files').innerHTML = files.map((f) => `<option>${f.replace(/</g, '&lt;')}</option>`).join('');
-  $('open-file').disabled = !files.length;
+  $('server-files').hidden = !files.length;
+  $('open-file').hidden = !files.length;
   $('open-sim').disabled = !simulated;
   render();
 }

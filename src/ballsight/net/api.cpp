@@ -8,6 +8,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/net/api_request.hpp"
 #include "ballsight/net/omni_calibration_api.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 #include "ballsight/pipeline/world_model_json.hpp"
@@ -17,53 +18,31 @@ namespace {
 
 using nlohmann::json;
 
-/// A client's mistake: the status to answer with, what is wrong and where.
-struct ApiError {
-  int status;
-  std::string what;
-  std::string where;
-};
-
 ApiResponse ok(const json& body) {
   return {200, json_text(body)};
-}
-
-ApiResponse error_response(const ApiError& e) {
-  return api_error(e.status, e.what, e.where);
-}
-
-[[noreturn]] void fail(int status, const std::string& what, const std::string& where) {
-  throw ApiError{status, what, where};
-}
-
-json parse_body(const std::string& body) {
-  json j = json::parse(body, nullptr, false);
-  if (j.is_discarded()) fail(400, "malformed JSON", "body");
-  if (!j.is_object()) fail(400, "expected a JSON object", "body");
-  return j;
 }
 
 /// Rejects keys outside `allowed` (a typo must not pass silently).
 void only_keys(const json& object, const std::set<std::string>& allowed, const std::string& where) {
   for (const auto& [key, value] : object.items()) {
-    if (!allowed.count(key)) fail(400, "unknown field '" + key + "'", where);
+    if (!allowed.count(key)) api_fail(400, "unknown field '" + key + "'", where);
   }
 }
 
 double number(const json& object, const char* key, const std::string& where) {
   const auto it = object.find(key);
-  if (it == object.end()) fail(400, std::string("missing field '") + key + "'", where);
-  if (!it->is_number()) fail(400, "expected a number", where + "." + key);
+  if (it == object.end()) api_fail(400, std::string("missing field '") + key + "'", where);
+  if (!it->is_number()) api_fail(400, "expected a number", where + "." + key);
   const double v = it->get<double>();
-  if (!std::isfinite(v)) fail(400, "expected a finite number", where + "." + key);
+  if (!std::isfinite(v)) api_fail(400, "expected a finite number", where + "." + key);
   return v;
 }
 
 Vec2 field_point(const json& object, const std::string& where, const FieldRect& area) {
-  if (!object.is_object()) fail(400, "expected an object {\"x_m\", \"y_m\"}", where);
+  if (!object.is_object()) api_fail(400, "expected an object {\"x_m\", \"y_m\"}", where);
   only_keys(object, {"x_m", "y_m"}, where);
   const Vec2 p(number(object, "x_m", where), number(object, "y_m", where));
-  if (!area.contains(p)) fail(422, "outside the field area", where);
+  if (!area.contains(p)) api_fail(422, "outside the field area", where);
   return p;
 }
 
@@ -72,7 +51,7 @@ std::vector<Vec2> ball_list(const ApiRequest& request, const FieldRect& area) {
   const json body = parse_body(request.body);
   only_keys(body, {"balls"}, "body");
   const auto list = body.find("balls");
-  if (list == body.end() || !list->is_array()) fail(400, "expected a list", "body.balls");
+  if (list == body.end() || !list->is_array()) api_fail(400, "expected a list", "body.balls");
   std::vector<Vec2> balls;
   for (std::size_t i = 0; i < list->size(); ++i) {
     balls.push_back(field_point((*list)[i], "body.balls[" + std::to_string(i) + "]", area));
@@ -84,38 +63,6 @@ json point_json(const Vec2& p) {
   return {{"x_m", p.x()}, {"y_m", p.y()}};
 }
 
-/// `text` with its %XX escapes and '+' (a browser's URLSearchParams) decoded; a '%' that does
-/// not start an escape stays as it is.
-std::string percent_decoded(const std::string& text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    unsigned value = 0;
-    if (text[i] == '%' && i + 2 < text.size() &&
-        std::from_chars(text.data() + i + 1, text.data() + i + 3, value, 16).ptr ==
-            text.data() + i + 3) {
-      out += static_cast<char>(value);
-      i += 2;
-    } else {
-      out += text[i] == '+' ? ' ' : text[i];
-    }
-  }
-  return out;
-}
-
-/// The value of `key` in "a=1&b=2" (percent-decoded), or nullopt when absent.
-std::optional<std::string> query_text(const std::string& query, const std::string& key) {
-  std::size_t start = 0;
-  while (start < query.size()) {
-    const std::size_t end = std::min(query.find('&', start), query.size());
-    const std::string item = query.substr(start, end - start);
-    const std::size_t eq = item.find('=');
-    if (percent_decoded(item.substr(0, eq)) == key)
-      return eq == std::string::npos ? "" : percent_decoded(item.substr(eq + 1));
-    start = end + 1;
-  }
-  return std::nullopt;
-}
-
 /// "a=1&b=2" -> the value of `key` as an unsigned integer, or `fallback` when absent.
 std::uint64_t query_number(const std::string& query, const std::string& key,
                            std::uint64_t fallback) {
@@ -124,13 +71,13 @@ std::uint64_t query_number(const std::string& query, const std::string& key,
   std::uint64_t v = 0;
   const auto [ptr, ec] = std::from_chars(text->data(), text->data() + text->size(), v);
   if (ec != std::errc() || ptr != text->data() + text->size() || text->empty()) {
-    fail(400, "expected a non-negative integer, got '" + *text + "'", "query " + key);
+    api_fail(400, "expected a non-negative integer, got '" + *text + "'", "query " + key);
   }
   return v;
 }
 
 void require_write(const ApiRequest& request) {
-  if (!request.authorized) fail(401, "writes need 'Authorization: Bearer TOKEN'", "headers");
+  if (!request.authorized) api_fail(401, "writes need 'Authorization: Bearer TOKEN'", "headers");
 }
 
 /// Adds the update's seq, service id and times to `j`.
@@ -143,7 +90,7 @@ void stamp(json& j, const NavigationUpdate& u, const ApiContext& c) {
 
 NavigationUpdate latest_or_fail(const NavigationHub& hub) {
   std::optional<NavigationUpdate> u = hub.latest();
-  if (!u) fail(503, "no update published yet", "service");
+  if (!u) api_fail(503, "no update published yet", "service");
   return std::move(*u);
 }
 
@@ -154,7 +101,7 @@ ApiResponse robot_route(const ApiRequest& request, const std::string&, const Api
     const json body = parse_body(request.body);
     only_keys(body, {"x_m", "y_m", "heading_deg"}, "body");
     const Vec2 p(number(body, "x_m", "body"), number(body, "y_m", "body"));
-    if (!c.area.contains(p)) fail(422, "outside the field area", "body");
+    if (!c.area.contains(p)) api_fail(422, "outside the field area", "body");
     c.hub.set_robot({p, rad_from_deg(number(body, "heading_deg", "body"))});
     return ok({{"ok", true}});
   }
@@ -172,7 +119,7 @@ ApiResponse robot_route(const ApiRequest& request, const std::string&, const Api
     source = "cameras";
     time_ns = u->capture_time_ns;
   }
-  if (!pose) fail(404, "no robot pose yet", "robot");
+  if (!pose) api_fail(404, "no robot pose yet", "robot");
   return ok({{"x_m", pose->position.x()},
              {"y_m", pose->position.y()},
              {"heading_deg", deg_from_rad(pose->heading_rad)},
@@ -236,12 +183,12 @@ ApiResponse ack_route(const ApiRequest& request, const std::string&, const ApiCo
   only_keys(body, {"seq"}, "body");
   const auto seq = body.find("seq");
   if (seq == body.end() || !seq->is_number_unsigned()) {
-    fail(400, "expected a non-negative integer", "body.seq");
+    api_fail(400, "expected a non-negative integer", "body.seq");
   }
   try {
     c.hub.acknowledge(seq->get<std::uint64_t>());
   } catch (const InputError& e) {
-    fail(409, e.what(), "body.seq");
+    api_fail(409, e.what(), "body.seq");
   }
   return ok({{"acknowledged_seq", c.hub.acknowledged()}});
 }
@@ -250,19 +197,19 @@ ApiResponse ack_route(const ApiRequest& request, const std::string&, const ApiCo
 std::vector<Vec2> balls_by_id(const json& body, const NavigationHub& hub) {
   const auto seq = body.find("seq");
   if (seq == body.end() || !seq->is_number_unsigned()) {
-    fail(400, "expected the update's seq the ids belong to", "body.seq");
+    api_fail(400, "expected the update's seq the ids belong to", "body.seq");
   }
   const std::uint64_t n = seq->get<std::uint64_t>();
   const std::optional<NavigationUpdate> u = hub.find(n);
-  if (!u) fail(409, "update " + std::to_string(n) + " is not kept", "body.seq");
+  if (!u) api_fail(409, "update " + std::to_string(n) + " is not kept", "body.seq");
   const auto ids = body.find("ids");
-  if (ids == body.end() || !ids->is_array()) fail(400, "expected a list", "body.ids");
+  if (ids == body.end() || !ids->is_array()) api_fail(400, "expected a list", "body.ids");
   std::vector<Vec2> positions;
   for (std::size_t i = 0; i < ids->size(); ++i) {
     const json& id = (*ids)[i];
     if (!id.is_number_unsigned() || id.get<std::uint64_t>() >= u->world.balls.size()) {
-      fail(422, "no such ball in update " + std::to_string(n),
-           "body.ids[" + std::to_string(i) + "]");
+      api_fail(422, "no such ball in update " + std::to_string(n),
+               "body.ids[" + std::to_string(i) + "]");
     }
     positions.push_back(u->world.balls[id.get<std::size_t>()].position_m);
   }
@@ -286,12 +233,13 @@ ApiResponse collected_route(const ApiRequest& request, const std::string&, const
 
 ApiResponse drive_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
   require_write(request);
-  if (!c.drive) fail(404, "not a simulated court: there is no simulated robot to drive", "service");
+  if (!c.drive)
+    api_fail(404, "not a simulated court: there is no simulated robot to drive", "service");
   const json body = parse_body(request.body);
   only_keys(body, {"seq", "speed_mps", "turn_rate_dps"}, "body");
   const auto seq = body.find("seq");
   if (seq == body.end() || !seq->is_number_unsigned()) {
-    fail(400, "expected a non-negative integer", "body.seq");
+    api_fail(400, "expected a non-negative integer", "body.seq");
   }
   return ok(c.drive(seq->get<std::uint64_t>(), number(body, "speed_mps", "body"),
                     rad_from_deg(number(body, "turn_rate_dps", "body"))));
@@ -330,7 +278,7 @@ ApiResponse health_route(const ApiRequest&, const std::string&, const ApiContext
 }
 
 ApiResponse stream_route(const ApiRequest&, const std::string&, const ApiContext&) {
-  fail(426, "a WebSocket upgrade is needed", "headers");
+  api_fail(426, "a WebSocket upgrade is needed", "headers");
 }
 
 ApiResponse openapi_route(const ApiRequest&, const std::string&, const ApiContext&) {
@@ -355,13 +303,12 @@ ApiResponse api_error(int status, const std::string& what, const std::string& wh
 }
 
 bool is_stream_target(const std::string& target) {
-  return target.substr(0, target.find('?')) == "/api/v1/stream";
+  return split_target(target).path == "/api/v1/stream";
 }
 
 std::variant<StreamSubscription, ApiResponse> stream_subscription(const ApiRequest& request,
                                                                   const ApiContext& c) {
-  const std::size_t q = request.target.find('?');
-  const std::string query = q == std::string::npos ? "" : request.target.substr(q + 1);
+  const std::string query = split_target(request.target).query;
   try {
     StreamSubscription s;
     s.after = resume_after(query, c);
@@ -376,7 +323,8 @@ std::variant<StreamSubscription, ApiResponse> stream_subscription(const ApiReque
         } else if (topic == "health") {
           s.health = true;
         } else {
-          fail(400, "unknown topic '" + topic + "' (navigation, world or health)", "query topics");
+          api_fail(400, "unknown topic '" + topic + "' (navigation, world or health)",
+                   "query topics");
         }
       }
     }
@@ -427,9 +375,9 @@ ApiContext::ApiContext(NavigationHub& hub_, std::vector<std::string> camera_name
            Vec2(0.5 * court_.area_length_m, 0.5 * court_.area_width_m)} {}
 
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
-  const std::size_t q = request.target.find('?');
-  const std::string path = request.target.substr(0, q);
-  const std::string query = q == std::string::npos ? "" : request.target.substr(q + 1);
+  const RequestTarget target = split_target(request.target);
+  const std::string& path = target.path;
+  const std::string& query = target.query;
   static const std::vector<ApiRoute> kRoutes{
       {"/api/v1/robot", {"GET", "PUT"}, robot_route},
       {"/api/v1/balls", {"GET", "PUT"}, balls_route},
@@ -451,9 +399,9 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
   try {
     const auto route = std::find_if(kRoutes.begin(), kRoutes.end(),
                                     [&](const ApiRoute& r) { return path == r.path; });
-    if (route == kRoutes.end()) fail(404, "unknown route", path);
+    if (route == kRoutes.end()) api_fail(404, "unknown route", path);
     if (!route->methods.count(request.method)) {
-      fail(405, "method " + request.method + " not allowed", path);
+      api_fail(405, "method " + request.method + " not allowed", path);
     }
     return route->answer(request, query, c);
   } catch (const ApiError& e) {

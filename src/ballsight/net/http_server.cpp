@@ -29,6 +29,7 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/net/api_request.hpp"
 #include "ballsight/net/foxglove.hpp"
 #include "ballsight/net/web_files.hpp"
 
@@ -300,7 +301,7 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
         }
         response = std::get<ApiResponse>(subscription);
       }
-    } else if (const std::string path = request.target.substr(0, request.target.find('?'));
+    } else if (const std::string path = split_target(request.target).path;
                pages && request.method == "GET" && WebFiles::is_page_path(path)) {
       response = pages->get(path);
     } else {

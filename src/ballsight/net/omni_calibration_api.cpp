@@ -1,7 +1,6 @@
 #include "ballsight/net/omni_calibration_api.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <deque>
 #include <map>
 #include <mutex>
@@ -14,9 +13,11 @@
 #include "ballsight/camera/ground_map_io.hpp"
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/camera/iris_lut.hpp"
+#include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/json_fields.hpp"
+#include "ballsight/net/api_request.hpp"
 #include "ballsight/pipeline/marker_frame_samples.hpp"
 #include "ballsight/pipeline/omni_calibration.hpp"
 
@@ -27,17 +28,6 @@ using nlohmann::json;
 
 constexpr const char* kPrefix = "/api/v1/omni/";
 constexpr std::size_t kMaxRunningFits = 2;
-
-/// A client's mistake, answered as {"error", "where"}.
-struct OmniApiError {
-  int status;
-  std::string what;
-  std::string where;
-};
-
-[[noreturn]] void fail(int status, const std::string& what, const std::string& where) {
-  throw OmniApiError{status, what, where};
-}
 
 /// An InputError's "where: what" as an answer.
 ApiResponse input_error(int status, const InputError& e) {
@@ -57,13 +47,6 @@ ApiResponse bytes_answer(std::string bytes, const std::string& content_type) {
   return r;
 }
 
-json parse_object(const std::string& body) {
-  json j = json::parse(body, nullptr, false);
-  if (j.is_discarded()) fail(400, "malformed JSON", "body");
-  if (!j.is_object()) fail(400, "expected a JSON object", "body");
-  return j;
-}
-
 Vec2 pixel_of(const json& object, const std::string& where) {
   return {json_number(object, "x_px", where), json_number(object, "y_px", where)};
 }
@@ -74,7 +57,7 @@ json pixel_json(const Vec2& p) {
 
 std::vector<MarkerPoint> points_of(const json& body) {
   const json& list = json_member(body, "points", "body");
-  if (!list.is_array()) fail(400, "expected a list", "body.points");
+  if (!list.is_array()) api_fail(400, "expected a list", "body.points");
   std::vector<MarkerPoint> points;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string where = "body.points[" + std::to_string(i) + "]";
@@ -122,35 +105,6 @@ MarkerLayout layout_of(const json& body) {
 
 bool is_image_upload(const std::string& body) {
   return body.starts_with("\x89PNG\r\n\x1a\n") || body.starts_with("\xff\xd8\xff");
-}
-
-/// "X,Y" -> a pixel.
-Vec2 pixel_pair(const std::string& text, const std::string& where) {
-  const std::size_t comma = text.find(',');
-  double v[2] = {0.0, 0.0};
-  const std::string parts[2] = {text.substr(0, comma),
-                                comma == std::string::npos ? "" : text.substr(comma + 1)};
-  for (int i = 0; i < 2; ++i) {
-    const auto [ptr, ec] =
-        std::from_chars(parts[i].data(), parts[i].data() + parts[i].size(), v[i]);
-    if (ec != std::errc() || ptr != parts[i].data() + parts[i].size() || parts[i].empty() ||
-        !std::isfinite(v[i])) {
-      fail(400, "expected X,Y in pixels, got '" + text + "'", where);
-    }
-  }
-  return {v[0], v[1]};
-}
-
-/// The value of `key` in the query "a=1&b=2", or nullopt.
-std::optional<std::string> query_value(const std::string& query, const std::string& key) {
-  std::size_t start = 0;
-  while (start < query.size()) {
-    const std::size_t end = std::min(query.find('&', start), query.size());
-    const std::string item = query.substr(start, end - start);
-    if (item.starts_with(key + "=")) return item.substr(key.size() + 1);
-    start = end + 1;
-  }
-  return std::nullopt;
 }
 
 struct Frame {
@@ -243,37 +197,37 @@ struct OmniCalibrationApi::Impl {
     std::lock_guard lock(mutex);
     for (const auto& f : frames)
       if (std::to_string(f->id) == id) return f;
-    fail(404,
-         "no such frame (frames are forgotten after " + std::to_string(options.max_frames) +
-             " newer ones)",
-         "frame " + id);
+    api_fail(404,
+             "no such frame (frames are forgotten after " + std::to_string(options.max_frames) +
+                 " newer ones)",
+             "frame " + id);
   }
 
   std::shared_ptr<FitJob> fit(const std::string& id) {
     std::lock_guard lock(mutex);
     for (const auto& f : fits)
       if (std::to_string(f->id) == id) return f;
-    fail(404, "no such fit", "fit " + id);
+    api_fail(404, "no such fit", "fit " + id);
   }
 
   /// The frame a POST asks for and where it came from.
   std::pair<cv::Mat, std::string> frame_image(const std::string& body) {
     if (is_image_upload(body)) return {decode_image_bgr(body, "body"), "upload"};
     if (body.empty() || body.front() != '{') {
-      fail(415, "not a PNG or JPEG image (nor a JSON request {\"file\"} or {\"simulated\"})",
-           "body");
+      api_fail(415, "not a PNG or JPEG image (nor a JSON request {\"file\"} or {\"simulated\"})",
+               "body");
     }
-    const json request = parse_object(body);
+    const json request = parse_body(body);
     if (request.value("simulated", false)) {
-      if (!options.simulated_frame) fail(404, "no simulated omni robot here", "body.simulated");
+      if (!options.simulated_frame) api_fail(404, "no simulated omni robot here", "body.simulated");
       return {options.simulated_frame(), "simulated"};
     }
     const std::string name = json_string(request, "file", "body");
-    if (options.frames_dir.empty()) fail(404, "the server offers no files", "body.file");
+    if (options.frames_dir.empty()) api_fail(404, "the server offers no files", "body.file");
     const std::filesystem::path path = options.frames_dir / name;
     if (name.find('/') != std::string::npos || name.starts_with(".") ||
         !std::filesystem::is_regular_file(path)) {
-      fail(404, "no such file in the server's folder", "body.file");
+      api_fail(404, "no such file in the server's folder", "body.file");
     }
     return {read_image_bgr(path), "file " + name};
   }
@@ -282,8 +236,8 @@ struct OmniCalibrationApi::Impl {
     auto f = std::make_shared<Frame>();
     std::tie(f->bgr, f->source) = frame_image(request.body);
     if (static_cast<std::size_t>(f->bgr.total()) > options.max_image_pixels) {
-      fail(413, "image larger than " + std::to_string(options.max_image_pixels) + " pixels",
-           "body");
+      api_fail(413, "image larger than " + std::to_string(options.max_image_pixels) + " pixels",
+               "body");
     }
     f->png = png_bytes(f->bgr, "frame");
     f->rim = find_mirror_rim(f->bgr);
@@ -310,14 +264,14 @@ struct OmniCalibrationApi::Impl {
   }
 
   ApiResponse markers(const Frame& frame, const ApiRequest& request) {
-    const json body = parse_object(request.body);
+    const json body = parse_body(request.body);
     const Vec2 center = pixel_of(json_member(body, "center", "body"), "body.center");
     const MarkerLayout layout = layout_of(body);
     cv::Vec3b bgr(220, 40, 220);
     if (const json* c = optional_member(body, "marker_bgr")) {
       const std::vector<double> v = json_number_array(*c, "body.marker_bgr", 3);
       for (int i = 0; i < 3; ++i) {
-        if (v[i] < 0 || v[i] > 255) fail(400, "expected 0-255", "body.marker_bgr");
+        if (v[i] < 0 || v[i] > 255) api_fail(400, "expected 0-255", "body.marker_bgr");
         bgr[i] = static_cast<uchar>(v[i]);
       }
     }
@@ -333,16 +287,16 @@ struct OmniCalibrationApi::Impl {
   }
 
   ApiResponse places(const ApiRequest& request) {
-    const json body = parse_object(request.body);
+    const json body = parse_body(request.body);
     const Vec2 center = pixel_of(json_member(body, "center", "body"), "body.center");
     const json& list = json_member(body, "points", "body");
-    if (!list.is_array()) fail(400, "expected a list", "body.points");
+    if (!list.is_array()) api_fail(400, "expected a list", "body.points");
     std::vector<Vec2> pixels;
     for (std::size_t i = 0; i < list.size(); ++i)
       pixels.push_back(pixel_of(list[i], "body.points[" + std::to_string(i) + "]"));
     std::shared_ptr<FitJob> job;
     if (const json* id = optional_member(body, "fit")) {
-      if (!id->is_string()) fail(400, "expected a fit's id", "body.fit");
+      if (!id->is_string()) api_fail(400, "expected a fit's id", "body.fit");
       job = fit(id->get<std::string>());
     }
     std::unique_lock<std::mutex> job_lock;
@@ -357,22 +311,25 @@ struct OmniCalibrationApi::Impl {
   }
 
   ApiResponse samples_csv(const ApiRequest& request) {
-    const json body = parse_object(request.body);
+    const json body = parse_body(request.body);
     const Vec2 center = pixel_of(json_member(body, "center", "body"), "body.center");
     const std::vector<MarkerPoint> points = points_of(body);
     return bytes_answer(format_polar_samples_csv(polar_samples_of(points, center)), "text/csv");
   }
 
   ApiResponse import_csv(const ApiRequest& request, const std::string& query) {
-    const std::optional<std::string> center_text = query_value(query, "center");
-    if (!center_text) fail(400, "missing center=X,Y", "query");
-    const Vec2 center = pixel_pair(*center_text, "query center");
+    const std::optional<std::string> center_text = query_text(query, "center");
+    if (!center_text) api_fail(400, "missing center=X,Y", "query");
+    const std::vector<CsvField> xy = split_csv_fields(*center_text);
+    if (xy.size() != 2)
+      api_fail(400, "expected X,Y in pixels, got '" + *center_text + "'", "query center");
+    const Vec2 center(csv_number(xy[0], "query center"), csv_number(xy[1], "query center"));
     const std::vector<PolarSample> samples = parse_polar_samples_csv(request.body, "samples CSV");
     return json_answer(200, {{"points", points_json(marker_points_of(samples, center))}});
   }
 
   ApiResponse start_fit(const ApiRequest& request) {
-    const json body = parse_object(request.body);
+    const json body = parse_body(request.body);
     const OmniMethod method = parse_omni_method(json_string(body, "method", "body"), "body.method");
     const json& size = json_member(body, "image", "body");
     OmniImage image;
@@ -392,7 +349,7 @@ struct OmniCalibrationApi::Impl {
       return f->state == "running";
     });
     if (static_cast<std::size_t>(running) >= kMaxRunningFits) {
-      fail(429, "two fits are running: wait for one to finish", "fits");
+      api_fail(429, "two fits are running: wait for one to finish", "fits");
     }
     job->id = next_id++;
     job->result = {{"fit", std::to_string(job->id)},
@@ -440,11 +397,12 @@ struct OmniCalibrationApi::Impl {
   }
 
   ApiResponse table(FitJob& job, const std::string& query) {
-    const std::string format = query_value(query, "format").value_or("ballsight");
+    const std::string format = query_text(query, "format").value_or("ballsight");
     if (format != "ballsight" && format != "iris")
-      fail(400, "expected ballsight or iris, got '" + format + "'", "query format");
+      api_fail(400, "expected ballsight or iris, got '" + format + "'", "query format");
     std::lock_guard lock(job.mutex);
-    if (job.state != "done") fail(409, "the fit is " + job.state, "fit " + std::to_string(job.id));
+    if (job.state != "done")
+      api_fail(409, "the fit is " + job.state, "fit " + std::to_string(job.id));
     if (format == "ballsight") return bytes_answer(job.table, "application/octet-stream");
     if (!job.iris_table) {
       job.iris_table = iris_lut_bytes(iris_px2cm_from_ground_map(*job.map));
@@ -459,7 +417,7 @@ struct OmniCalibrationApi::Impl {
     };
     const auto allow = [&](const char* method) {
       if (request.method != method)
-        fail(405, "method " + request.method + " not allowed", request.target);
+        api_fail(405, "method " + request.method + " not allowed", request.target);
     };
     if (is(1, "files")) {
       allow("GET");
@@ -501,7 +459,7 @@ struct OmniCalibrationApi::Impl {
       allow("GET");
       return table(*fit(parts[1]), query);
     }
-    fail(404, "unknown route", request.target.substr(0, request.target.find('?')));
+    api_fail(404, "unknown route", split_target(request.target).path);
   }
 };
 
@@ -519,9 +477,7 @@ bool OmniCalibrationApi::owns(const std::string& path) {
 }
 
 ApiResponse OmniCalibrationApi::handle(const ApiRequest& request) {
-  const std::size_t q = request.target.find('?');
-  const std::string path = request.target.substr(0, q);
-  const std::string query = q == std::string::npos ? "" : request.target.substr(q + 1);
+  const auto [path, query] = split_target(request.target);
   std::vector<std::string> parts;
   for (std::size_t start = std::string(kPrefix).size(); start <= path.size();) {
     const std::size_t end = std::min(path.find('/', start), path.size());
@@ -530,8 +486,8 @@ ApiResponse OmniCalibrationApi::handle(const ApiRequest& request) {
   }
   try {
     return impl_->route(request, parts, query);
-  } catch (const OmniApiError& e) {
-    return api_error(e.status, e.what, e.where);
+  } catch (const ApiError& e) {
+    return error_response(e);
   } catch (const InputError& e) {
     return input_error(422, e);
   }

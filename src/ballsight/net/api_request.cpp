@@ -1,0 +1,62 @@
+#include "ballsight/net/api_request.hpp"
+
+#include <algorithm>
+#include <charconv>
+
+namespace ballsight {
+namespace {
+
+/// `text` with its %XX escapes and '+' (a browser's URLSearchParams) decoded; a '%' that does
+/// not start an escape stays as it is.
+std::string percent_decoded(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    unsigned value = 0;
+    if (text[i] == '%' && i + 2 < text.size() &&
+        std::from_chars(text.data() + i + 1, text.data() + i + 3, value, 16).ptr ==
+            text.data() + i + 3) {
+      out += static_cast<char>(value);
+      i += 2;
+    } else {
+      out += text[i] == '+' ? ' ' : text[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+ApiResponse error_response(const ApiError& e) {
+  return api_error(e.status, e.what, e.where);
+}
+
+void api_fail(int status, const std::string& what, const std::string& where) {
+  throw ApiError{status, what, where};
+}
+
+nlohmann::json parse_body(const std::string& body) {
+  nlohmann::json j = nlohmann::json::parse(body, nullptr, false);
+  if (j.is_discarded()) api_fail(400, "malformed JSON", "body");
+  if (!j.is_object()) api_fail(400, "expected a JSON object", "body");
+  return j;
+}
+
+std::optional<std::string> query_text(const std::string& query, const std::string& key) {
+  std::size_t start = 0;
+  while (start < query.size()) {
+    const std::size_t end = std::min(query.find('&', start), query.size());
+    const std::string item = query.substr(start, end - start);
+    const std::size_t eq = item.find('=');
+    if (percent_decoded(item.substr(0, eq)) == key)
+      return eq == std::string::npos ? "" : percent_decoded(item.substr(eq + 1));
+    start = end + 1;
+  }
+  return std::nullopt;
+}
+
+RequestTarget split_target(const std::string& target) {
+  const std::size_t q = target.find('?');
+  return {target.substr(0, q), q == std::string::npos ? "" : target.substr(q + 1)};
+}
+
+}  // namespace ballsight
