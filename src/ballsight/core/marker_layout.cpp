@@ -22,6 +22,15 @@ void MarkerLayout::validate() const {
           "must be in (0, 1)");
 }
 
+int MarkerLayout::rays() const {
+  return static_cast<int>(std::floor(360.0 / bearing_step_deg + 1e-9));
+}
+
+int MarkerLayout::rings() const {
+  return static_cast<int>(std::floor((max_distance_m - min_distance_m) / distance_step_m + 1e-9)) +
+         1;
+}
+
 double calibration_marker_radius_m(double distance_m, const MarkerLayout& layout) {
   const double across_rays =
       2.0 * distance_m * std::sin(0.5 * rad_from_deg(layout.bearing_step_deg));
@@ -31,16 +40,13 @@ double calibration_marker_radius_m(double distance_m, const MarkerLayout& layout
 
 std::vector<LayoutMarker> layout_markers(const MarkerLayout& layout) {
   layout.validate();
-  const int rays = static_cast<int>(std::floor(360.0 / layout.bearing_step_deg + 1e-9));
-  const int rings =
-      static_cast<int>(std::floor(
-          (layout.max_distance_m - layout.min_distance_m) / layout.distance_step_m + 1e-9)) +
-      1;
+  const int rays = layout.rays();
+  const int rings = layout.rings();
   std::vector<LayoutMarker> markers;
   markers.reserve(static_cast<std::size_t>(rays) * rings);
   for (int ray = 0; ray < rays; ++ray) {
     for (int ring = 0; ring < rings; ++ring) {
-      const double distance = layout.min_distance_m + ring * layout.distance_step_m;
+      const double distance = layout.ring_distance_m(ring);
       markers.push_back({robot_point_from_bearing(ray * layout.bearing_step_deg, distance),
                          calibration_marker_radius_m(distance, layout)});
     }

@@ -22,6 +22,12 @@ struct MarkerLayout {
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
+  /// How many rays (every bearing_step_deg around) and rings (min_distance_m..max_distance_m
+  /// every distance_step_m) the layout has.
+  int rays() const;
+  int rings() const;
+  /// The distance of ring `ring` (0: the nearest), m.
+  double ring_distance_m(int ring) const { return min_distance_m + ring * distance_step_m; }
 };
 
 /// Radius of a marker `distance_m` from the robot: grows with distance (neighbours on adjacent

@@ -85,14 +85,9 @@ std::vector<MarkerPoint> suggest_layout_places(std::span<const Vec2> pixels,
                                                const Vec2& image_center, const MarkerLayout& layout,
                                                const OmniGroundModel* model) {
   layout.validate();
-  const int rays = static_cast<int>(std::floor(360.0 / layout.bearing_step_deg + 1e-9));
-  const int rings =
-      static_cast<int>(std::floor(
-          (layout.max_distance_m - layout.min_distance_m) / layout.distance_step_m + 1e-9)) +
-      1;
+  const int rays = layout.rays();
   const auto ring_distance_cm = [&](int ring) {
-    return 100.0 *
-           (layout.min_distance_m + std::clamp(ring, 0, rings - 1) * layout.distance_step_m);
+    return 100.0 * layout.ring_distance_m(std::clamp(ring, 0, layout.rings() - 1));
   };
   std::vector<MarkerPoint> places;
   std::map<int, std::vector<std::pair<double, std::size_t>>> by_ray;  // ray -> (radius, index)
