@@ -3,7 +3,7 @@
 // and the intrinsic calibration from 15 views (with the k3 cross-validation).
 // Run: build/bin/bench_court_calibration
 
-#include "ballsight/eval/court_calibration.hpp"
+#include "ballsight/pipeline/court_calibration.hpp"
 
 #include <benchmark/benchmark.h>
 

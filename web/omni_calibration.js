@@ -2,10 +2,11 @@
 // browser, every step through the service's API (/api/v1/omni/...).
 
 import { ImageView } from './image_view.js';
+import { $, ApiError, api, circle as circleOn, download, historyKey, isTyping, makeGuarded,
+         zoomKey, zoomOnWheel } from './page_support.js';
 import { PointHistory } from './point_history.js';
 import { drawRadialPlot } from './radial_plot.js';
 
-const $ = (id) => document.getElementById(id);
 const canvas = $('view');
 const ctx = canvas.getContext('2d');
 const view = new ImageView(canvas);
@@ -18,54 +19,10 @@ const state = {
   fit: null,          // the last finished fit: {result, points: the list it was fitted to}
   selected: -1,
   heatmap: false,
-  busy: 0,
 };
 const GRAB_PX = 9;  // canvas pixels
 
-class ApiError extends Error {}
-
-async function api(method, path, body, { as = 'json', type } = {}) {
-  const init = { method, headers: {} };
-  if (body !== undefined) {
-    init.body = typeof body === 'string' || body instanceof Blob || body instanceof ArrayBuffer
-      ? body : JSON.stringify(body);
-    init.headers['Content-Type'] = type || 'application/json';
-  }
-  const response = await fetch(path, init);
-  if (!response.ok) {
-    let message = `HTTP ${response.status}`;
-    try {
-      const e = await response.json();
-      message = `${e.where}: ${e.error}`;
-    } catch { /* not JSON */ }
-    throw new ApiError(message);
-  }
-  if (as === 'blob') return response.blob();
-  if (as === 'text') return response.text();
-  return response.json();
-}
-
-function showError(id, error) {
-  const el = $(id);
-  el.textContent = error ? String(error.message || error) : '';
-  el.hidden = !error;
-}
-
-/// Runs `work`, showing its error beside `errorId`; the page's state is changed only by `work`.
-async function guarded(errorId, work) {
-  showError(errorId, null);
-  state.busy += 1;
-  $('status').textContent = 'working…';
-  try {
-    await work();
-  } catch (e) {
-    showError(errorId, e);
-  } finally {
-    state.busy -= 1;
-    if (!state.busy) $('status').textContent = '';
-    render();
-  }
-}
+const guarded = makeGuarded('status', () => render());
 
 function layout() {
   return {
@@ -141,13 +98,7 @@ function drawHeatmap(fit) {
   }
 }
 
-function circle(x, y, radius, stroke, fill) {
-  const [cx, cy] = view.canvasFromImage(x, y);
-  ctx.beginPath();
-  ctx.arc(cx, cy, radius, 0, 2 * Math.PI);
-  if (fill) { ctx.fillStyle = fill; ctx.fill(); }
-  if (stroke) { ctx.strokeStyle = stroke; ctx.lineWidth = 1.5; ctx.stroke(); }
-}
+const circle = (x, y, radius, stroke, fill) => circleOn(ctx, view, x, y, radius, stroke, fill);
 
 function render() {
   ctx.clearRect(0, 0, canvas.width, canvas.height);
@@ -228,16 +179,6 @@ async function runFit() {
   if (fit.state === 'failed') throw new ApiError(fit.error);
   state.fit = { result: fit, points };
   showFit(fit);
-}
-
-function download(blob, name) {
-  const a = document.createElement('a');
-  a.href = URL.createObjectURL(blob);
-  a.download = name;
-  document.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
 }
 
 async function exportCsv() {
@@ -328,25 +269,15 @@ canvas.addEventListener('pointerup', (event) => {
   render();
 });
 
-canvas.addEventListener('wheel', (event) => {
-  event.preventDefault();
-  const [cx, cy] = view.canvasFromClient(event.clientX, event.clientY);
-  view.zoomAt(cx, cy, Math.exp(-event.deltaY * 0.0015));
-  render();
-}, { passive: false });
+zoomOnWheel(view, render);
 
 document.addEventListener('keydown', (event) => {
-  const typing = event.target instanceof HTMLSelectElement ||
-    (event.target instanceof HTMLInputElement && !['file', 'checkbox', 'button'].includes(event.target.type));
-  if (typing) return;
+  if (isTyping(event)) return;
   const key = event.key.toLowerCase();
-  const ctrl = event.ctrlKey || event.metaKey;
-  if (ctrl && key === 'z' && !event.shiftKey) history.undo();
-  else if (ctrl && (key === 'y' || (key === 'z' && event.shiftKey))) history.redo();
+  const step = historyKey(event);
+  if (step) history[step]();
   else if ((key === 'delete' || key === 'backspace') && state.selected >= 0) deleteSelected();
-  else if (key === '+' || key === '=') view.zoomAt(canvas.width / 2, canvas.height / 2, 1.25);
-  else if (key === '-') view.zoomAt(canvas.width / 2, canvas.height / 2, 0.8);
-  else if (key === '0' && state.frame) view.fit(state.frame.width, state.frame.height);
+  else if (zoomKey(view, key)) { /* zoomed */ }
   else if (key === 'a') acceptAll();
   else if (key === 'h') { state.heatmap = !state.heatmap; $('heatmap').checked = state.heatmap; }
   else return;

@@ -9,7 +9,7 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/text_format.hpp"
-#include "ballsight/eval/court_calibration.hpp"
+#include "ballsight/pipeline/court_calibration.hpp"
 #include "ballsight/world/site.hpp"
 #include "commands.hpp"
 

@@ -14,6 +14,7 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/simulated_service.hpp"
+#include "ballsight/net/court_calibration_api.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "ballsight/net/omni_calibration_api.hpp"
 #include "ballsight/net/site_service.hpp"
@@ -100,11 +101,22 @@ void run_serve(const ServeArgs& args) {
     };
   }
   OmniCalibrationApi omni(omni_options);
+  CourtCalibrationApiOptions court_options;
+  court_options.site = service.site();
+  for (const FieldCamera& camera : service.cameras())
+    court_options.intrinsics.push_back(camera.camera.params());
+  court_options.latest_frame = [&service](std::size_t camera) -> std::optional<cv::Mat> {
+    if (std::optional<CameraView> view = service.camera_view(camera)) return view->frame;
+    return std::nullopt;
+  };
+  court_options.write_files = !args.sim;  // the simulated court's calibration is the simulator's
+  CourtCalibrationApi court_calibration(std::move(court_options));
   NavigationHub hub;
   const auto started = std::chrono::steady_clock::now();
   std::atomic<HttpServer*> server{nullptr};  // health is asked on the server's thread
   ApiContext context = service.api_context(hub);
   context.omni = &omni;
+  context.court_calibration = &court_calibration;
   context.health = [&] {
     nlohmann::json h = service.health();
     h["uptime_s"] =

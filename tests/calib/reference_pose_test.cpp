@@ -128,5 +128,47 @@ TEST(ReferencePose, FewerThanFourFoundNamesTheMissingOnes) {
   EXPECT_THROW(estimate_reference_pose(camera.camera, references, {}, hint), InputError);
 }
 
+// The court calibration page's corrections: with only three references seen as blobs the pose
+// cannot be found; a fourth placed by hand where the user saw it makes it, and the placed one is
+// kept as a match with its pixel. A reference marked absent is matched to nothing, even when a
+// blob lies where it projects.
+TEST(ReferencePose, PlacedAndAbsentReferencesAreTheUsersWord) {
+  const std::vector<ReferencePoint> references = court_references();
+  const sim::CourtCamera camera = sim::make_court_rig({}, {}, 5).cameras[1];
+  Candidates seen = observe(camera, references, 19.5, 0.1, 0, 6);
+  ASSERT_GE(seen.pixels.size(), 5u);
+  const Vec3 hint(18.25, -9.25, 5.0);
+  std::vector<Vec2> three(seen.pixels.begin(), seen.pixels.begin() + 3);
+  EXPECT_THROW(estimate_reference_pose(camera.camera, references, three, hint), InputError);
+
+  ReferenceCorrections corrections;
+  const auto fourth = static_cast<std::size_t>(seen.truth[3]);
+  corrections.placed.push_back({fourth, seen.pixels[3]});
+  const ReferencePose pose =
+      estimate_reference_pose(camera.camera, references, three, hint, {}, corrections);
+  EXPECT_LT((pose.camera_from_field.inverse().translation - camera.center_in_field()).norm(), 0.2);
+  ASSERT_EQ(pose.matches.size(), 4u);
+  ASSERT_EQ(pose.matched_px.size(), 4u);
+  const auto placed = std::find_if(pose.matches.begin(), pose.matches.end(),
+                                   [&](const ReferenceMatch& m) { return m.reference == fourth; });
+  ASSERT_NE(placed, pose.matches.end());
+  EXPECT_EQ(pose.matched_px[static_cast<std::size_t>(placed - pose.matches.begin())],
+            seen.pixels[3]);
+
+  // Every reference seen, and the first marked absent: it is not matched, the rest are.
+  ReferenceCorrections absent;
+  absent.absent.push_back(static_cast<std::size_t>(seen.truth[0]));
+  const ReferencePose without =
+      estimate_reference_pose(camera.camera, references, seen.pixels, hint, {}, absent);
+  EXPECT_EQ(without.matches.size(), seen.pixels.size() - 1);
+  for (const ReferenceMatch& m : without.matches) EXPECT_NE(m.reference, absent.absent[0]);
+
+  ReferenceCorrections twice;
+  twice.placed.push_back({0, Vec2(1, 1)});
+  twice.absent.push_back(0);
+  EXPECT_THROW(estimate_reference_pose(camera.camera, references, seen.pixels, hint, {}, twice),
+               InputError);
+}
+
 }  // namespace
 }  // namespace ballsight

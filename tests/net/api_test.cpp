@@ -4,6 +4,7 @@
 
 #include <variant>
 
+#include "ballsight/net/court_calibration_api.hpp"
 #include "ballsight/net/omni_calibration_api.hpp"
 #include "sample_update.hpp"
 
@@ -13,10 +14,29 @@ namespace {
 using nlohmann::json;
 
 struct Fixture {
-  Fixture() { context.omni = &omni; }
+  Fixture() {
+    context.omni = &omni;
+    context.court_calibration = &court_calibration;
+    context.planner = [this] { return planner; };
+    context.set_planner = [this](PlannerKind kind) { planner = kind; };
+    context.camera_view = [](std::size_t camera) -> std::optional<CameraView> {
+      if (camera != 1) return std::nullopt;  // only "se" has delivered a frame
+      CameraView view;
+      view.frame = cv::Mat(720, 1280, CV_8UC3, cv::Scalar(40, 120, 60));
+      PixelDetection ball;
+      ball.center_px = Vec2(640.5, 200.25);
+      ball.radius_px = 3.5;
+      view.detections.push_back(ball);
+      view.seq = 7;
+      view.capture_ns = 123;
+      return view;
+    };
+  }
 
   NavigationHub hub;
   OmniCalibrationApi omni;
+  CourtCalibrationApi court_calibration{CourtCalibrationApiOptions{}};
+  PlannerKind planner = PlannerKind::ballsight;
   ApiContext context{hub, {"ne", "se", "sw", "nw"}, SiteCourt{}, 0.0335};
 
   ApiResponse call(const std::string& method, const std::string& target,
@@ -179,6 +199,42 @@ TEST(Api, BadRequestsGetAnErrorNamingWhere) {
   expect_error(f.call("GET", "/api/v1/route"), 503, "service");
 }
 
+TEST(Api, ThePlannerIsChosenWithTheToken) {
+  Fixture f;
+  EXPECT_EQ(json::parse(f.call("GET", "/api/v1/planner").body)["planner"], "ballsight");
+  expect_error(f.call("PUT", "/api/v1/planner", R"({"planner": "nearest"})", false), 401,
+               "headers");
+  EXPECT_EQ(f.planner, PlannerKind::ballsight);
+  expect_error(f.call("PUT", "/api/v1/planner", R"({"planner": "exact"})"), 422, "body.planner");
+  expect_error(f.call("PUT", "/api/v1/planner", R"({"planner": 3})"), 400, "body.planner");
+  expect_error(f.call("PUT", "/api/v1/planner", R"({"planer": "nearest"})"), 400, "body");
+  EXPECT_EQ(f.planner, PlannerKind::ballsight);
+  const json chosen =
+      json::parse(f.call("PUT", "/api/v1/planner", R"({"planner": "nearest"})").body);
+  EXPECT_EQ(chosen["planner"], "nearest");
+  EXPECT_EQ(f.planner, PlannerKind::nearest);
+  f.context.planner = nullptr;
+  expect_error(f.call("GET", "/api/v1/planner"), 404, "planner");
+}
+
+TEST(Api, ACamerasLastFrameAndItsDetections) {
+  Fixture f;
+  const ApiResponse r = f.call("GET", "/api/v1/cameras/se/view");
+  ASSERT_EQ(r.status, 200) << r.body;
+  const json view = json::parse(r.body);
+  EXPECT_EQ(view["seq"], 7);
+  EXPECT_EQ(view["width"], 1280);
+  EXPECT_EQ(view["detections"][0]["x_px"], 640.5);
+  EXPECT_EQ(view["detections"][0]["object"], "ball");
+  const std::string prefix = "data:image/jpeg;base64,";
+  ASSERT_EQ(view["image"].get<std::string>().rfind(prefix, 0), 0u);
+  EXPECT_EQ(view["image"].get<std::string>().substr(prefix.size(), 4), "/9j/");  // FF D8 FF
+  expect_error(f.call("GET", "/api/v1/cameras/ne/view"), 404, "camera ne");
+  expect_error(f.call("GET", "/api/v1/cameras/centre/view"), 404, "camera centre");
+  expect_error(f.call("GET", "/api/v1/cameras/se/frame"), 404, "/api/v1/cameras/se/frame");
+  expect_error(f.call("PUT", "/api/v1/cameras/se/view"), 405, "/api/v1/cameras/se/view");
+}
+
 TEST(Api, TheOpenApiDocumentListsExactlyTheRoutesThatAnswer) {
   Fixture f;
   f.hub.publish(update_with_robot(1.0));
@@ -203,7 +259,7 @@ TEST(Api, TheOpenApiDocumentListsExactlyTheRoutesThatAnswer) {
       EXPECT_EQ(f.call(method, path).status, 405) << method << " " << path;
     }
   }
-  EXPECT_EQ(operations, 24);
+  EXPECT_EQ(operations, 33);
 }
 
 }  // namespace

@@ -73,6 +73,44 @@ test("the dashboard in Chromium", { timeout: 240_000 }, async (t) => {
     if (path) await page.screenshot({ path, fullPage: true });
   });
 
+  await t.test("each camera's last frame with the detections the API gave for it", async () => {
+    const name = "camera 1";
+    const answer = await page.waitForResponse((r) => r.url().endsWith(`/api/v1/cameras/${encodeURIComponent(name)}/view`));
+    const view = await answer.json();
+    await until(async () => (await shown()).cameras[name]?.seq === view.seq, "the page to draw that answer");
+    const drawn = (await shown()).cameras[name];
+    assert.deepEqual(drawn.detections, view.detections);
+    assert.equal(drawn.width, 1280);
+    assert.ok(view.detections.some((d) => d.object === "ball"), "the camera sees balls");
+    assert.match(view.image, /^data:image\/jpeg;base64,/);
+    // The ring of the first ball is drawn in the detections' yellow on the camera's canvas.
+    const ring = await page.evaluate(({ name, d }) => {
+      const canvas = document.querySelector(`#camera-views canvas[data-camera="${name}"]`);
+      const s = canvas.width / 1280;
+      const r = Math.max(4, d.radius_px * s);
+      const x = Math.round((d.x_px + 0.5) * s + r), y = Math.round((d.y_px + 0.5) * s);
+      const around = [];
+      for (let dx = -1; dx <= 1; ++dx) around.push(Array.from(canvas.getContext("2d").getImageData(x + dx, y, 1, 1).data));
+      return around;
+    }, { name, d: view.detections.find((d) => d.object === "ball") });
+    assert.ok(ring.some(([r, g, b]) => r > 150 && g > 150 && b < 120), `ring pixels ${JSON.stringify(ring)}`);
+    await until(async () => Object.keys((await shown()).cameras).length === 4, "all four cameras");
+  });
+
+  await t.test("the planner is chosen from the page (with the token); a bad token changes nothing", async () => {
+    await page.selectOption("#planner", "nearest");
+    await page.fill("#token", "wrong");
+    await page.click("#use-planner");
+    await until(async () => page.isVisible("#planner-error"), "the planner's error");
+    assert.match(await page.textContent("#planner-error"), /^headers: writes need/);
+    assert.equal((await (await fetch(`${origin}/api/v1/planner`)).json()).planner, "ballsight");
+    await page.fill("#token", service.token);
+    await page.click("#use-planner");
+    await until(async () => (await shown()).route?.planner === "nearest", "a route of the nearest planner");
+    assert.equal(await page.isVisible("#planner-error"), false);
+    assert.equal((await (await fetch(`${origin}/api/v1/planner`)).json()).planner, "nearest");
+  });
+
   await t.test("fits a tablet (768 x 1024) without scrolling sideways", async () => {
     const tablet = await browser.newPage({ viewport: { width: 768, height: 1024 } });
     await tablet.goto(`${origin}/`);

@@ -1,7 +1,7 @@
 // Shared by the web tests: a `ballsight serve --sim` on 127.0.0.1 and a free port, stopped when
 // the test ends, and bounded waits.
 import { spawn } from "node:child_process";
-import { mkdtempSync, rmSync } from "node:fs";
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { createInterface } from "node:readline";
@@ -51,7 +51,7 @@ export async function stop(child) {
 
 /**
  * Starts `bin serve --sim --listen 127.0.0.1:0 --duration SECONDS` (plus `extra` arguments) for
- * the test `t`, which stops it at its end. Returns {child, port, stderr()}.
+ * the test `t`, which stops it at its end. Returns {child, port, token, stderr()}.
  */
 export async function startSimulatedService(t, bin, { seconds = 60, extra = [] } = {}) {
   const dir = mkdtempSync(join(tmpdir(), "ballsight-web-"));
@@ -65,5 +65,6 @@ export async function startSimulatedService(t, bin, { seconds = 60, extra = [] }
     rmSync(dir, { recursive: true, force: true });
   });
   const port = await listeningPort(child, () => stderr);
-  return { child, port, stderr: () => stderr };
+  const token = readFileSync(join(dir, "token"), "utf8").split("\n")[0];
+  return { child, port, token, stderr: () => stderr };
 }

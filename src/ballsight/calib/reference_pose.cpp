@@ -21,6 +21,21 @@ void ReferencePoseOptions::validate() const {
   require(min_references >= 4, "min_references", "must be at least 4");
 }
 
+void ReferenceCorrections::validate(std::size_t references) const {
+  std::vector<bool> named(references, false);
+  const auto name = [&](std::size_t r, const char* where) {
+    require(r < references, where,
+            "reference " + std::to_string(r) + " of " + std::to_string(references));
+    require(!named[r], where, "reference " + std::to_string(r) + " is named twice");
+    named[r] = true;
+  };
+  for (const auto& [r, pixel] : placed) {
+    name(r, "placed");
+    require(pixel.allFinite(), "placed", "pixel of reference " + std::to_string(r));
+  }
+  for (std::size_t r : absent) name(r, "absent");
+}
+
 namespace {
 
 struct Hypothesis {
@@ -31,32 +46,70 @@ struct Hypothesis {
   double hint_distance_m = 0.0;
 };
 
-// Matches references to candidates under a pose: each reference to its nearest candidate within
-// the gate, each candidate to one reference at most (closest pairs first).
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+// The candidates with the placed references appended (candidate index `blobs + k` is the k-th
+// placed pixel), and per reference its placed candidate, or kNone, or kAbsent.
+struct CandidateSet {
+  static constexpr std::size_t kAbsent = kNone - 1;
+
+  CandidateSet(const std::vector<Vec2>& blobs, std::size_t references,
+               const ReferenceCorrections& corrections)
+      : pixels(blobs), blob_count(blobs.size()), fixed(references, kNone) {
+    for (const auto& [r, pixel] : corrections.placed) {
+      fixed[r] = pixels.size();
+      pixels.push_back(pixel);
+    }
+    for (std::size_t r : corrections.absent) fixed[r] = kAbsent;
+  }
+
+  bool placed(std::size_t reference) const { return fixed[reference] < pixels.size(); }
+  bool free(std::size_t reference) const { return fixed[reference] == kNone; }
+  /// The reference a candidate was placed for, or kNone for a blob.
+  std::size_t placed_reference(std::size_t candidate) const {
+    if (candidate < blob_count) return kNone;
+    return static_cast<std::size_t>(std::find(fixed.begin(), fixed.end(), candidate) -
+                                    fixed.begin());
+  }
+
+  std::vector<Vec2> pixels;
+  std::size_t blob_count;
+  std::vector<std::size_t> fixed;
+};
+
+// Matches references to candidates under a pose: a placed reference to its pixel, any other (not
+// absent) to its nearest blob within the gate, each blob to one reference at most (closest pairs
+// first).
 class Matcher {
  public:
   Matcher(const PinholeCamera& camera, const std::vector<ReferencePoint>& references,
-          const std::vector<Vec2>& candidates, double gate_px)
+          const CandidateSet& candidates, double gate_px)
       : camera_(camera), references_(references), candidates_(candidates), gate_px_(gate_px) {}
 
   std::vector<ReferenceMatch> match(const Rigid3& camera_from_field) const {
-    std::vector<ReferenceMatch> proposals;
+    const std::vector<Vec2>& pixels = candidates_.pixels;
+    std::vector<ReferenceMatch> proposals, matches;
     for (std::size_t r = 0; r < references_.size(); ++r) {
       const std::optional<Vec2> pixel = project(camera_from_field, r);
       if (!pixel) continue;
-      ReferenceMatch best{r, candidates_.size(), gate_px_};
-      for (std::size_t c = 0; c < candidates_.size(); ++c) {
-        const double d = (candidates_[c] - *pixel).norm();
+      if (candidates_.placed(r)) {
+        const std::size_t c = candidates_.fixed[r];
+        matches.push_back({r, c, (pixels[c] - *pixel).norm()});
+        continue;
+      }
+      if (!candidates_.free(r)) continue;
+      ReferenceMatch best{r, kNone, gate_px_};
+      for (std::size_t c = 0; c < candidates_.blob_count; ++c) {
+        const double d = (pixels[c] - *pixel).norm();
         if (d <= best.residual_px) best = {r, c, d};
       }
-      if (best.candidate < candidates_.size()) proposals.push_back(best);
+      if (best.candidate != kNone) proposals.push_back(best);
     }
     std::sort(proposals.begin(), proposals.end(),
               [](const ReferenceMatch& a, const ReferenceMatch& b) {
                 return a.residual_px < b.residual_px;
               });
-    std::vector<bool> taken(candidates_.size(), false);
-    std::vector<ReferenceMatch> matches;
+    std::vector<bool> taken(pixels.size(), false);
     for (const ReferenceMatch& m : proposals) {
       if (taken[m.candidate]) continue;
       taken[m.candidate] = true;
@@ -75,7 +128,7 @@ class Matcher {
  private:
   const PinholeCamera& camera_;
   const std::vector<ReferencePoint>& references_;
-  const std::vector<Vec2>& candidates_;
+  const CandidateSet& candidates_;
   double gate_px_;
 };
 
@@ -102,18 +155,23 @@ bool better(const Hypothesis& a, const Hypothesis& b) {
 class HypothesisSearch {
  public:
   HypothesisSearch(const PinholeCamera& camera, const std::vector<ReferencePoint>& references,
-                   const std::vector<Vec2>& candidates, const std::optional<Vec3>& hint,
+                   const CandidateSet& candidates, const std::optional<Vec3>& hint,
                    const ReferencePoseOptions& options)
       : references_(references),
+        candidates_(candidates),
         hint_(hint),
         options_(options),
         matcher_(camera, references, candidates, options.match_px) {
-    for (std::size_t c = 0;
-         c < candidates.size() &&
-         normalised_.size() < static_cast<std::size_t>(options.hypothesis_candidates);
-         ++c) {
-      if (const std::optional<Vec3> ray = camera.unproject(candidates[c])) {
+    // The placed pixels first (the user's word), then the blobs, most reliable first.
+    std::vector<std::size_t> order;
+    for (std::size_t c = candidates.blob_count; c < candidates.pixels.size(); ++c)
+      order.push_back(c);
+    for (std::size_t c = 0; c < candidates.blob_count; ++c) order.push_back(c);
+    for (std::size_t c : order) {
+      if (normalised_.size() >= static_cast<std::size_t>(options.hypothesis_candidates)) break;
+      if (const std::optional<Vec3> ray = camera.unproject(candidates.pixels[c])) {
         normalised_.push_back(ray->head<2>() / ray->z());
+        normalised_reference_.push_back(candidates.placed_reference(c));
       }
     }
     // References on one horizontal plane: a camera above it sees every triangle of them with
@@ -137,6 +195,7 @@ class HypothesisSearch {
             for (std::size_t b = 0; b < m; ++b) {
               for (std::size_t c = 0; c < m; ++c) {
                 if (a == b || a == c || b == c) continue;
+                if (!assignable(i, a) || !assignable(j, b) || !assignable(k, c)) continue;
                 if (!plausible(a, b, c, image_turn)) continue;
                 solve({normalised_[i], normalised_[j], normalised_[k]}, {a, b, c}, kept);
               }
@@ -149,6 +208,13 @@ class HypothesisSearch {
   }
 
  private:
+  // Whether the `n`-th normalised candidate may be reference `r`: a placed pixel only its own,
+  // a blob only a reference neither placed nor absent.
+  bool assignable(std::size_t n, std::size_t r) const {
+    const std::size_t placed_for = normalised_reference_[n];
+    return placed_for == kNone ? candidates_.free(r) : placed_for == r;
+  }
+
   bool plausible(std::size_t a, std::size_t b, std::size_t c, double image_turn) const {
     if (!coplanar_) return true;
     const Vec2 pa = references_[a].p_in_field.head<2>();
@@ -188,10 +254,12 @@ class HypothesisSearch {
   }
 
   const std::vector<ReferencePoint>& references_;
+  const CandidateSet& candidates_;
   std::optional<Vec3> hint_;
   ReferencePoseOptions options_;
   Matcher matcher_;
-  std::vector<Vec2> normalised_;  // undistorted candidates, z = 1
+  std::vector<Vec2> normalised_;                   // undistorted candidates, z = 1
+  std::vector<std::size_t> normalised_reference_;  // the reference each was placed for, or kNone
   double plane_z_ = 0.0;
   bool coplanar_ = true;
 };
@@ -242,12 +310,15 @@ ReferencePose estimate_reference_pose(const PinholeCamera& camera,
                                       const std::vector<ReferencePoint>& references,
                                       const std::vector<Vec2>& candidates_px,
                                       const std::optional<Vec3>& position_hint_in_field,
-                                      const ReferencePoseOptions& options) {
+                                      const ReferencePoseOptions& options,
+                                      const ReferenceCorrections& corrections) {
   options.validate();
+  corrections.validate(references.size());
   require(references.size() >= static_cast<std::size_t>(options.min_references), "reference balls",
           "need at least " + std::to_string(options.min_references) + ", got " +
               std::to_string(references.size()));
-  const HypothesisSearch search(camera, references, candidates_px, position_hint_in_field, options);
+  const CandidateSet candidates(candidates_px, references.size(), corrections);
+  const HypothesisSearch search(camera, references, candidates, position_hint_in_field, options);
   const std::vector<Hypothesis> hypotheses = search.run();
   if (hypotheses.empty()) too_few(references, {}, options, position_hint_in_field.has_value());
   const Hypothesis& best = *std::min_element(hypotheses.begin(), hypotheses.end(), better);
@@ -269,7 +340,8 @@ ReferencePose estimate_reference_pose(const PinholeCamera& camera,
 
   // Refine: RANSAC over the matches (more than four), Levenberg-Marquardt on the inliers, then
   // match again under the better pose until the matches settle.
-  const Matcher matcher(camera, references, candidates_px, options.match_px);
+  const Matcher matcher(camera, references, candidates, options.match_px);
+  const std::vector<Vec2>& pixels = candidates.pixels;
   const cv::Mat k(camera.camera_matrix());
   const cv::Mat distortion = camera.distortion_coefficients();
   Rigid3 pose = best.camera_from_field;
@@ -280,7 +352,7 @@ ReferencePose estimate_reference_pose(const PinholeCamera& camera,
     for (const ReferenceMatch& m : matches) {
       const Vec3& p = references[m.reference].p_in_field;
       object.emplace_back(p.x(), p.y(), p.z());
-      image.emplace_back(candidates_px[m.candidate].x(), candidates_px[m.candidate].y());
+      image.emplace_back(pixels[m.candidate].x(), pixels[m.candidate].y());
     }
     cv::Mat rvec = cv_vec(pose.rvec()), tvec = cv_vec(pose.translation);
     if (matches.size() > 4) {
@@ -288,6 +360,12 @@ ReferencePose estimate_reference_pose(const PinholeCamera& camera,
       cv::solvePnPRansac(object, image, k, distortion, rvec, tvec, true, 200,
                          static_cast<float>(options.ransac_px), 0.999, inliers,
                          cv::SOLVEPNP_ITERATIVE);
+      for (std::size_t i = 0; i < matches.size(); ++i) {  // placed by hand: kept
+        if (candidates.placed(matches[i].reference) &&
+            std::find(inliers.begin(), inliers.end(), static_cast<int>(i)) == inliers.end()) {
+          inliers.push_back(static_cast<int>(i));
+        }
+      }
       if (inliers.size() < static_cast<std::size_t>(options.min_references)) {
         too_few(references, {}, options, position_hint_in_field.has_value());
       }
@@ -321,6 +399,7 @@ ReferencePose estimate_reference_pose(const PinholeCamera& camera,
   ReferencePose result;
   result.camera_from_field = pose;
   result.matches = matches;
+  for (const ReferenceMatch& m : matches) result.matched_px.push_back(pixels[m.candidate]);
   for (const ReferenceMatch& m : matches) result.max_px = std::max(result.max_px, m.residual_px);
   result.rms_px = std::sqrt(squared_error(matches) / static_cast<double>(matches.size()));
   result.unmatched = unmatched(references.size(), matches);

@@ -13,6 +13,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ballsight/camera/pinhole.hpp"
@@ -43,9 +44,24 @@ struct ReferenceMatch {
   double residual_px = 0.0;   // under the final pose
 };
 
+/// What a user said about single references (the court calibration page): a reference placed by
+/// hand is at that pixel whatever the candidates say; an absent one is matched to nothing (it is
+/// hidden, or a blob of another thing was taken for it).
+struct ReferenceCorrections {
+  std::vector<std::pair<std::size_t, Vec2>> placed;  // reference index, pixel
+  std::vector<std::size_t> absent;                   // reference indices
+
+  /// Throws InputError when an index is not below `references` or a reference is named twice.
+  void validate(std::size_t references) const;
+  bool empty() const { return placed.empty() && absent.empty(); }
+};
+
 struct ReferencePose {
   Rigid3 camera_from_field;
   std::vector<ReferenceMatch> matches;  // sorted by reference
+  /// The pixel each match was seen at (the candidate's, or where the reference was placed),
+  /// parallel to `matches`.
+  std::vector<Vec2> matched_px;
   double rms_px = 0.0;
   double max_px = 0.0;
   std::vector<std::size_t> unmatched;  // references not matched, in order
@@ -54,11 +70,13 @@ struct ReferencePose {
 /// The camera's pose from `candidates_px` (blob centroids, most reliable first, may include
 /// blobs that are no reference) and the references. Throws InputError naming the references
 /// found and missing when fewer than options.min_references match one pose, or when two poses
-/// far apart fit equally well and no hint decides.
+/// far apart fit equally well and no hint decides. Placed references count as matched candidates
+/// of their own (always kept, whatever RANSAC says of them).
 ReferencePose estimate_reference_pose(const PinholeCamera& camera,
                                       const std::vector<ReferencePoint>& references,
                                       const std::vector<Vec2>& candidates_px,
                                       const std::optional<Vec3>& position_hint_in_field,
-                                      const ReferencePoseOptions& options = {});
+                                      const ReferencePoseOptions& options = {},
+                                      const ReferenceCorrections& corrections = {});
 
 }  // namespace ballsight

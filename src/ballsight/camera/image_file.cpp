@@ -31,10 +31,24 @@ cv::Mat read_image_bgr(const std::filesystem::path& path, std::optional<cv::Size
   return decode_image_bgr(read_file(path), path.string(), expected_size);
 }
 
+namespace {
+
+std::string encoded(const cv::Mat& image, const char* extension, const std::vector<int>& params,
+                    const std::string& where) {
+  std::vector<uchar> bytes;
+  require(!image.empty() && cv::imencode(extension, image, bytes, params), where,
+          std::string("cannot encode ") + (extension + 1));
+  return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+}
+
+}  // namespace
+
 std::string png_bytes(const cv::Mat& image, const std::string& where) {
-  std::vector<uchar> png;
-  require(!image.empty() && cv::imencode(".png", image, png), where, "cannot encode PNG");
-  return std::string(reinterpret_cast<const char*>(png.data()), png.size());
+  return encoded(image, ".png", {}, where);
+}
+
+std::string jpeg_bytes(const cv::Mat& image, int quality, const std::string& where) {
+  return encoded(image, ".jpg", {cv::IMWRITE_JPEG_QUALITY, quality}, where);
 }
 
 void write_png_atomic(const std::filesystem::path& path, const cv::Mat& image) {

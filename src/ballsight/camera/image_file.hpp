@@ -20,6 +20,9 @@ cv::Mat read_image_bgr(const std::filesystem::path& path,
 
 /// `image` encoded as PNG; throws InputError naming `where` when it cannot be.
 std::string png_bytes(const cv::Mat& image, const std::string& where);
+/// `image` encoded as JPEG of `quality` (0-100); throws InputError naming `where` when it cannot
+/// be.
+std::string jpeg_bytes(const cv::Mat& image, int quality, const std::string& where);
 /// Encodes `image` as PNG and writes it atomically (temporary file, then rename).
 void write_png_atomic(const std::filesystem::path& path, const cv::Mat& image);
 

@@ -8,7 +8,7 @@
 #include "ballsight/calib/reference_pose.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/detect/seed_detector.hpp"
-#include "ballsight/eval/court_calibration.hpp"
+#include "ballsight/pipeline/court_calibration.hpp"
 #include "ballsight/sim/chessboard.hpp"
 #include "ballsight/sim/chessboard_poses.hpp"
 #include "ballsight/sim/court_renderer.hpp"

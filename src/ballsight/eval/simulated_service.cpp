@@ -271,6 +271,10 @@ ApiContext SimulatedCourtService::api_context(NavigationHub& hub) {
   return context;
 }
 
+UpdatePublisher& SimulatedCourtService::publisher() const {
+  return *impl_->publisher;
+}
+
 void SimulatedCourtService::republish(NavigationHub& hub) {
   impl_->publisher->republish(hub);
 }

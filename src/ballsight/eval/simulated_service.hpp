@@ -72,6 +72,9 @@ class SimulatedCourtService : public CourtService {
   /// What really happened, one tick per vision period; read it once run() has returned.
   const std::vector<sim::WorldTick>& history() const;
 
+ protected:
+  UpdatePublisher& publisher() const override;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 #include <set>
 
+#include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/angle.hpp"
+#include "ballsight/core/base64.hpp"
 #include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/net/api_request.hpp"
+#include "ballsight/net/court_calibration_api.hpp"
 #include "ballsight/net/omni_calibration_api.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 #include "ballsight/pipeline/world_model_json.hpp"
@@ -285,6 +289,63 @@ ApiResponse openapi_route(const ApiRequest&, const std::string&, const ApiContex
   return ok(openapi_document());
 }
 
+ApiResponse planner_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
+  if (!c.planner || !c.set_planner) api_fail(404, "no planner on this service", "planner");
+  if (request.method == "PUT") {
+    require_write(request);
+    const json body = parse_body(request.body);
+    only_keys(body, {"planner"}, "body");
+    const auto name = body.find("planner");
+    if (name == body.end() || !name->is_string()) {
+      api_fail(400, "expected a planner's name", "body.planner");
+    }
+    const std::optional<PlannerKind> kind = planner_from_name(name->get<std::string>());
+    if (!kind || *kind == PlannerKind::exact) {
+      api_fail(422,
+               "expected priority, nearest or ballsight, got '" + name->get<std::string>() + "'",
+               "body.planner");
+    }
+    c.set_planner(*kind);
+  }
+  return ok(
+      {{"planner", planner_name(c.planner())}, {"choices", {"priority", "nearest", "ballsight"}}});
+}
+
+/// GET /api/v1/cameras/{name}/view: the camera's last frame (a JPEG at most 640 px wide, as a
+/// data: URL) and its detections in the frame's own pixels.
+ApiResponse camera_view_route(const ApiRequest& request, const std::string& path,
+                              const ApiContext& c) {
+  const std::vector<std::string> parts = path_parts(path, "/api/v1/cameras/");
+  if (parts.size() != 2 || parts[1] != "view") api_fail(404, "unknown route", path);
+  if (request.method != "GET") api_fail(405, "method " + request.method + " not allowed", path);
+  const std::string& name = parts[0];
+  const auto camera = std::find(c.camera_names.begin(), c.camera_names.end(), name);
+  if (camera == c.camera_names.end()) api_fail(404, "no such camera", "camera " + name);
+  const std::optional<CameraView> view =
+      c.camera_view ? c.camera_view(static_cast<std::size_t>(camera - c.camera_names.begin()))
+                    : std::nullopt;
+  if (!view) api_fail(404, "no frame from this camera yet", "camera " + name);
+  cv::Mat small = view->frame;
+  if (small.cols > 640) {
+    cv::resize(view->frame, small, cv::Size(640, view->frame.rows * 640 / view->frame.cols), 0, 0,
+               cv::INTER_AREA);
+  }
+  json detections = json::array();
+  for (const PixelDetection& d : view->detections) {
+    detections.push_back({{"object", object_class_name(d.object)},
+                          {"x_px", d.center_px.x()},
+                          {"y_px", d.center_px.y()},
+                          {"radius_px", d.radius_px}});
+  }
+  return ok({{"camera", name},
+             {"seq", view->seq},
+             {"capture_time_ns", view->capture_ns},
+             {"width", view->frame.cols},
+             {"height", view->frame.rows},
+             {"detections", detections},
+             {"image", "data:image/jpeg;base64," + base64(jpeg_bytes(small, 80, "frame"))}});
+}
+
 /// A route of API v1: its path, the methods it takes and what answers it.
 struct ApiRoute {
   const char* path;
@@ -391,12 +452,18 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       {"/api/v1/health", {"GET"}, health_route},
       {"/api/v1/stream", {"GET"}, stream_route},
       {"/api/v1/openapi.json", {"GET"}, openapi_route},
+      {"/api/v1/planner", {"GET", "PUT"}, planner_route},
   };
   if (OmniCalibrationApi::owns(path)) {
     return c.omni ? c.omni->handle(request)
                   : api_error(404, "no omni calibration on this service", path);
   }
+  if (CourtCalibrationApi::owns(path)) {
+    return c.court_calibration ? c.court_calibration->handle(request)
+                               : api_error(404, "no court calibration on this service", path);
+  }
   try {
+    if (path.starts_with("/api/v1/cameras/")) return camera_view_route(request, path, c);
     const auto route = std::find_if(kRoutes.begin(), kRoutes.end(),
                                     [&](const ApiRoute& r) { return path == r.path; });
     if (route == kRoutes.end()) api_fail(404, "unknown route", path);

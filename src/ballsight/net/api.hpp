@@ -14,11 +14,14 @@
 #include <vector>
 
 #include "ballsight/core/field_rect.hpp"
+#include "ballsight/net/camera_view.hpp"
 #include "ballsight/net/navigation_hub.hpp"
+#include "ballsight/plan/planning_problem.hpp"
 #include "ballsight/world/site.hpp"
 
 namespace ballsight {
 
+class CourtCalibrationApi;
 class OmniCalibrationApi;
 
 struct ApiRequest {
@@ -55,9 +58,16 @@ struct ApiContext {
   /// The simulated court only: a simulated robot's command for update `seq` (PUT
   /// /api/v1/sim/drive); answers its collector's count. Empty elsewhere (404).
   std::function<nlohmann::json(std::uint64_t seq, double speed_mps, double turn_rate_rps)> drive;
+  /// Camera k's last frame and detections (GET /api/v1/cameras/{name}/view); empty: none.
+  std::function<std::optional<CameraView>(std::size_t camera)> camera_view;
+  /// The planner of the next plans (GET and PUT /api/v1/planner); empty: not offered (404).
+  std::function<PlannerKind()> planner;
+  std::function<void(PlannerKind)> set_planner;
   std::chrono::milliseconds max_wait{30000};  // cap on a long-poll's timeout_ms
   /// The omni calibration page's API (/api/v1/omni/...); null: none (404).
   OmniCalibrationApi* omni = nullptr;
+  /// The court calibration page's API (/api/v1/court-calibration/...); null: none (404).
+  CourtCalibrationApi* court_calibration = nullptr;
 };
 
 /// `j` as JSON text; bytes that are not UTF-8 (a client's, a camera's message) become U+FFFD

@@ -4,10 +4,7 @@
 #include <charconv>
 
 namespace ballsight {
-namespace {
 
-/// `text` with its %XX escapes and '+' (a browser's URLSearchParams) decoded; a '%' that does
-/// not start an escape stays as it is.
 std::string percent_decoded(const std::string& text) {
   std::string out;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -23,8 +20,6 @@ std::string percent_decoded(const std::string& text) {
   }
   return out;
 }
-
-}  // namespace
 
 ApiResponse error_response(const ApiError& e) {
   return api_error(e.status, e.what, e.where);
@@ -52,6 +47,45 @@ std::optional<std::string> query_text(const std::string& query, const std::strin
     start = end + 1;
   }
   return std::nullopt;
+}
+
+std::vector<std::string> path_parts(const std::string& path, std::string_view prefix) {
+  std::vector<std::string> parts;
+  for (std::size_t start = prefix.size(); start <= path.size();) {
+    const std::size_t end = std::min(path.find('/', start), path.size());
+    parts.push_back(percent_decoded(path.substr(start, end - start)));
+    start = end + 1;
+  }
+  return parts;
+}
+
+ApiResponse dispatch(const ApiRequest& request, const std::vector<std::string>& parts,
+                     const std::vector<SegmentRoute>& routes) {
+  for (const SegmentRoute& r : routes) {
+    if (parts.size() != r.size || parts[0] != r.first || (r.last && parts.back() != r.last))
+      continue;
+    if (request.method != r.method)
+      api_fail(405, "method " + request.method + " not allowed", split_target(request.target).path);
+    return r.answer();
+  }
+  api_fail(404, "unknown route", split_target(request.target).path);
+}
+
+ApiResponse input_error(int status, const InputError& e) {
+  const std::string message = e.what();
+  const std::size_t colon = message.find(": ");
+  if (colon == std::string::npos) return api_error(status, message, "body");
+  return api_error(status, message.substr(colon + 2), message.substr(0, colon));
+}
+
+ApiResponse json_answer(int status, const nlohmann::json& body) {
+  return {status, json_text(body)};
+}
+
+ApiResponse bytes_answer(std::string bytes, const std::string& content_type) {
+  ApiResponse r(200, std::move(bytes));
+  r.content_type = content_type;
+  return r;
 }
 
 RequestTarget split_target(const std::string& target) {

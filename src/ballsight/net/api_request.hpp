@@ -2,10 +2,14 @@
 // Reading a request of the service's APIs (api.hpp, omni_calibration_api.hpp): its path and query,
 // its JSON body, and the client mistakes that become 4xx answers {"error", "where"}.
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "ballsight/core/error.hpp"
 #include "ballsight/net/api.hpp"
 
 namespace ballsight {
@@ -29,6 +33,36 @@ struct RequestTarget {
   std::string query;
 };
 RequestTarget split_target(const std::string& target);
+
+/// The segments of `path` after `prefix` (which it starts with), each percent-decoded:
+/// ("/api/v1/omni/fits/3", "/api/v1/omni/") -> {"fits", "3"}.
+std::vector<std::string> path_parts(const std::string& path, std::string_view prefix);
+
+/// A route of an API under a prefix, by its path segments: `size` segments, the first `first`,
+/// the last `last` (when given; the ones between are ids), taken by `method`.
+struct SegmentRoute {
+  std::size_t size;
+  const char* first;
+  const char* last;
+  const char* method;
+  std::function<ApiResponse()> answer;
+};
+
+/// The answer of the route `parts` match; a 405 when it does not take the request's method, a 404
+/// when none matches (both ApiErrors).
+ApiResponse dispatch(const ApiRequest& request, const std::vector<std::string>& parts,
+                     const std::vector<SegmentRoute>& routes);
+
+/// `text` with its %XX escapes and '+' (a browser's URLSearchParams) decoded; a '%' that does
+/// not start an escape stays as it is.
+std::string percent_decoded(const std::string& text);
+
+/// An InputError's "where: what" as the answer {"error": what, "where": where}.
+ApiResponse input_error(int status, const InputError& e);
+/// `body` as a JSON answer of `status`.
+ApiResponse json_answer(int status, const nlohmann::json& body);
+/// A 200 answer of other bytes (an image, a file to download).
+ApiResponse bytes_answer(std::string bytes, const std::string& content_type);
 
 /// The body as a JSON object; a 400 ApiError when it is malformed or not an object.
 nlohmann::json parse_body(const std::string& body);

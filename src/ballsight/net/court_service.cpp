@@ -27,12 +27,31 @@ std::vector<std::string> CourtService::camera_names() const {
 ApiContext CourtService::api_context(NavigationHub& hub) {
   ApiContext context{hub, camera_names(), site().court, site().ball_radius_m};
   context.on_collected = [this, &hub] { republish(hub); };
+  context.camera_view = [this](std::size_t index) { return camera_view(index); };
+  context.planner = [this] { return publisher().planner().kind; };
+  context.set_planner = [this, &hub](PlannerKind kind) {
+    PlannerOptions options = publisher().planner();
+    options.kind = kind;
+    publisher().set_planner(options);
+    republish(hub);
+  };
   return context;
+}
+
+const std::vector<FieldCamera>& CourtService::cameras() const {
+  return publisher().cameras();
+}
+
+std::optional<CameraView> CourtService::camera_view(std::size_t index) const {
+  return publisher().camera_view(index);
 }
 
 UpdatePublisher::UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
                                  const PlannerOptions& planner)
-    : site_(site), pipeline_(std::move(pipeline)), planner_(planner) {
+    : site_(site),
+      pipeline_(std::move(pipeline)),
+      planner_(planner),
+      views_(pipeline_->cameras().size()) {
   planner_.validate();
 }
 
@@ -49,6 +68,14 @@ std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::
     return 0;
   }
   const double pipeline_ms = ms_since(started);
+  std::vector<CameraView> views(frames.size());
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    views[k].frame = frames[k];
+    views[k].capture_ns = capture_ns;
+    if (k < result.detections.size() && result.detections[k]) {
+      views[k].detections = *result.detections[k];
+    }
+  }
   std::vector<Vec2> seen;
   for (const FusedBall& b : result.world.balls) seen.push_back(b.position_m);
   hub.confirm_collected(seen);
@@ -59,6 +86,11 @@ std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::
   const std::uint64_t seq = plan_and_publish(hub);
   const double plan_ms = ms_since(plan_started);
   const std::lock_guard lock(mutex_);
+  for (std::size_t k = 0; k < views.size() && k < views_.size(); ++k) {
+    if (views[k].frame.empty()) continue;  // a missing frame: the camera's last view stays
+    views[k].seq = seq;
+    views_[k] = std::move(views[k]);
+  }
   ++frame_sets_;
   pipeline_ms_ = pipeline_ms;
   plan_ms_ = plan_ms;
@@ -93,6 +125,23 @@ std::uint64_t UpdatePublisher::plan_and_publish(NavigationHub& hub) {
   const std::lock_guard lock(mutex_);
   last_error_ = error;
   return seq;
+}
+
+void UpdatePublisher::set_planner(const PlannerOptions& planner) {
+  planner.validate();
+  const std::lock_guard plan_lock(plan_mutex_);
+  planner_ = planner;
+  previous_.reset();  // another planner starts afresh, not from the other one's route
+}
+
+PlannerOptions UpdatePublisher::planner() const {
+  const std::lock_guard plan_lock(plan_mutex_);
+  return planner_;
+}
+
+std::optional<CameraView> UpdatePublisher::camera_view(std::size_t index) const {
+  const std::lock_guard lock(mutex_);
+  return index < views_.size() ? views_[index] : std::nullopt;
 }
 
 nlohmann::json UpdatePublisher::health() const {

@@ -22,6 +22,8 @@
 
 namespace ballsight {
 
+class UpdatePublisher;
+
 class CourtService {
  public:
   virtual ~CourtService() = default;
@@ -36,8 +38,17 @@ class CourtService {
 
   std::vector<std::string> camera_names() const;
   /// API v1's view of this service over `hub` (which must outlive it): its cameras and court,
-  /// and balls reported collected re-planned at once. The simulated court adds its robot's drive.
+  /// their last frames, the planner's choice, and balls reported collected re-planned at once.
+  /// The simulated court adds its robot's drive.
   virtual ApiContext api_context(NavigationHub& hub);
+
+  /// Every camera as the pipeline uses it (intrinsics and pose), in site order.
+  const std::vector<FieldCamera>& cameras() const;
+  /// Camera `index`'s last frame through the pipeline; nullopt before its first. Any thread.
+  std::optional<CameraView> camera_view(std::size_t index) const;
+
+ protected:
+  virtual UpdatePublisher& publisher() const = 0;
 };
 
 /// A rate (frames or frame sets per second) smoothed over the last few samples; 0: none yet.
@@ -58,6 +69,14 @@ class UpdatePublisher {
   /// The last world model planned again and published; nothing before the first frame set.
   void republish(NavigationHub& hub);
 
+  /// The planner of the next plans (validated first; throws InputError).
+  void set_planner(const PlannerOptions& planner);
+  PlannerOptions planner() const;
+
+  const std::vector<FieldCamera>& cameras() const { return pipeline_->cameras(); }
+  /// Camera `index`'s last frame and detections; nullopt before its first frame. Any thread.
+  std::optional<CameraView> camera_view(std::size_t index) const;
+
   /// {"frame_sets", "frame_sets_failed", "pipeline_ms", "plan_ms", "frame_sets_per_s",
   /// "last_error"}: the last frame set's times, and the rate over the last few.
   nlohmann::json health() const;
@@ -67,8 +86,8 @@ class UpdatePublisher {
 
   const Site& site_;
   std::unique_ptr<CourtPipeline> pipeline_;
+  mutable std::mutex plan_mutex_;  // guards the planner, the last world, its time, the route
   PlannerOptions planner_;
-  std::mutex plan_mutex_;  // guards the last world, its time and the previous route
   WorldModel last_world_;
   std::int64_t last_capture_ns_ = 0;
   std::optional<Route> previous_;
@@ -77,6 +96,7 @@ class UpdatePublisher {
   double pipeline_ms_ = 0.0, plan_ms_ = 0.0, rate_hz_ = 0.0;
   std::optional<std::chrono::steady_clock::time_point> last_;
   std::string last_error_;
+  std::vector<std::optional<CameraView>> views_;  // per camera
 };
 
 }  // namespace ballsight

@@ -29,24 +29,6 @@ using nlohmann::json;
 constexpr const char* kPrefix = "/api/v1/omni/";
 constexpr std::size_t kMaxRunningFits = 2;
 
-/// An InputError's "where: what" as an answer.
-ApiResponse input_error(int status, const InputError& e) {
-  const std::string message = e.what();
-  const std::size_t colon = message.find(": ");
-  if (colon == std::string::npos) return api_error(status, message, "body");
-  return api_error(status, message.substr(colon + 2), message.substr(0, colon));
-}
-
-ApiResponse json_answer(int status, const json& body) {
-  return {status, json_text(body)};
-}
-
-ApiResponse bytes_answer(std::string bytes, const std::string& content_type) {
-  ApiResponse r(200, std::move(bytes));
-  r.content_type = content_type;
-  return r;
-}
-
 Vec2 pixel_of(const json& object, const std::string& where) {
   return {json_number(object, "x_px", where), json_number(object, "y_px", where)};
 }
@@ -412,54 +394,19 @@ struct OmniCalibrationApi::Impl {
 
   ApiResponse route(const ApiRequest& request, const std::vector<std::string>& parts,
                     const std::string& query) {
-    const auto is = [&](std::size_t size, const char* first, const char* last = nullptr) {
-      return parts.size() == size && parts[0] == first && (!last || parts.back() == last);
-    };
-    const auto allow = [&](const char* method) {
-      if (request.method != method)
-        api_fail(405, "method " + request.method + " not allowed", request.target);
-    };
-    if (is(1, "files")) {
-      allow("GET");
-      return files();
-    }
-    if (is(1, "frames")) {
-      allow("POST");
-      return add_frame(request);
-    }
-    if (is(2, "frames")) {
-      allow("GET");
-      return bytes_answer(frame(parts[1])->png, "image/png");
-    }
-    if (is(3, "frames", "markers")) {
-      allow("POST");
-      return markers(*frame(parts[1]), request);
-    }
-    if (is(1, "places")) {
-      allow("POST");
-      return places(request);
-    }
-    if (is(1, "samples")) {
-      allow("POST");
-      return samples_csv(request);
-    }
-    if (is(1, "points")) {
-      allow("POST");
-      return import_csv(request, query);
-    }
-    if (is(1, "fits")) {
-      allow("POST");
-      return start_fit(request);
-    }
-    if (is(2, "fits")) {
-      allow("GET");
-      return fit_state(*fit(parts[1]));
-    }
-    if (is(3, "fits", "table")) {
-      allow("GET");
-      return table(*fit(parts[1]), query);
-    }
-    api_fail(404, "unknown route", split_target(request.target).path);
+    return dispatch(
+        request, parts,
+        {{1, "files", nullptr, "GET", [&] { return files(); }},
+         {1, "frames", nullptr, "POST", [&] { return add_frame(request); }},
+         {2, "frames", nullptr, "GET",
+          [&] { return bytes_answer(frame(parts[1])->png, "image/png"); }},
+         {3, "frames", "markers", "POST", [&] { return markers(*frame(parts[1]), request); }},
+         {1, "places", nullptr, "POST", [&] { return places(request); }},
+         {1, "samples", nullptr, "POST", [&] { return samples_csv(request); }},
+         {1, "points", nullptr, "POST", [&] { return import_csv(request, query); }},
+         {1, "fits", nullptr, "POST", [&] { return start_fit(request); }},
+         {2, "fits", nullptr, "GET", [&] { return fit_state(*fit(parts[1])); }},
+         {3, "fits", "table", "GET", [&] { return table(*fit(parts[1]), query); }}});
   }
 };
 
@@ -478,12 +425,7 @@ bool OmniCalibrationApi::owns(const std::string& path) {
 
 ApiResponse OmniCalibrationApi::handle(const ApiRequest& request) {
   const auto [path, query] = split_target(request.target);
-  std::vector<std::string> parts;
-  for (std::size_t start = std::string(kPrefix).size(); start <= path.size();) {
-    const std::size_t end = std::min(path.find('/', start), path.size());
-    parts.push_back(path.substr(start, end - start));
-    start = end + 1;
-  }
+  const std::vector<std::string> parts = path_parts(path, kPrefix);
   try {
     return impl_->route(request, parts, query);
   } catch (const ApiError& e) {

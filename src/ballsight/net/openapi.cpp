@@ -97,6 +97,41 @@ const nlohmann::json& openapi_document() {
     "/api/v1/openapi.json": {
       "get": {"summary": "This document", "responses": {"200": {"description": "OpenAPI 3"}}}
     },
+    "/api/v1/planner": {
+      "get": {"summary": "The planner of the next routes and the choices", "responses": {"200": {"description": "{planner, choices}"}, "404": {"description": "no planner on this service"}}},
+      "put": {"summary": "Choose the planner (priority, nearest, ballsight); the last world model is planned again at once", "security": [{"bearer": []}],
+              "requestBody": {"required": true, "content": {"application/json": {"schema": {"type": "object", "required": ["planner"], "properties": {"planner": {"type": "string", "enum": ["priority", "nearest", "ballsight"]}}}}}},
+              "responses": {"200": {"description": "{planner, choices}"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "404": {"description": "no planner on this service"}, "422": {"description": "no such planner"}}}
+    },
+    "/api/v1/cameras/{camera}/view": {
+      "get": {"summary": "A camera's last frame through the pipeline: {camera, seq, capture_time_ns, width, height, detections: [{object, x_px, y_px, radius_px}] in the frame's pixels, image: a JPEG at most 640 px wide as a data: URL}",
+              "responses": {"200": {"description": "view"}, "404": {"description": "no such camera, or no frame from it yet"}}}
+    },
+    "/api/v1/court-calibration/site": {
+      "get": {"summary": "Court calibration: the site's cameras {name, width, height, calibration_file or null}, its reference balls {name, x_m, y_m, z_m} and whether calibration files are written here",
+              "responses": {"200": {"description": "site"}, "404": {"description": "no court calibration on this service"}}}
+    },
+    "/api/v1/court-calibration/stills": {
+      "post": {"summary": "Court calibration: keep a camera's last frame to work on. Body {camera: name}; answers {still: id, camera, width, height}",
+               "responses": {"201": {"description": "still"}, "400": {"description": "bad body"}, "404": {"description": "no such camera"}, "409": {"description": "no frame from it yet"}, "422": {"description": "bad value"}}}
+    },
+    "/api/v1/court-calibration/stills/{still}": {
+      "get": {"summary": "Court calibration: the still as PNG", "responses": {"200": {"description": "image/png"}, "404": {"description": "no such still"}}}
+    },
+    "/api/v1/court-calibration/stills/{still}/pose": {
+      "post": {"summary": "Court calibration: the reference balls found in the still and the camera's pose fitted to them (ballsight court calibrate), with the body's corrections {placed: [{reference, x_px, y_px}], absent: [name]}. Answers {references: [{name, state: found|placed|absent|missing, seen, projected, residual_px}], blobs, matched, rms_px, max_px, camera_position_m}, or with ?format=yaml the camera's calibration file with that pose",
+               "parameters": [{"name": "format", "in": "query", "schema": {"type": "string", "enum": ["json", "yaml"]}}],
+               "responses": {"200": {"description": "pose"}, "400": {"description": "bad body or format"}, "404": {"description": "no such still"}, "422": {"description": "too few reference balls (found and missing named), or no such reference"}}}
+    },
+    "/api/v1/court-calibration/stills/{still}/calibration": {
+      "put": {"summary": "Court calibration: write the pose (as POST .../pose fits it) into the camera's calibration file", "security": [{"bearer": []}],
+              "responses": {"200": {"description": "pose, and written: the file"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "404": {"description": "no such still"}, "409": {"description": "this service has no calibration files"}, "422": {"description": "too few reference balls"}}}
+    },
+    "/api/v1/court-calibration/stills/{still}/colours": {
+      "post": {"summary": "Court calibration: a ball colour model learned from clicked ball pixels (ballsight colours learn). Body {clicks: [{x_px, y_px}]}; answers {colours: the model, balls: [{x_px, y_px, radius_px, score}] it finds in the still}, or with ?format=file the model's file",
+               "parameters": [{"name": "format", "in": "query", "schema": {"type": "string", "enum": ["json", "file"]}}],
+               "responses": {"200": {"description": "model"}, "400": {"description": "bad body"}, "404": {"description": "no such still"}, "422": {"description": "a click outside the image, or on no colour"}}}
+    },
     "/api/v1/omni/files": {
       "get": {"summary": "Omni calibration: the images of the server's folder (serve --omni-frames) and whether a simulated omni robot is there",
               "responses": {"200": {"description": "{\"files\": [names], \"simulated\": bool}"}}}

@@ -28,6 +28,9 @@ class SiteCourtService : public CourtService {
   /// "frames_per_s", "last_frame_age_s" (null before the first), "failures", "last_error".
   nlohmann::json health() const override;
 
+ protected:
+  UpdatePublisher& publisher() const override { return *publisher_; }
+
  private:
   struct CameraFigures {
     double rate_hz = 0.0;

@@ -26,9 +26,10 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kContentT
 }};
 
 /// The pages' own addresses and their files.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 2> kPages{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kPages{{
     {"/", "index.html"},
     {"/omni-calibration", "omni-calibration.html"},
+    {"/court-calibration", "court-calibration.html"},
 }};
 
 std::optional<std::string_view> page_file(const std::string& path) {

@@ -1,4 +1,4 @@
-#include "ballsight/eval/court_calibration.hpp"
+#include "ballsight/pipeline/court_calibration.hpp"
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
@@ -16,7 +16,8 @@ std::vector<ReferencePoint> site_references(const Site& site) {
 CameraPoseReport calibrate_site_camera(const Site& site, const SiteCamera& camera,
                                        const cv::Mat& image, const std::string& source,
                                        const CameraCalibration& calibration,
-                                       const CourtCalibrationOptions& options) {
+                                       const CourtCalibrationOptions& options,
+                                       const ReferenceCorrections& corrections) {
   const std::string where = "camera '" + camera.name + "' (" + source + ")";
   const PinholeParams& intrinsics = calibration.intrinsics;
   require(image.cols == intrinsics.width && image.rows == intrinsics.height, where,
@@ -34,10 +35,11 @@ CameraPoseReport calibrate_site_camera(const Site& site, const SiteCamera& camer
   report.source = source;
   report.calibration_file = camera.calibration_file;
   report.blob_count = static_cast<int>(blobs.size());
+  report.candidates_px = candidates;
   report.references = site_references(site);
   try {
     report.pose = estimate_reference_pose(PinholeCamera(intrinsics), report.references, candidates,
-                                          camera.position_hint_m, options.pose);
+                                          camera.position_hint_m, options.pose, corrections);
   } catch (const InputError& e) {
     throw InputError(where + ": " + e.what() + " [" + std::to_string(blobs.size()) +
                      " blobs of the reference-ball colour]");

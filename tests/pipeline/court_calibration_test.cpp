@@ -1,4 +1,4 @@
-#include "ballsight/eval/court_calibration.hpp"
+#include "ballsight/pipeline/court_calibration.hpp"
 
 #include <gtest/gtest.h>
 
