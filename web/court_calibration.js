@@ -24,7 +24,9 @@ const state = {
   colourMode: false,
   clicks: [],        // [x, y] on ball pixels
   colours: null,     // {colours, balls}
+  saveInfo: '',      // what the last save wrote
 };
+let poseRequest = 0;  // the latest pose request's number: older answers are dropped
 const GRAB_PX = 10;  // canvas pixels
 const guarded = makeGuarded('status', () => render());
 const circle = (x, y, radius, stroke, fill, width) => circleOn(ctx, view, x, y, radius, stroke, fill, width);
@@ -38,14 +40,21 @@ function corrections() {
 
 async function fitPose() {
   const forList = history.points;
+  const mine = ++poseRequest;
   state.pose = null;
   state.posedFor = null;
   if (!state.still) return;
+  let pose = null;
   try {
-    state.pose = await api('POST', `${API}/stills/${state.still.still}/pose`, corrections());
-  } finally {
-    state.posedFor = forList;  // also when it failed: the error belongs to these corrections
+    pose = await api('POST', `${API}/stills/${state.still.still}/pose`, corrections());
+  } catch (e) {
+    if (mine !== poseRequest) return;  // a newer request answers for the page
+    state.posedFor = forList;          // the error belongs to these corrections
+    throw e;
   }
+  if (mine !== poseRequest) return;
+  state.pose = pose;
+  state.posedFor = forList;
 }
 
 /// Sets the corrections (undoable) and fits the pose again.
@@ -64,11 +73,14 @@ function toggleAbsent(reference) {
   return correct(was ? others : [...others, { reference, absent: true }]);
 }
 
-async function takeStill() {
-  const still = await api('POST', `${API}/stills`, { camera: state.camera });
+async function takeStill(camera) {
+  const still = await api('POST', `${API}/stills`, { camera });
   const blob = await api('GET', `${API}/stills/${still.still}`, undefined, { as: 'blob' });
   state.bitmap = await createImageBitmap(blob);
   state.still = still;
+  state.camera = still.camera;
+  state.selected = null;
+  state.saveInfo = '';
   state.colours = null;
   state.clicks = [];
   history.past = [];
@@ -137,7 +149,7 @@ function render() {
   $('save').hidden = !(state.site && state.site.writes_files);
   $('token').hidden = $('save').hidden;
   $('save-info').textContent = state.site && !state.site.writes_files
-    ? 'This service has no calibration files (the simulated court): download the file.' : '';
+    ? 'This service has no calibration files (the simulated court): download the file.' : state.saveInfo;
   $('colour-count').textContent = `${state.clicks.length} click${state.clicks.length === 1 ? '' : 's'}`;
   $('colour-mode').checked = state.colourMode;
   canvas.style.cursor = state.colourMode || state.selected ? 'crosshair' : 'grab';
@@ -149,7 +161,7 @@ function renderCameras() {
   }
 }
 
-const escapeHtml = (text) => text.replace(/&/g, '&amp;').replace(/</g, '&lt;');
+const escapeHtml = (text) => text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/"/g, '&quot;');
 
 function renderTable(pose) {
   if (!state.site) return;
@@ -219,7 +231,10 @@ canvas.addEventListener('pointerup', (event) => {
   if (moved) return;
   const [cx, cy] = view.canvasFromClient(event.clientX, event.clientY);
   const [x, y] = view.imageFromCanvas(cx, cy);
-  if (state.colourMode) {
+  const inImage = x >= -0.5 && y >= -0.5 && x < state.still.width - 0.5 && y < state.still.height - 0.5;
+  if (!inImage) {
+    // Outside the image: nothing to place or learn there.
+  } else if (state.colourMode) {
     state.clicks.push([x, y]);
   } else if (state.selected) {
     const reference = state.selected;
@@ -238,6 +253,7 @@ document.addEventListener('keydown', (event) => {
   if (isTyping(event)) return;
   const key = event.key.toLowerCase();
   const step = historyKey(event);
+  if (!step && (event.ctrlKey || event.metaKey || event.altKey)) return;  // the browser's
   if (step) { if (history[step]()) guarded('pose-error', fitPose); }
   else if ((key === 'delete' || key === 'backspace') && state.selected) {
     correct(history.points.filter((c) => c.reference !== state.selected));
@@ -258,19 +274,19 @@ async function poseFile() {
   return api('POST', `${API}/stills/${state.still.still}/pose?format=yaml`, corrections(), { as: 'blob' });
 }
 
-$('take-still').addEventListener('click', () => guarded('still-error', takeStill));
+$('take-still').addEventListener('click', () => guarded('still-error', () => takeStill(state.camera)));
 $('cameras').addEventListener('click', (event) => {
   const button = event.target.closest('button[data-camera]');
-  if (!button) return;
-  state.camera = button.dataset.camera;
-  state.selected = null;
-  guarded('still-error', takeStill);
+  if (button) guarded('still-error', () => takeStill(button.dataset.camera));
 });
 $('references').addEventListener('click', (event) => {
   const row = event.target.closest('tr[data-name]');
   if (!row) return;
-  const name = state.site.references.find((r) => escapeHtml(r.name) === row.dataset.name).name;
-  if (event.target.closest('button[data-action="absent"]')) toggleAbsent(name);
+  const name = row.dataset.name;
+  if (event.target.closest('button[data-action="absent"]')) {
+    toggleAbsent(name);
+    return;
+  }
   state.selected = state.selected === name ? null : name;
   render();
 });
@@ -278,13 +294,14 @@ $('undo').addEventListener('click', () => { if (history.undo()) guarded('pose-er
 $('redo').addEventListener('click', () => { if (history.redo()) guarded('pose-error', fitPose); });
 $('reset').addEventListener('click', () => correct([]));
 $('download').addEventListener('click', () => guarded('save-error', async () => {
-  download(await poseFile(), `${state.camera.replace(/[^\w.-]+/g, '_')}.yml`);
+  download(await poseFile(), `${state.still.camera.replace(/[^\w.-]+/g, '_')}.yml`);
 }));
 $('save').addEventListener('click', () => guarded('save-error', async () => {
   if (!state.still) throw new ApiError('take a still first');
   const answer = await api('PUT', `${API}/stills/${state.still.still}/calibration`, corrections(),
                            { token: $('token').value });
-  $('save-info').textContent = `wrote ${answer.written} (rms ${answer.rms_px.toFixed(3)} px)`;
+  state.saveInfo = `wrote ${answer.written} (rms ${answer.rms_px.toFixed(3)} px)` +
+    (answer.applied ? '; the service uses it from the next frame set' : '');
 }));
 $('colour-mode').addEventListener('change', () => { state.colourMode = $('colour-mode').checked; render(); });
 $('clear-clicks').addEventListener('click', () => { state.clicks = []; state.colours = null; render(); });
@@ -306,10 +323,9 @@ async function start() {
   $('cameras').innerHTML = state.site.cameras
     .map((c) => `<button type="button" data-camera="${escapeHtml(c.name)}">${escapeHtml(c.name)}</button>`).join('');
   if (!state.site.cameras.length) return;
-  state.camera = state.site.cameras[0].name;
   for (let attempt = 0; ; attempt += 1) {  // a service just started has no frame yet
     try {
-      await takeStill();
+      await takeStill(state.site.cameras[0].name);
       return;
     } catch (e) {
       if (attempt >= 20 || !String(e.message).includes('no frame')) throw e;

@@ -275,6 +275,7 @@ document.addEventListener('keydown', (event) => {
   if (isTyping(event)) return;
   const key = event.key.toLowerCase();
   const step = historyKey(event);
+  if (!step && (event.ctrlKey || event.metaKey || event.altKey)) return;  // the browser's
   if (step) history[step]();
   else if ((key === 'delete' || key === 'backspace') && state.selected >= 0) deleteSelected();
   else if (zoomKey(view, key)) { /* zoomed */ }

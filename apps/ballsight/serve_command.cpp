@@ -110,6 +110,7 @@ void run_serve(const ServeArgs& args) {
     return std::nullopt;
   };
   court_options.write_files = !args.sim;  // the simulated court's calibration is the simulator's
+  if (!args.sim) court_options.on_saved = [&service] { service.reload_calibration(); };
   CourtCalibrationApi court_calibration(std::move(court_options));
   NavigationHub hub;
   const auto started = std::chrono::steady_clock::now();

@@ -35,7 +35,20 @@ struct Fixture {
 
   NavigationHub hub;
   OmniCalibrationApi omni;
-  CourtCalibrationApi court_calibration{CourtCalibrationApiOptions{}};
+  CourtCalibrationApi court_calibration{[] {
+    CourtCalibrationApiOptions o;
+    o.site = read_site(
+        (std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml").string());
+    PinholeParams p;
+    p.width = 1280;
+    p.height = 720;
+    p.fx = p.fy = 900;
+    p.cx = 639.5;
+    p.cy = 359.5;
+    o.intrinsics.assign(o.site.cameras.size(), p);
+    o.latest_frame = [](std::size_t) { return std::nullopt; };  // no frame yet
+    return o;
+  }()};
   PlannerKind planner = PlannerKind::ballsight;
   ApiContext context{hub, {"ne", "se", "sw", "nw"}, SiteCourt{}, 0.0335};
 
@@ -233,6 +246,19 @@ TEST(Api, ACamerasLastFrameAndItsDetections) {
   expect_error(f.call("GET", "/api/v1/cameras/centre/view"), 404, "camera centre");
   expect_error(f.call("GET", "/api/v1/cameras/se/frame"), 404, "/api/v1/cameras/se/frame");
   expect_error(f.call("PUT", "/api/v1/cameras/se/view"), 405, "/api/v1/cameras/se/view");
+}
+
+TEST(Api, TheCourtCalibrationRoutesAreServed) {
+  Fixture f;
+  const json site = json::parse(f.call("GET", "/api/v1/court-calibration/site").body);
+  EXPECT_EQ(site["cameras"].size(), 4u);
+  EXPECT_EQ(site["references"].size(), 12u);
+  expect_error(f.call("POST", "/api/v1/court-calibration/stills", R"({"camera": "ne"})"), 409,
+               "camera ne");
+  EXPECT_TRUE(runs_long("/api/v1/court-calibration/site"));
+  EXPECT_TRUE(runs_long("/api/v1/cameras/ne/view"));
+  EXPECT_TRUE(runs_long("/api/v1/omni/fits?x=1"));
+  EXPECT_FALSE(runs_long("/api/v1/navigation?after=3"));
 }
 
 TEST(Api, TheOpenApiDocumentListsExactlyTheRoutesThatAnswer) {

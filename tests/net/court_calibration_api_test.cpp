@@ -39,6 +39,7 @@ struct CourtFixture {
   sim::CourtRig rig = sim::make_court_rig({}, {}, 2);
   sim::CourtScene scene = sim::make_court_scene(rig.court, {}, 2);
   const std::vector<cv::Mat>& frames = rendered(rig, scene);
+  int saved = 0;  // calls of on_saved
   std::unique_ptr<CourtCalibrationApi> api;
 
   explicit CourtFixture(bool write_files = true) {
@@ -56,6 +57,7 @@ struct CourtFixture {
       return frames[c];
     };
     o.write_files = write_files;
+    if (write_files) o.on_saved = [this] { ++saved; };
     api = std::make_unique<CourtCalibrationApi>(std::move(o));
   }
 
@@ -132,8 +134,11 @@ TEST(CourtCalibrationApi, StillsPosesAndTheCalibrationFile) {
   const std::string before = read_file(f.dir / "cam0.yml");
   expect_error(f.call("PUT", save, "{}"), 401, "headers");
   EXPECT_EQ(read_file(f.dir / "cam0.yml"), before);
+  EXPECT_EQ(f.saved, 0);
   const json saved = f.call_json("PUT", save, "{}", 200, true);
   EXPECT_EQ(saved["written"], (f.dir / "cam0.yml").string());
+  EXPECT_EQ(saved["applied"], true);
+  EXPECT_EQ(f.saved, 1);  // the running service was told
   EXPECT_EQ(read_file(f.dir / "cam0.yml"), yaml.body);
 }
 
@@ -173,6 +178,12 @@ TEST(CourtCalibrationApi, AbsentAndPlacedBallsAreTheUsersWord) {
   expect_error(f.call("POST", path, R"({"placed": [{"reference": "singles_ne"}]})"), 422,
                "body.placed[0].x_px");
   expect_error(f.call("POST", path, R"({"absent": "singles_ne"})"), 400, "body.absent");
+  expect_error(
+      f.call("POST", path, R"({"placed": [{"reference": "singles_ne", "x_px": -3, "y_px": 2}]})"),
+      422, "body.placed[0]");
+  expect_error(f.call("POST", path,
+                      R"({"placed": [{"reference": "singles_ne", "x_px": 1e300, "y_px": 2}]})"),
+               422, "body.placed[0]");
   expect_error(f.call("POST", path + "?format=xml", "{}"), 400, "query format");
 }
 
@@ -222,6 +233,8 @@ TEST(CourtCalibrationApi, AColourModelFromClickedBallPixels) {
 
   expect_error(f.call("POST", path, R"({"clicks": [{"x_px": -5, "y_px": 3}]})"), 422, "click 1");
   expect_error(f.call("POST", path, R"({"clicks": []})"), 400, "body.clicks");
+  expect_error(f.call("POST", path, "{}"), 400, "body.clicks");
+  expect_error(f.call("POST", path + "?format=png", body.dump()), 400, "query format");
 }
 
 TEST(CourtCalibrationApi, BadRequestsNameWhatIsWrong) {
@@ -231,6 +244,7 @@ TEST(CourtCalibrationApi, BadRequestsNameWhatIsWrong) {
   expect_error(f.call("POST", "/api/v1/court-calibration/stills", R"({"camera": "nw"})"), 409,
                "camera nw");
   expect_error(f.call("POST", "/api/v1/court-calibration/stills", "not json"), 400, "body");
+  expect_error(f.call("POST", "/api/v1/court-calibration/stills", "{}"), 400, "body.camera");
   expect_error(f.call("GET", "/api/v1/court-calibration/stills/99"), 404, "still 99");
   expect_error(f.call("POST", "/api/v1/court-calibration/stills/99/pose", "{}"), 404, "still 99");
   expect_error(f.call("DELETE", "/api/v1/court-calibration/site"), 405,

@@ -22,6 +22,7 @@ const court = (page) => page.evaluate(() => {
     pose: c.posed() ? c.state.pose : null,
     posed: c.posed(),
     corrections: c.history.points,
+    selected: c.state.selected,
     clicks: c.state.clicks.length,
     colours: c.state.colours,
     view: { scale: c.view.scale, tx: c.view.tx, ty: c.view.ty },
@@ -90,6 +91,7 @@ test("the court calibration page in Chromium", { timeout: 240_000 }, async (t) =
     await page.click(`#references tr[data-name="${gone.name}"] button`);
     let now = await posed(page, "the pose without the absent ball");
     assert.equal(now.pose.references.find((r) => r.name === gone.name).state, "absent");
+    assert.equal(now.selected, null, "the list's button marks the ball, it does not select it");
     assert.equal(now.pose.matched, before.matched - 1);
 
     // Select the other ball in the list, then click where it is (1.5 px off its blob).
@@ -145,19 +147,38 @@ test("the court calibration page in Chromium", { timeout: 240_000 }, async (t) =
   });
 
   await t.test("bad input shows its error beside its control and changes nothing", async () => {
-    const before = await court(page);
-    // A click outside the image learns nothing.
-    await page.click("#clear-clicks");
+    // A click outside the image after a model was learned: refused beside Learn, the model kept.
+    const learned = (await court(page)).colours;
+    assert.ok(learned);
     await page.evaluate(() => window.ballsightCourt.state.clicks.push([-50, -50]));
     await page.click("#learn");
     await until(async () => page.isVisible("#colour-error"), "the colour error");
-    assert.match(await page.textContent("#colour-error"), /^click 1: \(-50, -50\) lies outside the 1280x720 image$/);
-    assert.equal((await court(page)).colours, null);
-    // A still of a camera the site has not: the API's 404, and the page's still stays.
+    assert.match(await page.textContent("#colour-error"), /^click 2: \(-50, -50\) lies outside the 1280x720 image$/);
+    assert.deepEqual((await court(page)).colours, learned);
+
+    // Balls marked absent until fewer than four are left: the pose's error beside the list names
+    // the balls found and missing, the download is refused beside its button, and undo brings
+    // the pose back.
+    const before = await court(page);
+    const found = before.pose.references.filter((r) => r.state === "found");
+    for (const r of found.slice(3)) {
+      await page.click(`#references tr[data-name="${r.name}"] button`);
+      await until(async () => (await court(page)).posed && !(await page.textContent("#status")), "the pose");
+    }
+    assert.equal((await court(page)).pose, null);
+    assert.match(await page.textContent("#pose-error"), /reference balls: found \d of 12 .*at least 4 needed; missing: /);
+    await page.click("#download");
+    await until(async () => page.isVisible("#save-error"), "the download's error");
+    assert.match(await page.textContent("#save-error"), /at least 4 needed/);
+    await page.focus("#view");
+    for (const _ of found.slice(3)) await page.keyboard.press("Control+z");
+    const after = await posed(page, "the pose after undo");
+    assert.equal(after.pose.rms_px, before.pose.rms_px);
+    assert.equal(await page.isVisible("#pose-error"), false);
+    // A still of a camera the site has not: the API's 404 naming the field.
     const answer = await fetch(`${origin}/api/v1/court-calibration/stills`, { method: "POST", body: '{"camera":"no such"}' });
     assert.equal(answer.status, 404);
-    assert.deepEqual((await answer.json()).where, "body.camera");
-    assert.deepEqual((await court(page)).still, before.still);
+    assert.equal((await answer.json()).where, "body.camera");
   });
 
   await t.test("usable on a tablet: no sideways scroll at 768 x 1024", async () => {

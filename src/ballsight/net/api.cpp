@@ -326,7 +326,7 @@ ApiResponse camera_view_route(const ApiRequest& request, const std::string& path
                     : std::nullopt;
   if (!view) api_fail(404, "no frame from this camera yet", "camera " + name);
   cv::Mat small = view->frame;
-  if (small.cols > 640) {
+  if (small.cols > 640 && small.rows * 640 / small.cols >= 1) {
     cv::resize(view->frame, small, cv::Size(640, view->frame.rows * 640 / view->frame.cols), 0, 0,
                cv::INTER_AREA);
   }
@@ -473,7 +473,17 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
     return route->answer(request, query, c);
   } catch (const ApiError& e) {
     return error_response(e);
+  } catch (const InputError& e) {
+    return input_error(422, e);
+  } catch (const std::exception& e) {
+    return server_error(e);
   }
+}
+
+bool runs_long(const std::string& target) {
+  const std::string path = split_target(target).path;
+  return OmniCalibrationApi::owns(path) || CourtCalibrationApi::owns(path) ||
+         path.starts_with("/api/v1/cameras/");
 }
 
 }  // namespace ballsight

@@ -79,6 +79,9 @@ ApiResponse api_error(int status, const std::string& what, const std::string& wh
 
 /// Answers one request without waiting. Never throws for anything a client sends.
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& context);
+/// Whether the request's answer takes more than a moment (a calibration step, a frame encoded):
+/// the HTTP server answers it off its I/O thread, so that it holds up no other client.
+bool runs_long(const std::string& target);
 /// A waiting long-poll's answer: the first update newer than `after`; nullopt while none is.
 std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& context);
 

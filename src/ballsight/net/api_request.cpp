@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <iostream>
 
 namespace ballsight {
 
@@ -76,6 +77,11 @@ ApiResponse input_error(int status, const InputError& e) {
   const std::size_t colon = message.find(": ");
   if (colon == std::string::npos) return api_error(status, message, "body");
   return api_error(status, message.substr(colon + 2), message.substr(0, colon));
+}
+
+ApiResponse server_error(const std::exception& e) {
+  std::cerr << "ballsight serve: " << e.what() << "\n";
+  return api_error(500, e.what(), "server");
 }
 
 ApiResponse json_answer(int status, const nlohmann::json& body) {

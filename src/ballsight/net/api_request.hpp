@@ -59,6 +59,9 @@ std::string percent_decoded(const std::string& text);
 
 /// An InputError's "where: what" as the answer {"error": what, "where": where}.
 ApiResponse input_error(int status, const InputError& e);
+/// A failure that is not the client's (a file that cannot be written, a library's exception): a
+/// 500 {"error": what, "where": "server"}, written to stderr too.
+ApiResponse server_error(const std::exception& e);
 /// `body` as a JSON answer of `status`.
 ApiResponse json_answer(int status, const nlohmann::json& body);
 /// A 200 answer of other bytes (an image, a file to download).

@@ -44,18 +44,26 @@ std::size_t reference_index(const std::vector<ReferencePoint>& references, const
   return static_cast<std::size_t>(it - references.begin());
 }
 
-/// {"placed": [{"reference", "x_px", "y_px"}], "absent": [name, ...]}, both optional.
-ReferenceCorrections corrections_of(const json& body,
-                                    const std::vector<ReferencePoint>& references) {
+/// {"placed": [{"reference", "x_px", "y_px"}], "absent": [name, ...]}, both optional; a placed
+/// pixel lies in the image.
+ReferenceCorrections corrections_of(const json& body, const std::vector<ReferencePoint>& references,
+                                    const PinholeCamera& camera) {
   ReferenceCorrections out;
   if (const auto placed = body.find("placed"); placed != body.end()) {
     if (!placed->is_array()) api_fail(400, "expected a list", "body.placed");
     for (std::size_t i = 0; i < placed->size(); ++i) {
       const std::string where = "body.placed[" + std::to_string(i) + "]";
       const json& p = (*placed)[i];
+      const Vec2 pixel = pixel_of(p, where);
+      if (!camera.in_image(pixel)) {
+        api_fail(422,
+                 "lies outside the " + std::to_string(camera.width()) + "x" +
+                     std::to_string(camera.height()) + " image",
+                 where);
+      }
       out.placed.push_back(
           {reference_index(references, json_string(p, "reference", where), where + ".reference"),
-           pixel_of(p, where)});
+           pixel});
     }
   }
   if (const auto absent = body.find("absent"); absent != body.end()) {
@@ -171,8 +179,11 @@ struct CourtCalibrationApi::Impl {
 
   ApiResponse take_still(const ApiRequest& request) {
     const json body = parse_body(request.body);
+    const auto name = body.find("camera");
+    if (name == body.end() || !name->is_string())
+      api_fail(400, "expected a camera's name", "body.camera");
     auto s = std::make_shared<Still>();
-    s->camera = camera_index(json_string(body, "camera", "body"), "body.camera");
+    s->camera = camera_index(name->get<std::string>(), "body.camera");
     const std::optional<cv::Mat> frame = options.latest_frame(s->camera);
     if (!frame || frame->empty()) {
       api_fail(409, "no frame from this camera yet",
@@ -194,7 +205,8 @@ struct CourtCalibrationApi::Impl {
   std::pair<CameraPoseReport, ReferenceCorrections> pose(const Still& s,
                                                          const ApiRequest& request) {
     const json body = request.body.empty() ? json::object() : parse_body(request.body);
-    const ReferenceCorrections corrections = corrections_of(body, references);
+    const ReferenceCorrections corrections =
+        corrections_of(body, references, PinholeCamera(options.intrinsics[s.camera]));
     const SiteCamera& camera = options.site.cameras[s.camera];
     CameraCalibration calibration;
     calibration.intrinsics = options.intrinsics[s.camera];
@@ -210,8 +222,8 @@ struct CourtCalibrationApi::Impl {
       api_fail(400, "expected json or yaml, got '" + format + "'", "query format");
     const auto [report, corrections] = pose(s, request);
     if (format == "yaml") return bytes_answer(camera_file_text(report.calibration), "text/yaml");
-    return json_answer(200,
-                       pose_json(report, corrections, PinholeCamera(options.intrinsics[s.camera])));
+    return json_answer(
+        200, pose_json(report, corrections, PinholeCamera(report.calibration.intrinsics)));
   }
 
   ApiResponse save(const Still& s, const ApiRequest& request) {
@@ -222,21 +234,28 @@ struct CourtCalibrationApi::Impl {
     }
     const auto [report, corrections] = pose(s, request);
     write_camera_file(report.calibration_file, report.calibration);
-    json answer = pose_json(report, corrections, PinholeCamera(options.intrinsics[s.camera]));
+    if (options.on_saved) options.on_saved();
+    json answer = pose_json(report, corrections, PinholeCamera(report.calibration.intrinsics));
     answer["written"] = report.calibration_file.string();
+    answer["applied"] = static_cast<bool>(options.on_saved);
     return json_answer(200, answer);
   }
 
   ApiResponse colours(const Still& s, const ApiRequest& request, const std::string& query) {
+    const std::string format = query_text(query, "format").value_or("json");
+    if (format != "json" && format != "file")
+      api_fail(400, "expected json or file, got '" + format + "'", "query format");
     const json body = parse_body(request.body);
-    const json& list = json_member(body, "clicks", "body");
-    if (!list.is_array() || list.empty()) api_fail(400, "expected a list of pixels", "body.clicks");
+    const auto list_at = body.find("clicks");
+    if (list_at == body.end() || !list_at->is_array() || list_at->empty())
+      api_fail(400, "expected a list of pixels", "body.clicks");
+    const json& list = *list_at;
     std::vector<Vec2> clicks;
     for (std::size_t i = 0; i < list.size(); ++i)
       clicks.push_back(pixel_of(list[i], "body.clicks[" + std::to_string(i) + "]"));
     PhotoBallOptions detector;
     detector.colours = learn_ball_colours(s.bgr, clicks);
-    if (query_text(query, "format").value_or("json") == "file") {
+    if (format == "file") {
       return bytes_answer(ball_colours_json(detector.colours).dump(2) + "\n", "application/json");
     }
     return json_answer(200, {{"colours", ball_colours_json(detector.colours)},
@@ -267,6 +286,9 @@ CourtCalibrationApi::CourtCalibrationApi(CourtCalibrationApiOptions options)
   require(options.intrinsics.size() == options.site.cameras.size(), "court calibration",
           "intrinsics for " + std::to_string(options.intrinsics.size()) + " of " +
               std::to_string(options.site.cameras.size()) + " cameras");
+  require(options.site.cameras.empty() || options.latest_frame, "court calibration",
+          "no source of the cameras' frames");
+  require(options.max_stills >= 1, "max_stills", "must be at least 1");
   impl_->references = site_references(options.site);
   impl_->options = std::move(options);
 }
@@ -285,6 +307,8 @@ ApiResponse CourtCalibrationApi::handle(const ApiRequest& request) {
     return error_response(e);
   } catch (const InputError& e) {
     return input_error(422, e);
+  } catch (const std::exception& e) {
+    return server_error(e);
   }
 }
 

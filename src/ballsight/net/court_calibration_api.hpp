@@ -30,12 +30,16 @@ struct CourtCalibrationApiOptions {
   /// PUT .../calibration writes the camera's calibration file (the site's); false: the service
   /// has no files (the simulated court), the page offers the file as a download only.
   bool write_files = false;
+  /// After a calibration file was written: the running service takes the new pose (it throws
+  /// InputError when it cannot). Empty: nothing.
+  std::function<void()> on_saved;
   std::size_t max_stills = 16;  // the oldest is forgotten beyond
 };
 
 class CourtCalibrationApi {
  public:
-  /// Throws InputError when the intrinsics are not one per site camera.
+  /// Throws InputError when the intrinsics are not one per site camera, or a site with cameras
+  /// has no latest_frame.
   explicit CourtCalibrationApi(CourtCalibrationApiOptions options);
   ~CourtCalibrationApi();
   CourtCalibrationApi(const CourtCalibrationApi&) = delete;

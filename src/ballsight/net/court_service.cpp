@@ -38,7 +38,7 @@ ApiContext CourtService::api_context(NavigationHub& hub) {
   return context;
 }
 
-const std::vector<FieldCamera>& CourtService::cameras() const {
+std::vector<FieldCamera> CourtService::cameras() const {
   return publisher().cameras();
 }
 
@@ -51,8 +51,21 @@ UpdatePublisher::UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline
     : site_(site),
       pipeline_(std::move(pipeline)),
       planner_(planner),
-      views_(pipeline_->cameras().size()) {
+      views_(pipeline_->cameras().size()),
+      next_planner_(planner) {
   planner_.validate();
+}
+
+std::vector<FieldCamera> UpdatePublisher::cameras() const {
+  const std::lock_guard lock(pipeline_mutex_);
+  return pipeline_->cameras();
+}
+
+void UpdatePublisher::replace_pipeline(std::unique_ptr<CourtPipeline> pipeline) {
+  const std::lock_guard lock(pipeline_mutex_);
+  require(pipeline->cameras().size() == pipeline_->cameras().size(), "pipeline",
+          "is for another number of cameras");
+  pipeline_ = std::move(pipeline);
 }
 
 std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
@@ -60,6 +73,7 @@ std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::
   const auto started = Clock::now();
   FrameSetResult result;
   try {
+    const std::lock_guard pipeline_lock(pipeline_mutex_);
     result = pipeline_->process(frames);
   } catch (const std::exception& e) {  // a bad frame must not end the service: say so, go on
     const std::lock_guard lock(mutex_);
@@ -129,14 +143,18 @@ std::uint64_t UpdatePublisher::plan_and_publish(NavigationHub& hub) {
 
 void UpdatePublisher::set_planner(const PlannerOptions& planner) {
   planner.validate();
+  {
+    const std::lock_guard lock(mutex_);
+    next_planner_ = planner;
+  }
   const std::lock_guard plan_lock(plan_mutex_);
   planner_ = planner;
   previous_.reset();  // another planner starts afresh, not from the other one's route
 }
 
 PlannerOptions UpdatePublisher::planner() const {
-  const std::lock_guard plan_lock(plan_mutex_);
-  return planner_;
+  const std::lock_guard lock(mutex_);
+  return next_planner_;
 }
 
 std::optional<CameraView> UpdatePublisher::camera_view(std::size_t index) const {

@@ -43,9 +43,13 @@ class CourtService {
   virtual ApiContext api_context(NavigationHub& hub);
 
   /// Every camera as the pipeline uses it (intrinsics and pose), in site order.
-  const std::vector<FieldCamera>& cameras() const;
+  std::vector<FieldCamera> cameras() const;
   /// Camera `index`'s last frame through the pipeline; nullopt before its first. Any thread.
   std::optional<CameraView> camera_view(std::size_t index) const;
+  /// Reads the cameras' calibration files again and runs the pipeline on them from the next
+  /// frame set (a camera re-calibrated while the service runs). Throws InputError naming the file
+  /// at fault; the pipeline stays as it was then. The simulated court has no files: a no-op.
+  virtual void reload_calibration() {}
 
  protected:
   virtual UpdatePublisher& publisher() const = 0;
@@ -73,7 +77,9 @@ class UpdatePublisher {
   void set_planner(const PlannerOptions& planner);
   PlannerOptions planner() const;
 
-  const std::vector<FieldCamera>& cameras() const { return pipeline_->cameras(); }
+  std::vector<FieldCamera> cameras() const;
+  /// Runs `pipeline` (for the same cameras) from the next frame set on. Any thread.
+  void replace_pipeline(std::unique_ptr<CourtPipeline> pipeline);
   /// Camera `index`'s last frame and detections; nullopt before its first frame. Any thread.
   std::optional<CameraView> camera_view(std::size_t index) const;
 
@@ -85,8 +91,9 @@ class UpdatePublisher {
   std::uint64_t plan_and_publish(NavigationHub& hub);  // plan_mutex_ held; the update's seq
 
   const Site& site_;
+  mutable std::mutex pipeline_mutex_;  // guards pipeline_ (held while it runs)
   std::unique_ptr<CourtPipeline> pipeline_;
-  mutable std::mutex plan_mutex_;  // guards the planner, the last world, its time, the route
+  std::mutex plan_mutex_;  // guards the planner's use, the last world, its time, the route
   PlannerOptions planner_;
   WorldModel last_world_;
   std::int64_t last_capture_ns_ = 0;
@@ -97,6 +104,7 @@ class UpdatePublisher {
   std::optional<std::chrono::steady_clock::time_point> last_;
   std::string last_error_;
   std::vector<std::optional<CameraView>> views_;  // per camera
+  PlannerOptions next_planner_;                   // what planner() says, without waiting for a plan
 };
 
 }  // namespace ballsight

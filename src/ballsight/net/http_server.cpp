@@ -16,6 +16,7 @@
 #include <boost/asio/post.hpp>
 #include <boost/asio/redirect_error.hpp>
 #include <boost/asio/steady_timer.hpp>
+#include <boost/asio/thread_pool.hpp>
 #include <boost/asio/use_awaitable.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
@@ -156,6 +157,7 @@ struct HttpServer::Impl {
   std::optional<WebFiles> pages;
   asio::io_context io{1};
   asio::executor_work_guard<asio::io_context::executor_type> work{io.get_executor()};
+  asio::thread_pool workers{2};  // requests that run long (runs_long), off the I/O thread
   tcp::acceptor acceptor{io};
   asio::steady_timer health_timer{io};
   std::thread thread;
@@ -304,6 +306,10 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
     } else if (const std::string path = split_target(request.target).path;
                pages && request.method == "GET" && WebFiles::is_page_path(path)) {
       response = pages->get(path);
+    } else if (runs_long(request.target)) {
+      response = co_await asio::co_spawn(
+          workers, [&]() -> awaitable<ApiResponse> { co_return handle_api(request, context); },
+          asio::use_awaitable);
     } else {
       response = handle_api(request, context);
       if (response.wait_after) response = co_await long_poll(*response.wait_after, response.wait);

@@ -432,6 +432,8 @@ ApiResponse OmniCalibrationApi::handle(const ApiRequest& request) {
     return error_response(e);
   } catch (const InputError& e) {
     return input_error(422, e);
+  } catch (const std::exception& e) {
+    return server_error(e);
   }
 }
 

@@ -35,6 +35,11 @@ SiteCourtService::SiteCourtService(Site site, const SiteServiceOptions& options)
 
 SiteCourtService::~SiteCourtService() = default;
 
+void SiteCourtService::reload_calibration() {
+  publisher_->replace_pipeline(
+      make_ballsight_pipeline(site_field_cameras(site_), service_pipeline_options(site_)));
+}
+
 void SiteCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {
   std::vector<CameraCapture*> list;
   for (auto& c : captures_) {

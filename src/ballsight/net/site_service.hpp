@@ -27,6 +27,7 @@ class SiteCourtService : public CourtService {
   /// Per camera: "state" (starting, running, retrying, finished, stopped), "frames",
   /// "frames_per_s", "last_frame_age_s" (null before the first), "failures", "last_error".
   nlohmann::json health() const override;
+  void reload_calibration() override;
 
  protected:
   UpdatePublisher& publisher() const override { return *publisher_; }
