@@ -3,7 +3,7 @@
 
 import { ImageView } from './image_view.js';
 import { $, ApiError, api, circle as circleOn, download, historyKey, isTyping, makeGuarded,
-         zoomKey, zoomOnWheel } from './page_support.js';
+         showError, zoomKey, zoomOnWheel } from './page_support.js';
 import { PointHistory } from './point_history.js';
 import { drawRadialPlot } from './radial_plot.js';
 
@@ -19,6 +19,8 @@ const state = {
   fit: null,          // the last finished fit: {result, points: the list it was fitted to}
   selected: -1,
   heatmap: false,
+  plot: null,         // the curves' uPlot
+  checked: null,      // a table checked against the points: {table, check}
 };
 const GRAB_PX = 9;  // canvas pixels
 
@@ -161,7 +163,9 @@ function showFit(result) {
     return { radius_px: Math.hypot(dx, dy), distance_cm: p.distance_cm,
              theta_deg: (Math.atan2(dy, dx) * 180 / Math.PI + 360) % 360 };
   });
-  drawRadialPlot($('curves'), result.curves, dots);
+  drawRadialPlot($('curves'), result.curves, dots)
+    .then((plot) => { state.plot = plot; showError('curves-error', null); })
+    .catch((e) => showError('curves-error', e));
 }
 
 // --- actions ---------------------------------------------------------------------------------
@@ -199,6 +203,19 @@ async function importCsv(file) {
   const center = `${state.center[0]},${state.center[1]}`;
   const { points } = await api('POST', `/api/v1/omni/points?center=${encodeURIComponent(center)}`, text, { type: 'text/csv' });
   history.set(points);
+}
+
+async function checkTable(file) {
+  if (!state.frame) throw new ApiError('open a frame first: a table is checked against its points');
+  const bytes = await file.arrayBuffer();
+  const table = await api('POST', `/api/v1/omni/frames/${state.frame.frame}/table`, bytes,
+                          { type: 'application/octet-stream' });
+  const check = await api('POST', `/api/v1/omni/tables/${table.table}/residuals`, { points: history.points });
+  state.checked = { table, check };
+  const e = check.distance_cm;
+  $('table-info').textContent = `${file.name} (${table.method}, ${table.width} × ${table.height}) on ` +
+    `${e.count} points: distance error median ${e.median.toFixed(2)} cm, p95 ${e.p95.toFixed(2)} cm, ` +
+    `max ${e.max.toFixed(2)} cm; ${check.out_of_range} outside its valid range`;
 }
 
 async function addPointAt(x, y) {
@@ -340,6 +357,10 @@ $('export-csv').addEventListener('click', () => guarded('import-error', exportCs
 $('import-csv').addEventListener('change', () => {
   const file = $('import-csv').files[0];
   if (file) guarded('import-error', () => importCsv(file));
+});
+$('check-table').addEventListener('change', () => {
+  const file = $('check-table').files[0];
+  if (file) guarded('table-error', () => checkTable(file));
 });
 $('points').addEventListener('change', (event) => {
   const input = event.target;

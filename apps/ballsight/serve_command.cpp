@@ -30,7 +30,8 @@ struct ServeArgs {
   std::string site;
   std::string listen = "127.0.0.1:8080";
   std::string token_file = "ballsight-token";
-  std::string web = BALLSIGHT_WEB_DIR;  // "": no pages
+  std::string web = BALLSIGHT_WEB_DIR;                    // "": no pages
+  std::string node_modules = BALLSIGHT_NODE_MODULES_DIR;  // the pages' libraries (npm)
   std::string planner = "ballsight";
   bool open_reads = false;
   int balls = -1;           // simulated court: tennis balls (-1: the scenario's)
@@ -90,6 +91,7 @@ void run_serve(const ServeArgs& args) {
   server_options.token = read_or_create_token(args.token_file);
   server_options.open_reads = args.open_reads;
   server_options.web_root = args.web;
+  server_options.node_modules = args.node_modules;
   server_options.body_limit = 16u << 20;  // the calibration pages upload images
   OmniCalibrationOptions omni_options;
   omni_options.frames_dir = args.omni_frames;
@@ -178,6 +180,9 @@ void add_serve_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--web", args->web,
                   "Folder of the web pages served at / (the dashboard) and /web/; \"\": none")
+      ->capture_default_str();
+  cmd->add_option("--node-modules", args->node_modules,
+                  "npm folder of the pages' libraries (scripts/setup installs them)")
       ->capture_default_str();
   cmd->add_option("--omni-frames", args->omni_frames,
                   "Folder of omni images the calibration page may open by name")

@@ -114,7 +114,7 @@ TEST(HttpServer, EveryDocumentedRouteAnswersAsDocumentedOverTheWire) {
       ++operations;
     }
   }
-  EXPECT_EQ(operations, 33);
+  EXPECT_EQ(operations, 35);
   // The errors' own headers.
   const auto refused = client.send(http::verb::put, "/api/v1/robot", "{}");
   EXPECT_EQ(refused[http::field::www_authenticate], "Bearer");

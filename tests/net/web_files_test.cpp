@@ -63,6 +63,26 @@ TEST(WebFiles, RefusesWhatIsNotAPageOfTheFolder) {
   }
 }
 
+// The pages' libraries come from the npm folder, only the files the pages import, by name.
+TEST(WebFiles, TheLibrariesFromNpmByName) {
+  Pages p;
+  const fs::path npm = p.temp / "node_modules";
+  fs::create_directories(npm / "uplot" / "dist");
+  write(npm / "uplot" / "dist" / "uPlot.esm.js", "export default 1;");
+  write(npm / "uplot" / "dist" / "uPlot.cjs.js", "module.exports = 1;");
+  const WebFiles files(p.root, npm);
+  const ApiResponse lib = files.get("/web/vendor/uplot/uPlot.esm.js");
+  EXPECT_EQ(lib.status, 200);
+  EXPECT_EQ(lib.body, "export default 1;");
+  EXPECT_EQ(lib.content_type, "text/javascript; charset=utf-8");
+  EXPECT_EQ(files.get("/web/vendor/uplot/uPlot.cjs.js").status, 404);  // not one the pages use
+  EXPECT_EQ(files.get("/web/vendor/../node_modules/uplot/dist/uPlot.esm.js").status, 404);
+  const ApiResponse css = files.get("/web/vendor/uplot/uPlot.min.css");  // not installed
+  EXPECT_EQ(css.status, 404);
+  EXPECT_NE(css.body.find("scripts/setup"), std::string::npos) << css.body;
+  EXPECT_EQ(WebFiles(p.root).get("/web/vendor/uplot/uPlot.esm.js").status, 404);
+}
+
 TEST(WebFiles, AFolderWithoutPagesIsAnError) {
   test::TempDir temp;
   EXPECT_THROW(WebFiles(temp / "missing"), InputError);

@@ -147,6 +147,20 @@ test("the omni calibration page in Chromium", { timeout: 240_000 }, async (t) =>
     await until(async () => /^poly on \d+ points/.test(await page.textContent("#fit-info")), "the fit", 120_000);
     const residuals = await page.locator("#points tbody tr td:last-child").allTextContents();
     assert.ok(residuals.every((r) => /^-?\d+\.\d\d$/.test(r)), "every point's residual shown");
+    // The curves plotted by uPlot (npm) are the fit's: 12 directions and the points.
+    await until(async () => page.evaluate(() => window.ballsightOmni.state.plot !== null), "the plot");
+    const plotted = await page.evaluate(() => {
+      const { plot, fit } = window.ballsightOmni.state;
+      const curve = fit.result.curves[3];
+      const x = plot.data[0].indexOf(curve.radius_px[10]);
+      return { series: plot.series.length, value: plot.data[4][x], expected: curve.distance_cm[10],
+               points: plot.data[13].filter((v) => v !== null).length };
+    });
+    assert.equal(plotted.series, 1 + 12 + 1);
+    assert.equal(plotted.value, plotted.expected);
+    assert.ok(plotted.points > 0.9 * found, `${plotted.points} points plotted`);
+    assert.equal(await page.locator("#curves canvas").count(), 1);
+    assert.equal(await page.isVisible("#curves-error"), false);
 
     const csv = join(dir, "samples.csv");
     exported = await download(page, "#export-csv", csv);
@@ -163,6 +177,27 @@ test("the omni calibration page in Chromium", { timeout: 240_000 }, async (t) =>
       await page.check("#heatmap");
       await page.screenshot({ path, fullPage: true });
     }
+  });
+
+  await t.test("a table checked against the points; one for another image size is refused", async () => {
+    const { center } = await omni(page);
+    const other = join(dir, "other.bsmap");
+    execFileSync(bin, ["omni", "fit", "--samples", join(dir, "samples.csv"), "--method", "poly", "--center",
+                       `${2 * center[0]},${2 * center[1]}`, "--image-size", "1280x960", "--out", other]);
+    await page.setInputFiles("#check-table", { name: "other.bsmap", mimeType: "application/octet-stream", buffer: readFileSync(other) });
+    await until(async () => page.isVisible("#table-error"), "the table's error");
+    assert.match(await page.textContent("#table-error"), /^body: image size 1280x960 does not match 640x480$/);
+    assert.equal(await page.evaluate(() => window.ballsightOmni.state.checked), null);
+    // The page's own table: its residuals are the fit's (the table holds the fit, read bilinearly).
+    await page.setInputFiles("#check-table", { name: "page.bsmap", mimeType: "application/octet-stream", buffer: readFileSync(join(dir, "page.bsmap")) });
+    await until(async () => page.evaluate(() => window.ballsightOmni.state.checked !== null), "the table's check");
+    assert.equal(await page.isVisible("#table-error"), false);
+    const { check, fitMedian } = await page.evaluate(() => ({
+      check: window.ballsightOmni.state.checked.check,
+      fitMedian: window.ballsightOmni.state.fit.result.errors.distance_cm.median,
+    }));
+    assert.ok(Math.abs(check.distance_cm.median - fitMedian) < 0.2, `table ${check.distance_cm.median} cm, fit ${fitMedian} cm`);
+    assert.match(await page.textContent("#table-info"), /^page\.bsmap \(poly, 640 × 480\) on \d+ points: distance error median/);
   });
 
   await t.test("a bad upload after work changes nothing; an import brings the points back", async () => {

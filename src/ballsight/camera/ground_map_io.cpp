@@ -80,11 +80,13 @@ void save_ground_map(const std::filesystem::path& path, const GroundMap& map) {
 
 GroundMap load_ground_map(const std::filesystem::path& path,
                           std::optional<cv::Size> expected_image_size) {
-  const std::string file = read_file(path);
-  const std::string where = path.string();
+  return parse_ground_map(read_file(path), path.string(), expected_image_size);
+}
+
+GroundMap parse_ground_map(std::string_view file, const std::string& where,
+                           std::optional<cv::Size> expected_image_size) {
   require(!file.empty(), where, "empty file (expected a ballsight ground map)");
-  const std::string_view magic_part =
-      std::string_view(file).substr(0, std::min(file.size(), kGroundMapMagic.size()));
+  const std::string_view magic_part = file.substr(0, std::min(file.size(), kGroundMapMagic.size()));
   require(kGroundMapMagic.starts_with(magic_part), where,
           "not a ballsight ground map (bad magic; iris tables need --format iris-px2cm)");
   require(file.size() >= kGroundMapHeaderBytes, where,

@@ -29,6 +29,10 @@ void save_ground_map(const std::filesystem::path& path, const GroundMap& map);
 GroundMap load_ground_map(const std::filesystem::path& path,
                           std::optional<cv::Size> expected_image_size = std::nullopt);
 
+/// The same for a table's bytes (an upload); errors name `where`.
+GroundMap parse_ground_map(std::string_view bytes, const std::string& where,
+                           std::optional<cv::Size> expected_image_size = std::nullopt);
+
 /// Whether `bytes` begin with the ground map magic (format detection).
 bool has_ground_map_magic(std::string_view bytes);
 

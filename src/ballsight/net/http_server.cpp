@@ -149,7 +149,7 @@ void HttpServerOptions::validate() const {
 
 struct HttpServer::Impl {
   Impl(const HttpServerOptions& o, ApiContext& c) : options(o), context(c) {
-    if (!o.web_root.empty()) pages.emplace(o.web_root);
+    if (!o.web_root.empty()) pages.emplace(o.web_root, o.node_modules);
   }
 
   HttpServerOptions options;

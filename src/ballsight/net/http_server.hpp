@@ -36,6 +36,8 @@ struct HttpServerOptions {
   int client_send_buffer = 64 * 1024;
   /// The web pages' folder (web_files.hpp), served at / and /web/; empty: API only.
   std::filesystem::path web_root;
+  /// The npm folder the pages' libraries come from (web_files.hpp); empty: none.
+  std::filesystem::path node_modules;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -126,15 +126,26 @@ struct FitJob {
   std::optional<std::string> iris_table;
 };
 
-json fit_result(const OmniCalibration& fit, const OmniImage& image, std::size_t samples) {
+json residuals_json(const std::vector<SampleResidual>& list) {
   json residuals = json::array();
-  for (const SampleResidual& r : fit.residuals) {
+  for (const SampleResidual& r : list) {
     residuals.push_back(
         {{"predicted_distance_cm", r.predicted_distance_cm},
          {"distance_error_cm", r.distance_error_cm},
          {"bearing_error_deg", r.bearing_error_deg ? json(*r.bearing_error_deg) : json(nullptr)},
          {"in_range", r.in_range}});
   }
+  return residuals;
+}
+
+/// A table uploaded to check points against.
+struct CheckedTable {
+  std::uint64_t id = 0;
+  GroundMap map;
+};
+
+json fit_result(const OmniCalibration& fit, const OmniImage& image, std::size_t samples) {
+  const json residuals = residuals_json(fit.residuals);
   json curves = json::array();
   for (const RadialCurve& c : radial_curves(*fit.model)) {
     curves.push_back(
@@ -160,6 +171,7 @@ struct OmniCalibrationApi::Impl {
   std::mutex mutex;  // frames, fits, workers, next_id
   std::deque<std::shared_ptr<const Frame>> frames;
   std::deque<std::shared_ptr<FitJob>> fits;
+  std::deque<std::shared_ptr<const CheckedTable>> tables;
   std::vector<std::pair<std::shared_ptr<FitJob>, std::thread>> workers;
   std::uint64_t next_id = 1;
 
@@ -373,6 +385,45 @@ struct OmniCalibrationApi::Impl {
     return json_answer(202, job->result);
   }
 
+  std::shared_ptr<const CheckedTable> checked_table(const std::string& id) {
+    std::lock_guard lock(mutex);
+    for (const auto& t : tables)
+      if (std::to_string(t->id) == id) return t;
+    api_fail(404, "no such table", "table " + id);
+  }
+
+  /// A table to check points against; it must be for the frame's image size.
+  ApiResponse add_table(const Frame& frame, const ApiRequest& request) {
+    if (!has_ground_map_magic(request.body)) {
+      api_fail(415, "not a ballsight table (the IRIS int16 format holds no image size)", "body");
+    }
+    auto t = std::make_shared<CheckedTable>(CheckedTable{
+        0, parse_ground_map(request.body, "body", cv::Size(frame.bgr.cols, frame.bgr.rows))});
+    const GroundMapInfo& info = t->map.info();
+    std::lock_guard lock(mutex);
+    t->id = next_id++;
+    tables.push_back(t);
+    if (tables.size() > options.max_fits) tables.pop_front();
+    return json_answer(
+        201, {{"table", std::to_string(t->id)},
+              {"method", info.method},
+              {"width", info.width},
+              {"height", info.height},
+              {"center", pixel_json(info.image_center_px)},
+              {"valid_radius", {{"min_px", info.min_radius_px}, {"max_px", info.max_radius_px}}}});
+  }
+
+  ApiResponse table_check(const CheckedTable& table, const ApiRequest& request) {
+    const std::vector<SampleResidual> residuals =
+        table_residuals(table.map, points_of(parse_body(request.body)));
+    std::vector<double> errors;
+    for (const SampleResidual& r : residuals)
+      if (r.in_range) errors.push_back(std::abs(r.distance_error_cm));
+    return json_answer(200, {{"residuals", residuals_json(residuals)},
+                             {"out_of_range", residuals.size() - errors.size()},
+                             {"distance_cm", summary_json(summarize_errors(errors))}});
+  }
+
   ApiResponse fit_state(FitJob& job) {
     std::lock_guard lock(job.mutex);
     return json_answer(200, job.result);
@@ -401,6 +452,9 @@ struct OmniCalibrationApi::Impl {
          {2, "frames", nullptr, "GET",
           [&] { return bytes_answer(frame(parts[1])->png, "image/png"); }},
          {3, "frames", "markers", "POST", [&] { return markers(*frame(parts[1]), request); }},
+         {3, "frames", "table", "POST", [&] { return add_table(*frame(parts[1]), request); }},
+         {3, "tables", "residuals", "POST",
+          [&] { return table_check(*checked_table(parts[1]), request); }},
          {1, "places", nullptr, "POST", [&] { return places(request); }},
          {1, "samples", nullptr, "POST", [&] { return samples_csv(request); }},
          {1, "points", nullptr, "POST", [&] { return import_csv(request, query); }},

@@ -148,6 +148,14 @@ const nlohmann::json& openapi_document() {
       "post": {"summary": "Omni calibration: the layout's floor markers found in the frame (ballsight omni markers). Body {center: {x_px, y_px}, layout: {bearing_step_deg, min_cm, max_cm, step_cm}, marker_bgr: [b, g, r], marker_diameter_cm}; answers {markers: [{x_px, y_px, distance_cm, bearing_deg}], blobs, layout_markers}",
                "responses": {"200": {"description": "markers"}, "400": {"description": "bad body"}, "404": {"description": "no such frame"}, "422": {"description": "bad layout"}}}
     },
+    "/api/v1/omni/frames/{frame}/table": {
+      "post": {"summary": "Omni calibration: a table made before (ballsight's format, the body) to check points against; it must be for the frame's image size. Answers {table: id, method, width, height, center, valid_radius}",
+               "responses": {"201": {"description": "table"}, "404": {"description": "no such frame"}, "415": {"description": "not a ballsight table"}, "422": {"description": "for another image size, truncated or corrupt"}}}
+    },
+    "/api/v1/omni/tables/{table}/residuals": {
+      "post": {"summary": "Omni calibration: every point's residual under a checked table (its floor point at the point's pixel). Body {points: [{x_px, y_px, distance_cm, bearing_deg}]}; answers {residuals, out_of_range, distance_cm: {count, median, p95, max}}",
+               "responses": {"200": {"description": "residuals"}, "400": {"description": "bad body"}, "404": {"description": "no such table"}, "422": {"description": "bad value"}}}
+    },
     "/api/v1/omni/places": {
       "post": {"summary": "Omni calibration: each point's place in the layout (its ray, and its ring by a fit's distance or by its rank on the ray). Body {center, layout, points: [{x_px, y_px}], fit: id or null}",
                "responses": {"200": {"description": "{points: [{x_px, y_px, distance_cm, bearing_deg}]}"}, "400": {"description": "bad body"}, "404": {"description": "no such fit"}, "422": {"description": "bad layout"}}}

@@ -38,6 +38,12 @@ std::optional<std::string_view> page_file(const std::string& path) {
   return std::nullopt;
 }
 
+/// The library files the pages import (/web/vendor/...) and where npm puts them.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 2> kVendorFiles{{
+    {"/web/vendor/uplot/uPlot.esm.js", "uplot/dist/uPlot.esm.js"},
+    {"/web/vendor/uplot/uPlot.min.css", "uplot/dist/uPlot.min.css"},
+}};
+
 std::optional<std::string_view> content_type(const fs::path& file) {
   const std::string extension = file.extension().string();
   for (const auto& [ext, type] : kContentTypes)
@@ -47,7 +53,8 @@ std::optional<std::string_view> content_type(const fs::path& file) {
 
 }  // namespace
 
-WebFiles::WebFiles(const fs::path& root) {
+WebFiles::WebFiles(const fs::path& root, const fs::path& node_modules)
+    : node_modules_(node_modules) {
   std::error_code ec;
   root_ = fs::canonical(root, ec);
   if (ec || !fs::is_directory(root_))
@@ -61,6 +68,16 @@ bool WebFiles::is_page_path(const std::string& path) {
 }
 
 ApiResponse WebFiles::get(const std::string& path) const {
+  for (const auto& [address, file] : kVendorFiles) {
+    if (path != address) continue;
+    std::error_code ec;
+    if (node_modules_.empty() || !fs::is_regular_file(node_modules_ / file, ec)) {
+      return api_error(404, "the pages' npm library is not installed (scripts/setup)", path);
+    }
+    ApiResponse response(200, read_file(node_modules_ / file));
+    response.content_type = std::string(*content_type(fs::path(file)));
+    return response;
+  }
   const std::optional<std::string_view> page = page_file(path);
   const std::string relative =
       page ? std::string(*page) : path.substr(std::min(path.size(), kPagePrefix.size()));

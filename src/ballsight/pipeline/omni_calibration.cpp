@@ -64,6 +64,26 @@ OmniCalibration calibrate_omni(OmniMethod method, std::span<const PolarSample> s
   return {std::move(model), std::move(table), errors, std::move(residuals)};
 }
 
+std::vector<SampleResidual> table_residuals(const GroundMap& table,
+                                            std::span<const MarkerPoint> points) {
+  std::vector<SampleResidual> residuals;
+  residuals.reserve(points.size());
+  for (const MarkerPoint& p : points) {
+    SampleResidual r{kNaN, kNaN, std::nullopt, false};
+    if (const std::optional<Vec2> floor = table.robot_point_cm(p.pixel)) {
+      r.predicted_distance_cm = floor->norm();
+      r.distance_error_cm = r.predicted_distance_cm - p.distance_cm;
+      r.in_range = true;
+      if (p.bearing_deg) {
+        r.bearing_error_deg =
+            wrap_deg_180(deg_from_rad(std::atan2(floor->y(), floor->x())) - *p.bearing_deg);
+      }
+    }
+    residuals.push_back(r);
+  }
+  return residuals;
+}
+
 std::vector<RadialCurve> radial_curves(const OmniGroundModel& model, int directions, int points) {
   const RadiusRange range = model.domain().valid_radius;
   std::vector<RadialCurve> curves;

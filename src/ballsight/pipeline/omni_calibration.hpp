@@ -43,6 +43,11 @@ struct SampleResidual {
   bool in_range = false;
 };
 
+/// Every point's residual under a table made before (checked against new points): the distance
+/// and bearing of the table's floor point at the point's pixel (bilinear, as at run time).
+std::vector<SampleResidual> table_residuals(const GroundMap& table,
+                                            std::span<const MarkerPoint> points);
+
 /// A direction's distance-vs-radius curve over the model's valid radius range.
 struct RadialCurve {
   double theta_deg = 0.0;  // image angle
