@@ -53,6 +53,13 @@ TEST(OmniCalibrationApi, ABadUploadIsRefusedAndChangesNothing) {
   OmniFixture f;
   expect_error(f.call("POST", "/api/v1/omni/frames", "hello, not an image"), 415, "body");
   expect_error(f.call("POST", "/api/v1/omni/frames", "\x89PNG\r\n\x1a\ntruncated"), 422, "body");
+  // A PNG header declaring 20000 x 20000 pixels (a few bytes that would decode to 1.2 GB):
+  // refused before decoding.
+  std::string huge = std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
+  huge += std::string("\0\0\x4e\x20\0\0\x4e\x20\x08\x02\0\0\0", 13);
+  const ApiResponse too_large = f.call("POST", "/api/v1/omni/frames", huge);
+  expect_error(too_large, 413, "body");
+  EXPECT_NE(too_large.body.find("20000x20000"), std::string::npos) << too_large.body;
   expect_error(f.call("POST", "/api/v1/omni/frames", R"({"file": "../etc/passwd"})"), 404,
                "body.file");
   // No frame was kept: the first good one gets the first id.

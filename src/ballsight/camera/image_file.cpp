@@ -1,5 +1,6 @@
 #include "ballsight/camera/image_file.hpp"
 
+#include <cstdint>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
@@ -15,8 +16,64 @@ std::string size_text(cv::Size size) {
 }
 }  // namespace
 
+namespace {
+
+std::uint32_t big_endian(std::string_view bytes, std::size_t at, std::size_t count) {
+  std::uint32_t v = 0;
+  for (std::size_t i = 0; i < count; ++i) v = (v << 8) | static_cast<std::uint8_t>(bytes[at + i]);
+  return v;
+}
+
+// JPEG: the frame header (SOF0-SOF15 but DHT, JPG and DAC) after the segments before it.
+std::optional<cv::Size> jpeg_size(std::string_view bytes) {
+  std::size_t at = 2;
+  while (at + 4 <= bytes.size()) {
+    if (static_cast<std::uint8_t>(bytes[at]) != 0xFF) return std::nullopt;
+    const auto marker = static_cast<std::uint8_t>(bytes[at + 1]);
+    if (marker == 0xFF) {  // fill byte
+      ++at;
+      continue;
+    }
+    if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {  // no length
+      at += 2;
+      continue;
+    }
+    const std::uint32_t length = big_endian(bytes, at + 2, 2);
+    const bool frame =
+        marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+    if (frame) {
+      if (at + 9 > bytes.size()) return std::nullopt;
+      return cv::Size(static_cast<int>(big_endian(bytes, at + 7, 2)),
+                      static_cast<int>(big_endian(bytes, at + 5, 2)));
+    }
+    if (length < 2) return std::nullopt;
+    at += 2 + length;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<cv::Size> declared_image_size(std::string_view bytes) {
+  if (bytes.starts_with("\x89PNG\r\n\x1a\n")) {
+    if (bytes.size() < 24 || bytes.substr(12, 4) != "IHDR") return std::nullopt;
+    const std::uint32_t width = big_endian(bytes, 16, 4), height = big_endian(bytes, 20, 4);
+    if (width > 0x7fffffff || height > 0x7fffffff) return std::nullopt;
+    return cv::Size(static_cast<int>(width), static_cast<int>(height));
+  }
+  if (bytes.starts_with("\xff\xd8")) return jpeg_size(bytes);
+  return std::nullopt;
+}
+
 cv::Mat decode_image_bgr(std::string_view bytes, const std::string& where,
-                         std::optional<cv::Size> expected_size) {
+                         std::optional<cv::Size> expected_size, std::size_t max_pixels) {
+  if (const std::optional<cv::Size> declared = declared_image_size(bytes)) {
+    const std::size_t pixels =
+        static_cast<std::size_t>(declared->width) * static_cast<std::size_t>(declared->height);
+    require(pixels <= max_pixels, where,
+            "image of " + size_text(*declared) + " pixels is larger than the limit of " +
+                std::to_string(max_pixels) + " pixels; not decoded");
+  }
   const std::vector<uchar> buffer(bytes.begin(), bytes.end());
   const cv::Mat image = buffer.empty() ? cv::Mat() : cv::imdecode(buffer, cv::IMREAD_COLOR);
   require(!image.empty(), where, "not a readable image (PNG, JPEG, ...)");

@@ -206,7 +206,17 @@ struct OmniCalibrationApi::Impl {
 
   /// The frame a POST asks for and where it came from.
   std::pair<cv::Mat, std::string> frame_image(const std::string& body) {
-    if (is_image_upload(body)) return {decode_image_bgr(body, "body"), "upload"};
+    if (is_image_upload(body)) {
+      if (const std::optional<cv::Size> size = declared_image_size(body);
+          size && static_cast<std::size_t>(size->width) * static_cast<std::size_t>(size->height) >
+                      options.max_image_pixels) {
+        api_fail(413,
+                 "image of " + std::to_string(size->width) + "x" + std::to_string(size->height) +
+                     " pixels is larger than " + std::to_string(options.max_image_pixels),
+                 "body");
+      }
+      return {decode_image_bgr(body, "body", std::nullopt, options.max_image_pixels), "upload"};
+    }
     if (body.empty() || body.front() != '{') {
       api_fail(415, "not a PNG or JPEG image (nor a JSON request {\"file\"} or {\"simulated\"})",
                "body");
