@@ -80,10 +80,6 @@ std::uint64_t query_number(const std::string& query, const std::string& key,
   return v;
 }
 
-void require_write(const ApiRequest& request) {
-  if (!request.authorized) api_fail(401, "writes need 'Authorization: Bearer TOKEN'", "headers");
-}
-
 /// Adds the update's seq, service id and times to `j`.
 void stamp(json& j, const NavigationUpdate& u, const ApiContext& c) {
   j["seq"] = u.seq;
@@ -462,7 +458,7 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
     return c.court_calibration ? c.court_calibration->handle(request)
                                : api_error(404, "no court calibration on this service", path);
   }
-  try {
+  return answer_or_error([&] {
     if (path.starts_with("/api/v1/cameras/")) return camera_view_route(request, path, c);
     const auto route = std::find_if(kRoutes.begin(), kRoutes.end(),
                                     [&](const ApiRoute& r) { return path == r.path; });
@@ -471,13 +467,7 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       api_fail(405, "method " + request.method + " not allowed", path);
     }
     return route->answer(request, query, c);
-  } catch (const ApiError& e) {
-    return error_response(e);
-  } catch (const InputError& e) {
-    return input_error(422, e);
-  } catch (const std::exception& e) {
-    return server_error(e);
-  }
+  });
 }
 
 bool runs_long(const std::string& target) {

@@ -72,6 +72,32 @@ ApiResponse dispatch(const ApiRequest& request, const std::vector<std::string>& 
   api_fail(404, "unknown route", split_target(request.target).path);
 }
 
+void require_write(const ApiRequest& request) {
+  if (!request.authorized) api_fail(401, "writes need 'Authorization: Bearer TOKEN'", "headers");
+}
+
+std::string query_choice(const std::string& query, const std::string& key,
+                         const std::vector<std::string>& choices) {
+  const std::string value = query_text(query, key).value_or(choices.front());
+  if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
+  std::string list;
+  for (std::size_t i = 0; i < choices.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+  api_fail(400, "expected " + list + ", got '" + value + "'", "query " + key);
+}
+
+ApiResponse answer_or_error(const std::function<ApiResponse()>& answer) {
+  try {
+    return answer();
+  } catch (const ApiError& e) {
+    return error_response(e);
+  } catch (const InputError& e) {
+    return input_error(422, e);
+  } catch (const std::exception& e) {
+    return server_error(e);
+  }
+}
+
 ApiResponse input_error(int status, const InputError& e) {
   const std::string message = e.what();
   const std::size_t colon = message.find(": ");

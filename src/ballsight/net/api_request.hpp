@@ -57,6 +57,28 @@ ApiResponse dispatch(const ApiRequest& request, const std::vector<std::string>& 
 /// not start an escape stays as it is.
 std::string percent_decoded(const std::string& text);
 
+/// A 401 ApiError unless the request carried the service's token (a write).
+void require_write(const ApiRequest& request);
+
+/// The value of `key` in the query, one of `choices` (the first when absent); a 400 ApiError
+/// naming the choices otherwise.
+std::string query_choice(const std::string& query, const std::string& key,
+                         const std::vector<std::string>& choices);
+
+/// The item of `items` (pointers to objects with an `id`) whose id reads `id`; a 404 ApiError
+/// `what` at "`name` `id`" when there is none.
+template <class Items>
+typename Items::value_type item_by_id(const Items& items, const std::string& id,
+                                      const std::string& name, const std::string& what) {
+  for (const auto& item : items)
+    if (std::to_string(item->id) == id) return item;
+  api_fail(404, what, name + " " + id);
+}
+
+/// `answer()`, or the answer to what it threw: a client's mistake (ApiError, InputError: 422) its
+/// 4xx, anything else a 500 (server_error). Never throws.
+ApiResponse answer_or_error(const std::function<ApiResponse()>& answer);
+
 /// An InputError's "where: what" as the answer {"error": what, "where": where}.
 ApiResponse input_error(int status, const InputError& e);
 /// A failure that is not the client's (a file that cannot be written, a library's exception): a

@@ -148,12 +148,9 @@ struct CourtCalibrationApi::Impl {
 
   std::shared_ptr<const Still> still(const std::string& id) {
     std::lock_guard lock(mutex);
-    for (const auto& s : stills)
-      if (std::to_string(s->id) == id) return s;
-    api_fail(404,
-             "no such still (stills are forgotten after " + std::to_string(options.max_stills) +
-                 " newer ones)",
-             "still " + id);
+    return item_by_id(stills, id, "still",
+                      "no such still (stills are forgotten after " +
+                          std::to_string(options.max_stills) + " newer ones)");
   }
 
   ApiResponse site() const {
@@ -217,9 +214,7 @@ struct CourtCalibrationApi::Impl {
   }
 
   ApiResponse pose_answer(const Still& s, const ApiRequest& request, const std::string& query) {
-    const std::string format = query_text(query, "format").value_or("json");
-    if (format != "json" && format != "yaml")
-      api_fail(400, "expected json or yaml, got '" + format + "'", "query format");
+    const std::string format = query_choice(query, "format", {"json", "yaml"});
     const auto [report, corrections] = pose(s, request);
     if (format == "yaml") return bytes_answer(camera_file_text(report.calibration), "text/yaml");
     return json_answer(
@@ -227,7 +222,7 @@ struct CourtCalibrationApi::Impl {
   }
 
   ApiResponse save(const Still& s, const ApiRequest& request) {
-    if (!request.authorized) api_fail(401, "writes need 'Authorization: Bearer TOKEN'", "headers");
+    require_write(request);
     if (!options.write_files) {
       api_fail(409, "this service has no calibration files (the simulated court): download it",
                "calibration");
@@ -242,9 +237,7 @@ struct CourtCalibrationApi::Impl {
   }
 
   ApiResponse colours(const Still& s, const ApiRequest& request, const std::string& query) {
-    const std::string format = query_text(query, "format").value_or("json");
-    if (format != "json" && format != "file")
-      api_fail(400, "expected json or file, got '" + format + "'", "query format");
+    const std::string format = query_choice(query, "format", {"json", "file"});
     const json body = parse_body(request.body);
     const auto list_at = body.find("clicks");
     if (list_at == body.end() || !list_at->is_array() || list_at->empty())
@@ -301,15 +294,7 @@ bool CourtCalibrationApi::owns(const std::string& path) {
 
 ApiResponse CourtCalibrationApi::handle(const ApiRequest& request) {
   const auto [path, query] = split_target(request.target);
-  try {
-    return impl_->route(request, path_parts(path, kPrefix), query);
-  } catch (const ApiError& e) {
-    return error_response(e);
-  } catch (const InputError& e) {
-    return input_error(422, e);
-  } catch (const std::exception& e) {
-    return server_error(e);
-  }
+  return answer_or_error([&] { return impl_->route(request, path_parts(path, kPrefix), query); });
 }
 
 }  // namespace ballsight

@@ -189,19 +189,14 @@ struct OmniCalibrationApi::Impl {
 
   std::shared_ptr<const Frame> frame(const std::string& id) {
     std::lock_guard lock(mutex);
-    for (const auto& f : frames)
-      if (std::to_string(f->id) == id) return f;
-    api_fail(404,
-             "no such frame (frames are forgotten after " + std::to_string(options.max_frames) +
-                 " newer ones)",
-             "frame " + id);
+    return item_by_id(frames, id, "frame",
+                      "no such frame (frames are forgotten after " +
+                          std::to_string(options.max_frames) + " newer ones)");
   }
 
   std::shared_ptr<FitJob> fit(const std::string& id) {
     std::lock_guard lock(mutex);
-    for (const auto& f : fits)
-      if (std::to_string(f->id) == id) return f;
-    api_fail(404, "no such fit", "fit " + id);
+    return item_by_id(fits, id, "fit", "no such fit");
   }
 
   /// The frame a POST asks for and where it came from.
@@ -397,9 +392,7 @@ struct OmniCalibrationApi::Impl {
 
   std::shared_ptr<const CheckedTable> checked_table(const std::string& id) {
     std::lock_guard lock(mutex);
-    for (const auto& t : tables)
-      if (std::to_string(t->id) == id) return t;
-    api_fail(404, "no such table", "table " + id);
+    return item_by_id(tables, id, "table", "no such table");
   }
 
   /// A table to check points against; it must be for the frame's image size.
@@ -440,9 +433,7 @@ struct OmniCalibrationApi::Impl {
   }
 
   ApiResponse table(FitJob& job, const std::string& query) {
-    const std::string format = query_text(query, "format").value_or("ballsight");
-    if (format != "ballsight" && format != "iris")
-      api_fail(400, "expected ballsight or iris, got '" + format + "'", "query format");
+    const std::string format = query_choice(query, "format", {"ballsight", "iris"});
     std::lock_guard lock(job.mutex);
     if (job.state != "done")
       api_fail(409, "the fit is " + job.state, "fit " + std::to_string(job.id));
@@ -489,16 +480,7 @@ bool OmniCalibrationApi::owns(const std::string& path) {
 
 ApiResponse OmniCalibrationApi::handle(const ApiRequest& request) {
   const auto [path, query] = split_target(request.target);
-  const std::vector<std::string> parts = path_parts(path, kPrefix);
-  try {
-    return impl_->route(request, parts, query);
-  } catch (const ApiError& e) {
-    return error_response(e);
-  } catch (const InputError& e) {
-    return input_error(422, e);
-  } catch (const std::exception& e) {
-    return server_error(e);
-  }
+  return answer_or_error([&] { return impl_->route(request, path_parts(path, kPrefix), query); });
 }
 
 }  // namespace ballsight
