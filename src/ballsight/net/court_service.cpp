@@ -87,14 +87,14 @@ std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::
     views[k].frame = frames[k];
     views[k].capture_ns = capture_ns;
     if (k < result.detections.size() && result.detections[k]) {
-      views[k].detections = *result.detections[k];
+      views[k].detections = std::move(*result.detections[k]);  // not needed past the world model
     }
   }
   std::vector<Vec2> seen;
   for (const FusedBall& b : result.world.balls) seen.push_back(b.position_m);
   hub.confirm_collected(seen);
   const std::lock_guard plan_lock(plan_mutex_);
-  last_world_ = result.world;
+  last_world_ = std::move(result.world);
   last_capture_ns_ = capture_ns;
   const auto plan_started = Clock::now();
   const std::uint64_t seq = plan_and_publish(hub);
