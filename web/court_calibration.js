@@ -3,7 +3,7 @@
 // from clicked balls. Every step through the service's API (/api/v1/court-calibration/...).
 
 import { ImageView } from './image_view.js';
-import { $, ApiError, api, circle as circleOn, download, historyKey, isTyping, makeGuarded,
+import { $, ApiError, api, circle as circleOn, download, makeGuarded, pageShortcut,
          zoomKey, zoomOnWheel } from './page_support.js';
 import { PointHistory } from './point_history.js';
 
@@ -250,10 +250,9 @@ canvas.addEventListener('pointerup', (event) => {
 zoomOnWheel(view, render);
 
 document.addEventListener('keydown', (event) => {
-  if (isTyping(event)) return;
-  const key = event.key.toLowerCase();
-  const step = historyKey(event);
-  if (!step && (event.ctrlKey || event.metaKey || event.altKey)) return;  // the browser's
+  const shortcut = pageShortcut(event);
+  if (!shortcut) return;
+  const { key, step } = shortcut;
   if (step) { if (history[step]()) guarded('pose-error', fitPose); }
   else if ((key === 'delete' || key === 'backspace') && state.selected) {
     correct(history.points.filter((c) => c.reference !== state.selected));

@@ -2,7 +2,7 @@
 // browser, every step through the service's API (/api/v1/omni/...).
 
 import { ImageView } from './image_view.js';
-import { $, ApiError, api, circle as circleOn, download, historyKey, isTyping, makeGuarded,
+import { $, ApiError, api, circle as circleOn, download, makeGuarded, pageShortcut,
          showError, zoomKey, zoomOnWheel } from './page_support.js';
 import { PointHistory } from './point_history.js';
 import { drawRadialPlot } from './radial_plot.js';
@@ -289,10 +289,9 @@ canvas.addEventListener('pointerup', (event) => {
 zoomOnWheel(view, render);
 
 document.addEventListener('keydown', (event) => {
-  if (isTyping(event)) return;
-  const key = event.key.toLowerCase();
-  const step = historyKey(event);
-  if (!step && (event.ctrlKey || event.metaKey || event.altKey)) return;  // the browser's
+  const shortcut = pageShortcut(event);
+  if (!shortcut) return;
+  const { key, step } = shortcut;
   if (step) history[step]();
   else if ((key === 'delete' || key === 'backspace') && state.selected >= 0) deleteSelected();
   else if (zoomKey(view, key)) { /* zoomed */ }

@@ -64,18 +64,25 @@ export function download(blob, name) {
   setTimeout(() => URL.revokeObjectURL(a.href), 1000);
 }
 
-/// Whether a key event is typing into a field (the page's shortcuts leave it alone).
-export function isTyping(event) {
-  return event.target instanceof HTMLSelectElement ||
-    (event.target instanceof HTMLInputElement && !['file', 'checkbox', 'button'].includes(event.target.type));
-}
-
 /// 'undo' for Ctrl+Z, 'redo' for Ctrl+Y or Ctrl+Shift+Z, else null.
-export function historyKey(event) {
+function historyKey(event) {
   if (!(event.ctrlKey || event.metaKey)) return null;
   const key = event.key.toLowerCase();
   if (key === 'z') return event.shiftKey ? 'redo' : 'undo';
   return key === 'y' ? 'redo' : null;
+}
+
+/// What a key event asks of a calibration page: {step: 'undo' | 'redo'}, or {key} (lower case)
+/// for a plain key, or null when the event is the browser's or a field's (typing into an input,
+/// other Ctrl/Alt combinations).
+export function pageShortcut(event) {
+  const typing = event.target instanceof HTMLSelectElement ||
+    (event.target instanceof HTMLInputElement && !['file', 'checkbox', 'button'].includes(event.target.type));
+  if (typing) return null;
+  const step = historyKey(event);
+  if (step) return { step };
+  if (event.ctrlKey || event.metaKey || event.altKey) return null;
+  return { key: event.key.toLowerCase() };
 }
 
 /// The wheel zooms `view` about the cursor, then `render`.
