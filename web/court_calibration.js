@@ -4,7 +4,7 @@
 
 import { ImageView } from './image_view.js';
 import { $, ApiError, api, circle as circleOn, download, makeGuarded, pageShortcut,
-         zoomKey, zoomOnWheel } from './page_support.js';
+         showError, zoomKey, zoomOnWheel } from './page_support.js';
 import { PointHistory } from './point_history.js';
 
 const API = '/api/v1/court-calibration';
@@ -41,6 +41,7 @@ function corrections() {
 async function fitPose() {
   const forList = history.points;
   const mine = ++poseRequest;
+  showError('save-error', null);  // it was about the pose before this one
   state.pose = null;
   state.posedFor = null;
   if (!state.still) return;

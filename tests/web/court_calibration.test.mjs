@@ -175,6 +175,7 @@ test("the court calibration page in Chromium", { timeout: 240_000 }, async (t) =
     const after = await posed(page, "the pose after undo");
     assert.equal(after.pose.rms_px, before.pose.rms_px);
     assert.equal(await page.isVisible("#pose-error"), false);
+    assert.equal(await page.isVisible("#save-error"), false, "the refused download's error went with its pose");
     // A still of a camera the site has not: the API's 404 naming the field.
     const answer = await fetch(`${origin}/api/v1/court-calibration/stills`, { method: "POST", body: '{"camera":"no such"}' });
     assert.equal(answer.status, 404);
