@@ -10,6 +10,7 @@
 #include "apps/run_cli.hpp"
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "example_site.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight::test {
@@ -18,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kOpenCVSamples = "/usr/share/doc/opencv-doc/examples/data";
-const fs::path kExampleSite = fs::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml";
+using test::kExampleSite;
 
 TEST(CalibrateCameraCli, OpenCVsSamplePhotos) {
   if (!fs::exists(kOpenCVSamples / "left01.jpg")) {

@@ -13,12 +13,11 @@
 #include "apps/run_cli.hpp"
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "example_site.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight::test {
 
-inline const std::filesystem::path kExampleSite =
-    std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml";
 inline const char* const kNames[] = {"ne", "se", "sw", "nw"};
 
 // Two simulated scenes, each camera's frames in its own folder, its true calibration in camC.yml,

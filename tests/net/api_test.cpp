@@ -6,6 +6,8 @@
 
 #include "ballsight/net/court_calibration_api.hpp"
 #include "ballsight/net/omni_calibration_api.hpp"
+#include "example_site.hpp"
+#include "field_cameras.hpp"
 #include "sample_update.hpp"
 
 namespace ballsight {
@@ -37,15 +39,9 @@ struct Fixture {
   OmniCalibrationApi omni;
   CourtCalibrationApi court_calibration{[] {
     CourtCalibrationApiOptions o;
-    o.site = read_site(
-        (std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml").string());
-    PinholeParams p;
-    p.width = 1280;
-    p.height = 720;
-    p.fx = p.fy = 900;
-    p.cx = 639.5;
-    p.cy = 359.5;
-    o.intrinsics.assign(o.site.cameras.size(), p);
+    o.site = read_site(test::kExampleSite.string());
+    o.intrinsics.assign(o.site.cameras.size(),
+                        test::overhead_camera({1280, 720}, 900.0, 5.0).camera.params());
     o.latest_frame = [](std::size_t) { return std::nullopt; };  // no frame yet
     return o;
   }()};

@@ -9,6 +9,7 @@
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
+#include "example_site.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
@@ -16,8 +17,7 @@ namespace {
 
 using nlohmann::json;
 
-const std::filesystem::path kExampleSite =
-    std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml";
+using test::kExampleSite;
 
 // The example site (the simulator's court and reference balls), its cameras' frames rendered
 // from a simulated scene, each camera's true intrinsics in a calibration file of a temporary

@@ -6,12 +6,12 @@
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
+#include "example_site.hpp"
 
 namespace ballsight {
 namespace {
 
-const std::filesystem::path kExampleSite =
-    std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml";
+using test::kExampleSite;
 
 std::vector<FieldCamera> rig_cameras(const sim::CourtRig& rig) {
   std::vector<FieldCamera> cameras;

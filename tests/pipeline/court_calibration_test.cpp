@@ -12,14 +12,14 @@
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
+#include "example_site.hpp"
 #include "http_file_server.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
 namespace {
 
-const std::filesystem::path kExampleSite =
-    std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml";
+using test::kExampleSite;
 
 CameraCalibration true_intrinsics(const sim::CourtCamera& camera) {
   CameraCalibration calibration;

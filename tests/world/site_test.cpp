@@ -5,12 +5,12 @@
 #include <string>
 
 #include "ballsight/core/error.hpp"
+#include "example_site.hpp"
 
 namespace ballsight {
 namespace {
 
-const std::filesystem::path kExample =
-    std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "docs" / "examples" / "site.yml";
+const std::filesystem::path& kExample = test::kExampleSite;
 
 TEST(Site, TheDocumentedExampleReads) {
   const Site site = read_site(kExample);
