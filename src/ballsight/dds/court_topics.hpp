@@ -1,0 +1,63 @@
+#pragma once
+// A court's navigation updates on DDS, as ROS 2 topics under the participant's namespace:
+// `robot_pose` (geometry_msgs/PoseStamped), `balls` (geometry_msgs/PoseArray), `ball_estimates`
+// (ballsight_msgs/BallArray), `route` (nav_msgs/Path) and `diagnostics`
+// (diagnostic_msgs/DiagnosticArray, once a second). The balls and the route are transient-local,
+// keep last 1: a subscriber that joins late gets the latest at once. Every update the hub
+// publishes is written from a thread of this object's (the hub's listener only hands it over).
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "ballsight/dds/topic_io.hpp"
+#include "ballsight/net/navigation_hub.hpp"
+
+namespace ballsight::dds {
+
+struct CourtTopicsOptions {
+  double ball_radius_m = 0.0335;
+  std::string diagnostics_prefix = "ballsight";  // status names: "<prefix>/camera/<name>", ...
+  std::chrono::milliseconds health_period{1000};
+};
+
+class CourtTopics {
+ public:
+  /// Writes `hub`'s updates and `health()` (CourtService::health()) until destroyed; `hub` and
+  /// `health` must outlive this.
+  CourtTopics(const Participant& participant, NavigationHub& hub,
+              std::function<nlohmann::json()> health, const CourtTopicsOptions& options = {});
+  ~CourtTopics();
+  CourtTopics(const CourtTopics&) = delete;
+  CourtTopics& operator=(const CourtTopics&) = delete;
+
+  /// Updates written so far.
+  std::uint64_t written() const { return written_; }
+
+ private:
+  void run();
+  void write(const NavigationUpdate& update);
+  void write_health();
+
+  NavigationHub& hub_;
+  std::function<nlohmann::json()> health_;
+  CourtTopicsOptions options_;
+  Writer<PoseStampedMsg> robot_pose_;
+  Writer<PoseArrayMsg> balls_;
+  Writer<BallArrayMsg> ball_estimates_;
+  Writer<PathMsg> route_;
+  Writer<DiagnosticArrayMsg> diagnostics_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::uint64_t pending_seq_ = 0;  // guarded by mutex_
+  bool stop_ = false;              // guarded by mutex_
+  std::atomic<std::uint64_t> written_{0};
+  int listener_ = 0;
+  std::thread thread_;
+};
+
+}  // namespace ballsight::dds
