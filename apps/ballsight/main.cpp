@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   ballsight::app::add_plan_command(app);
   ballsight::app::add_serve_command(app);
   ballsight::app::add_robot_command(app);
+  ballsight::app::add_node_commands(app);
 
   try {
     app.parse(argc, argv);

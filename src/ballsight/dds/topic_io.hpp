@@ -52,9 +52,9 @@ class Reader {
   Reader(const Participant& participant, const std::string& name, const TopicQos& qos = {})
       : reader_(make_endpoint(participant, MessageType<Msg>::descriptor(), name,
                               MessageType<Msg>::ros_name, qos, false)),
-        waitset_(dds_create_waitset(participant.handle())) {
-    const dds_entity_t condition = dds_create_readcondition(reader_, DDS_ANY_STATE);
-    check_dds(dds_waitset_attach(waitset_, condition, 0), "DDS wait set");
+        condition_(check_dds(dds_create_readcondition(reader_, DDS_ANY_STATE), "DDS condition")),
+        waitset_(check_dds(dds_create_waitset(participant.handle()), "DDS wait set")) {
+    check_dds(dds_waitset_attach(waitset_, condition_, 0), "DDS wait set");
   }
   ~Reader() {
     dds_delete(waitset_);
@@ -91,9 +91,12 @@ class Reader {
   /// XCDR1 body), oldest first.
   std::vector<std::vector<std::uint8_t>> take_serialized() { return take_cdr(reader_); }
   int matched_writers() const { return matched_count(reader_, false); }
+  /// Triggered while a sample is there to take (to wait on several readers at once).
+  dds_entity_t condition() const { return condition_; }
 
  private:
   dds_entity_t reader_;
+  dds_entity_t condition_;
   dds_entity_t waitset_;
 };
 

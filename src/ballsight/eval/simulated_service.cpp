@@ -12,12 +12,10 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/court_eval_calibration.hpp"
 #include "ballsight/eval/loop_truth.hpp"
+#include "ballsight/eval/simulated_court.hpp"
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
-#include "ballsight/sim/court_renderer.hpp"
-#include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
-#include "ballsight/sim/seeding.hpp"
 
 namespace ballsight {
 namespace {
@@ -48,11 +46,8 @@ void SimulatedServiceOptions::validate() const {
 
 struct SimulatedCourtService::Impl {
   SimulatedServiceOptions options;
-  sim::CourtRig rig;
-  Site site;
+  std::unique_ptr<SimulatedCourt> court;
   std::unique_ptr<sim::CourtWorld> world;
-  std::vector<sim::CourtRenderer> renderers;
-  std::vector<cv::Mat> lit;  // each camera's background under the scene's (fixed) lighting
   std::unique_ptr<UpdatePublisher> publisher;
   std::atomic<double> render_ms{0.0};
 
@@ -82,13 +77,10 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   options.validate();
   Impl& s = *impl_;
   s.options = options;
-  s.rig = sim::make_court_rig({}, {}, sim::derive_seed(options.seed, 0));
-  s.site = simulated_site(s.rig);
-  sim::CourtScenarioOptions scenario;
-  scenario.ball_count = options.balls;
-  scenario.cluster_share = options.cluster_share;
-  sim::CourtScene scene =
-      sim::make_court_scene(s.rig.court, scenario, sim::derive_seed(options.seed, 1));
+  s.court = std::make_unique<SimulatedCourt>(
+      SimulatedCourtOptions{options.seed, options.balls, options.cluster_share});
+  const Site& site = s.court->site();
+  sim::CourtScene scene = s.court->scene();
   for (const sim::SceneSphere& b : scene.balls) {
     if (b.kind == sim::ObjectKind::tennis_ball) {
       s.scene_balls.push_back({b.id, b.center_in_field.head<2>()});
@@ -105,14 +97,14 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
                 std::to_string(s.scene_balls.size()) + " of this scene (--balls)");
   }
   sim::DriveLimits limits;
-  limits.max_speed_mps = s.site.robot.max_speed_mps;
-  limits.max_turn_rate_dps = s.site.robot.turn_rate_dps;
-  limits.max_accel_mps2 = s.site.robot.max_accel_mps2;
-  limits.max_turn_accel_dps2 = s.site.robot.turn_accel_dps2;
-  const sim::RobotFootprint footprint = sim::RobotFootprint::of(
-      scene.robot, s.site.robot.collector_x_m, s.site.robot.collector_width_m);
-  scene.effects.quantile_noise = true;  // 40 views a simulated second
-  s.world = std::make_unique<sim::CourtWorld>(std::move(scene), s.rig.court, limits, footprint);
+  limits.max_speed_mps = site.robot.max_speed_mps;
+  limits.max_turn_rate_dps = site.robot.turn_rate_dps;
+  limits.max_accel_mps2 = site.robot.max_accel_mps2;
+  limits.max_turn_accel_dps2 = site.robot.turn_accel_dps2;
+  const sim::RobotFootprint footprint =
+      sim::RobotFootprint::of(scene.robot, site.robot.collector_x_m, site.robot.collector_width_m);
+  s.world =
+      std::make_unique<sim::CourtWorld>(std::move(scene), s.court->rig().court, limits, footprint);
   if (s.resumed && !s.resumed->ticks.empty()) {
     std::vector<int> gone;
     for (const TruthTick& t : s.resumed->ticks) {
@@ -128,25 +120,19 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   s.balls_left = s.world->balls_left();
   s.start = s.world->motion().pose;
   s.robot = s.world->motion().pose;
-  std::vector<FieldCamera> cameras;
-  for (const sim::CourtCamera& c : s.rig.cameras) {
-    s.renderers.emplace_back(c, s.rig.court);
-    s.lit.push_back(s.renderers.back().lit_background(s.world->scene().lighting,
-                                                      s.world->scene().leaves));  // one sun
-    cameras.push_back({c.camera, c.camera_from_field});
-  }
+  std::vector<FieldCamera> cameras = s.court->cameras();
   s.publisher = std::make_unique<UpdatePublisher>(
-      s.site,
+      site,
       options.report_pipeline
-          ? make_seed_pipeline(std::move(cameras), seed_options_for_site(s.site))
-          : make_ballsight_pipeline(std::move(cameras), service_pipeline_options(s.site)),
+          ? make_seed_pipeline(std::move(cameras), seed_options_for_site(site))
+          : make_ballsight_pipeline(std::move(cameras), service_pipeline_options(site)),
       options.planner);
 }
 
 SimulatedCourtService::~SimulatedCourtService() = default;
 
 const Site& SimulatedCourtService::site() const {
-  return impl_->site;
+  return impl_->court->site();
 }
 
 nlohmann::json SimulatedCourtService::drive(std::uint64_t seq, double speed_mps,
@@ -195,23 +181,21 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       });
     }
     // The cameras rendered side by side (the pipeline after them is a few ms).
-    std::vector<cv::Mat> frames(s.renderers.size());
+    std::vector<cv::Mat> frames(s.court->cameras().size());
     const sim::CourtScene& scene = s.world->scene();
     const std::optional<CameraFailure>& failure = s.options.fail_camera;
     const bool failed = failure && s.world->time_s() >= failure->at_s;
     if (failed && !s.camera_failed) {
-      record(event_record(
-          {s.world->time_s(), s.site.cameras[static_cast<std::size_t>(failure->camera)].name +
-                                  " failed: no more frames"}));
+      record(event_record({s.world->time_s(),
+                           s.court->site().cameras[static_cast<std::size_t>(failure->camera)].name +
+                               " failed: no more frames"}));
     }
     s.camera_failed = failed;
     cv::parallel_for_(cv::Range(0, static_cast<int>(frames.size())), [&](const cv::Range& r) {
       for (int c = r.start; c < r.end; ++c) {
         const auto k = static_cast<std::size_t>(c);
         if (failed && c == failure->camera) continue;  // an empty frame: the camera is gone
-        frames[k] = s.renderers[k]
-                        .render(scene, sim::derive_seed(s.options.seed + tick, k + 2), s.lit[k])
-                        .bgr;
+        frames[k] = s.court->render(k, scene, tick);
       }
     });
     const std::int64_t capture_ns = utc_now_ns();  // the frames exist from now: "captured"
@@ -283,7 +267,7 @@ nlohmann::json SimulatedCourtService::health() const {
   const Impl& s = *impl_;
   nlohmann::json h = s.publisher->health();
   nlohmann::json cameras = nlohmann::json::array();
-  for (const SiteCamera& c : s.site.cameras) {
+  for (const SiteCamera& c : s.court->site().cameras) {
     cameras.push_back({{"name", c.name}, {"state", "simulated"}, {"frames", h["frame_sets"]}});
   }
   if (s.camera_failed) {

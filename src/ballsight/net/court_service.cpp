@@ -70,11 +70,29 @@ void UpdatePublisher::replace_pipeline(std::unique_ptr<CourtPipeline> pipeline) 
 
 std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
                                        NavigationHub& hub) {
+  return publish_result(frames, capture_ns, hub,
+                        [&](CourtPipeline& pipeline) { return pipeline.process(frames); });
+}
+
+std::uint64_t UpdatePublisher::publish_detections(const CameraDetectionLists& detections,
+                                                  std::int64_t capture_ns, NavigationHub& hub) {
+  return publish_result({}, capture_ns, hub, [&](CourtPipeline& pipeline) {
+    FrameSetResult result;
+    result.detections = detections;
+    result.camera_errors.resize(detections.size());
+    result.world = pipeline.fuse(detections);
+    return result;
+  });
+}
+
+std::uint64_t UpdatePublisher::publish_result(
+    const std::vector<cv::Mat>& frames, std::int64_t capture_ns, NavigationHub& hub,
+    const std::function<FrameSetResult(CourtPipeline&)>& run) {
   const auto started = Clock::now();
   FrameSetResult result;
   try {
     const std::lock_guard pipeline_lock(pipeline_mutex_);
-    result = pipeline_->process(frames);
+    result = run(*pipeline_);
   } catch (const std::exception& e) {  // a bad frame must not end the service: say so, go on
     const std::lock_guard lock(mutex_);
     ++failed_;

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -70,6 +71,10 @@ class UpdatePublisher {
   /// publishes nothing (0) and is counted (health).
   std::uint64_t publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
                         NavigationHub& hub);
+  /// The same from detections made elsewhere (camera nodes): one list per camera in camera
+  /// order, nullopt for a camera without a usable frame; only the pipeline's fusion runs here.
+  std::uint64_t publish_detections(const CameraDetectionLists& detections, std::int64_t capture_ns,
+                                   NavigationHub& hub);
   /// The last world model planned again and published; nothing before the first frame set.
   void republish(NavigationHub& hub);
 
@@ -88,6 +93,9 @@ class UpdatePublisher {
   nlohmann::json health() const;
 
  private:
+  std::uint64_t publish_result(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
+                               NavigationHub& hub,
+                               const std::function<FrameSetResult(CourtPipeline&)>& run);
   std::uint64_t plan_and_publish(NavigationHub& hub);  // plan_mutex_ held; the update's seq
 
   const Site& site_;

@@ -21,29 +21,28 @@ std::string frame_problem(const cv::Mat& frame, const FieldCamera& camera) {
   return "";
 }
 
-namespace {
-
-// Runs `detect(camera, frame)` for every usable frame, one std::async task per camera.
-template <typename Detect>
-FrameSetResult detect_all(const std::vector<cv::Mat>& frames,
-                          const std::vector<FieldCamera>& cameras, Detect&& detect) {
-  require(frames.size() == cameras.size(), "court pipeline",
-          "expected " + std::to_string(cameras.size()) + " frames (one per camera), got " +
+FrameSetResult CourtPipeline::process(const std::vector<cv::Mat>& frames) {
+  const std::vector<FieldCamera>& all = cameras();
+  require(frames.size() == all.size(), "court pipeline",
+          "expected " + std::to_string(all.size()) + " frames (one per camera), got " +
               std::to_string(frames.size()));
   FrameSetResult result;
-  result.detections.resize(cameras.size());
-  result.camera_errors.resize(cameras.size());
-  std::vector<std::future<std::vector<PixelDetection>>> tasks(cameras.size());
-  for (size_t c = 0; c < cameras.size(); ++c) {
-    result.camera_errors[c] = frame_problem(frames[c], cameras[c]);
+  result.detections.resize(all.size());
+  result.camera_errors.resize(all.size());
+  std::vector<std::future<std::vector<PixelDetection>>> tasks(all.size());
+  for (size_t c = 0; c < all.size(); ++c) {
+    result.camera_errors[c] = frame_problem(frames[c], all[c]);
     if (result.camera_errors[c].empty())
       tasks[c] =
-          std::async(std::launch::async, [&detect, &frames, c] { return detect(c, frames[c]); });
+          std::async(std::launch::async, [this, &frames, c] { return detect(c, frames[c]); });
   }
-  for (size_t c = 0; c < cameras.size(); ++c)
+  for (size_t c = 0; c < all.size(); ++c)
     if (tasks[c].valid()) result.detections[c] = tasks[c].get();
+  result.world = fuse(result.detections);
   return result;
 }
+
+namespace {
 
 class SeedPipeline final : public CourtPipeline {
  public:
@@ -53,12 +52,11 @@ class SeedPipeline final : public CourtPipeline {
     options_.world.validate();
   }
 
-  FrameSetResult process(const std::vector<cv::Mat>& frames) override {
-    FrameSetResult result = detect_all(frames, cameras_, [this](size_t, const cv::Mat& frame) {
-      return detect_seed(frame, options_.detector);
-    });
-    result.world = build_seed_world_model(cameras_, result.detections, options_.world);
-    return result;
+  std::vector<PixelDetection> detect(std::size_t, const cv::Mat& frame) override {
+    return detect_seed(frame, options_.detector);
+  }
+  WorldModel fuse(const CameraDetectionLists& detections) override {
+    return build_seed_world_model(cameras_, detections, options_.world);
   }
   CourtMethod method() const override { return CourtMethod::seed; }
   const std::vector<FieldCamera>& cameras() const override { return cameras_; }
@@ -76,13 +74,13 @@ class BallsightPipeline final : public CourtPipeline {
     for (const FieldCamera& camera : cameras_) detectors_.emplace_back(camera, options_.detector);
   }
 
-  FrameSetResult process(const std::vector<cv::Mat>& frames) override {
-    FrameSetResult result = detect_all(frames, cameras_, [this](size_t c, const cv::Mat& frame) {
-      return detectors_[c].detect(frame);
-    });
-    result.world = build_world_model(cameras_, result.detections, options_.world);
-    if (options_.remember_hidden_balls) hidden_.apply(result.world);
-    return result;
+  std::vector<PixelDetection> detect(std::size_t camera, const cv::Mat& frame) override {
+    return detectors_[camera].detect(frame);
+  }
+  WorldModel fuse(const CameraDetectionLists& detections) override {
+    WorldModel world = build_world_model(cameras_, detections, options_.world);
+    if (options_.remember_hidden_balls) hidden_.apply(world);
+    return world;
   }
   CourtMethod method() const override { return CourtMethod::ballsight; }
   const std::vector<FieldCamera>& cameras() const override { return cameras_; }

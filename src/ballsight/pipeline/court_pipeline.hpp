@@ -25,9 +25,11 @@ enum class CourtMethod { seed, ballsight };
 /// "seed", "ballsight".
 std::string court_method_name(CourtMethod method);
 
+/// Per camera in camera order: its detections, or nullopt when its frame was missing or unusable.
+using CameraDetectionLists = std::vector<std::optional<std::vector<PixelDetection>>>;
+
 struct FrameSetResult {
-  /// Per camera: its detections, or nullopt when its frame was missing or unusable.
-  std::vector<std::optional<std::vector<PixelDetection>>> detections;
+  CameraDetectionLists detections;
   /// Per camera: why its frame was not used (empty when it was).
   std::vector<std::string> camera_errors;
   WorldModel world;
@@ -38,8 +40,15 @@ class CourtPipeline {
   virtual ~CourtPipeline() = default;
 
   /// One frame per camera in camera order; an empty Mat is a missing frame. A frame that is not
-  /// 8-bit BGR of its camera's calibrated size is not used, and camera_errors says why.
-  virtual FrameSetResult process(const std::vector<cv::Mat>& frames) = 0;
+  /// 8-bit BGR of its camera's calibrated size is not used, and camera_errors says why. The
+  /// cameras are detected in parallel (one task each), then fused.
+  FrameSetResult process(const std::vector<cv::Mat>& frames);
+  /// The first half on its own (a camera node): camera `camera`'s detections in `frame`, which
+  /// frame_problem() accepts. Calls for different cameras may run at once.
+  virtual std::vector<PixelDetection> detect(std::size_t camera, const cv::Mat& frame) = 0;
+  /// The second half on its own (a court node): the world model from one detection list per
+  /// camera in camera order (nullopt: no usable frame of that camera).
+  virtual WorldModel fuse(const CameraDetectionLists& detections) = 0;
   virtual CourtMethod method() const = 0;
   virtual const std::vector<FieldCamera>& cameras() const = 0;
 };

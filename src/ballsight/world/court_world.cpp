@@ -45,10 +45,6 @@ std::vector<cv::Point2f> robot_outline_px(const FieldCamera& camera, const Pose2
 
 namespace {
 
-double center_height(ObjectClass object, const CourtWorldOptions& options) {
-  return object == ObjectClass::ball ? options.ball_radius_m : options.robot.marker_height_m;
-}
-
 // A ball whose image touches the robot's may be partly hidden by it: its centre can be off by up
 // to about its radius, so its expected error grows by that much.
 void account_for_robot(const std::vector<cv::Point2f>& outline, PixelDetection& detection) {
@@ -62,6 +58,10 @@ void account_for_robot(const std::vector<cv::Point2f>& outline, PixelDetection& 
 
 }  // namespace
 
+double object_center_height_m(ObjectClass object, const CourtWorldOptions& options) {
+  return object == ObjectClass::ball ? options.ball_radius_m : options.robot.marker_height_m;
+}
+
 WorldModel build_world_model(
     const std::vector<FieldCamera>& cameras,
     const std::vector<std::optional<std::vector<PixelDetection>>>& detections,
@@ -72,8 +72,9 @@ WorldModel build_world_model(
   std::vector<FieldObservation> fronts, backs, balls;
   const auto place = [&](size_t camera, int index, const PixelDetection& detection,
                          std::vector<FieldObservation>& into) {
-    std::optional<FieldObservation> o = observe_on_plane(
-        cameras[camera], detection, center_height(detection.object, options), options.noise);
+    std::optional<FieldObservation> o =
+        observe_on_plane(cameras[camera], detection,
+                         object_center_height_m(detection.object, options), options.noise);
     if (!o || !options.area.contains(o->position_m)) return;
     o->camera = static_cast<int>(camera);
     o->detection = index;

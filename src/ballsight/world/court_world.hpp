@@ -37,6 +37,9 @@ struct CourtWorldOptions {
   void validate() const;
 };
 
+/// How high an object's centre is above the floor: a ball's radius, the robot markers' height.
+double object_center_height_m(ObjectClass object, const CourtWorldOptions& options);
+
 /// Detections of one frame set: `detections[i]` from `cameras[i]`, nullopt for a camera whose
 /// frame is missing (it is then not among the model's cameras).
 WorldModel build_world_model(

@@ -1,0 +1,230 @@
+// `ballsight camera-node` and `ballsight court-node`: the court pipeline spread over processes
+// on DDS (docs/ros2.md). A camera node detects one camera's frames and writes its detections; a
+// court node fuses its camera nodes' detections (or, with --sim alone, renders the simulated
+// court's cameras itself), plans, and writes the court's ROS 2 topics.
+
+#include <signal.h>
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/dds/camera_node.hpp"
+#include "ballsight/dds/court_node.hpp"
+#include "ballsight/dds/court_topics.hpp"
+#include "ballsight/eval/simulated_court.hpp"
+#include "ballsight/eval/simulated_service.hpp"
+#include "ballsight/pipeline/capture.hpp"
+#include "ballsight/pipeline/site_setup.hpp"
+#include "commands.hpp"
+#include "option_parsing.hpp"
+
+namespace ballsight::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct NodeArgs {
+  std::string site;
+  bool sim = false;
+  SimulatedServiceOptions service;  // the simulated court: seed, balls, rate
+  int balls = -1;
+  dds::DomainOptions domain;
+  int domain_id = -1;  // -1: ROS_DOMAIN_ID or 0
+  double duration_s = 0.0;
+  std::string camera;         // camera-node
+  bool camera_nodes = false;  // court-node --sim: fuse camera nodes' detections
+
+  dds::DomainOptions domain_options() const {
+    dds::DomainOptions options = domain;
+    if (domain_id >= 0) options.domain = domain_id;
+    return options;
+  }
+  SimulatedCourtOptions court_options() const {
+    SimulatedCourtOptions options{service.seed, service.balls, service.cluster_share};
+    if (balls >= 0) options.balls = balls;
+    return options;
+  }
+};
+
+void add_node_options(CLI::App& cmd, NodeArgs& args) {
+  cmd.add_option("--site", args.site, "Site file: its cameras and their calibration");
+  cmd.add_flag("--sim", args.sim, "The built-in simulated court (the scenes of serve --sim)");
+  add_seed_option(cmd, args.service.seed, "Simulated court: seed of the rig and the scene");
+  cmd.add_option("--balls", args.balls, "Simulated court: tennis balls on it (default 20-60)");
+  cmd.add_option("--rate", args.service.vision_hz, "Simulated court: frames per second")
+      ->capture_default_str();
+  cmd.add_option("--namespace", args.domain.ns,
+                 "ROS 2 namespace of the court's topics (court1: /court1/...)");
+  cmd.add_option("--domain", args.domain_id, "DDS domain id (default: ROS_DOMAIN_ID, else 0)");
+  cmd.add_flag("--loopback", args.domain.loopback,
+               "DDS on this machine only (127.0.0.1, no multicast; as ROS 2's LOCALHOST range)");
+  cmd.add_option("--duration", args.duration_s, "Stop after this many seconds (0: on a signal)")
+      ->capture_default_str();
+}
+
+void validate(const NodeArgs& args) {
+  require(args.sim != !args.site.empty(), "--site",
+          "give the site file (--site SITE.yml) or --sim, not both");
+  require(args.duration_s >= 0.0, "--duration", "must not be negative");
+  args.service.validate();
+  args.domain_options().validate();
+}
+
+// Blocks SIGINT and SIGTERM in every thread started after it; `until_stopped` waits for one (or
+// for the duration) with them.
+sigset_t block_stop_signals() {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  return signals;
+}
+
+void until_stopped(const sigset_t& signals, double duration_s, const std::atomic<bool>& failed) {
+  const auto started = Clock::now();
+  const timespec tick{0, 100'000'000};
+  while (!failed && sigtimedwait(&signals, nullptr, &tick) <= 0) {
+    if (duration_s > 0.0 &&
+        std::chrono::duration<double>(Clock::now() - started).count() >= duration_s)
+      return;
+  }
+}
+
+// Runs `work(stop)` on a thread until a signal or the duration; rethrows what it threw.
+template <class Work>
+void run_until_stopped(const NodeArgs& args, Work&& work) {
+  const sigset_t signals = block_stop_signals();
+  std::atomic<bool> stop{false}, failed{false};
+  std::exception_ptr failure;
+  std::thread thread([&] {
+    try {
+      work(stop);
+    } catch (...) {
+      failure = std::current_exception();
+      failed = true;
+    }
+  });
+  until_stopped(signals, args.duration_s, failed);
+  stop = true;
+  thread.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+std::string topic_prefix(const dds::DomainOptions& options) {
+  return "/" + (options.ns.empty() ? "" : options.ns + "/");
+}
+
+void run_camera_node(const NodeArgs& args) {
+  validate(args);
+  require(!args.camera.empty(), "--camera", "name the camera (--camera NAME)");
+  const std::unique_ptr<SimulatedCourt> court =
+      args.sim ? std::make_unique<SimulatedCourt>(args.court_options()) : nullptr;
+  const Site site = court ? court->site() : read_site(args.site);
+  const std::size_t index = dds::site_camera_index(site, args.camera);
+  const dds::Participant participant(args.domain_options());
+  dds::CameraNode node(participant, site, court ? court->cameras() : site_field_cameras(site),
+                       index);
+  std::cout << "ballsight camera-node: " << node.camera_name() << " -> "
+            << topic_prefix(args.domain_options()) << dds::detections_topic(node.camera_name())
+            << " (DDS domain " << dds::domain_id(args.domain_options()) << ")" << std::endl;
+  std::uint64_t frames = 0;
+  run_until_stopped(args, [&](const std::atomic<bool>& stop) {
+    if (court) {
+      // Ticks of the wall clock: camera nodes of one court render and stamp the same tick alike.
+      const auto period_ns = static_cast<std::int64_t>(1e9 / args.service.vision_hz);
+      while (!stop) {
+        const std::int64_t tick = utc_now_ns() / period_ns + 1;
+        std::this_thread::sleep_for(std::chrono::nanoseconds(tick * period_ns - utc_now_ns()));
+        const cv::Mat frame =
+            court->render(index, court->scene(), static_cast<std::uint64_t>(tick));
+        node.publish(frame, static_cast<std::uint64_t>(tick), tick * period_ns);
+        ++frames;
+      }
+      return;
+    }
+    CameraCapture capture(args.camera, site_frame_source(site.cameras[index]), CaptureOptions{},
+                          [](const std::string& message) {
+                            std::cerr << "ballsight camera-node: " << message << "\n";
+                          });
+    capture.start();
+    while (!stop) {
+      if (std::optional<Frame> frame = capture.frames().pop(std::chrono::milliseconds(100))) {
+        const auto age =
+            std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - frame->timestamp);
+        node.publish(frame->image, frame->sequence, utc_now_ns() - age.count());
+        ++frames;
+      }
+    }
+  });
+  std::cout << "ballsight camera-node: stopped after " << frames << " frames" << std::endl;
+}
+
+void run_court_node(const NodeArgs& args) {
+  validate(args);
+  require(!args.camera_nodes || args.sim, "--camera-nodes",
+          "is for --sim (a site's court node always fuses its camera nodes)");
+  const dds::Participant participant(args.domain_options());
+  std::unique_ptr<CourtService> service;
+  if (args.sim && !args.camera_nodes) {
+    SimulatedServiceOptions options = args.service;
+    if (args.balls >= 0) options.balls = args.balls;
+    service = std::make_unique<SimulatedCourtService>(options);
+  } else {
+    dds::CourtNodeOptions options;
+    if (args.sim) {
+      const SimulatedCourt court(args.court_options());
+      service = std::make_unique<dds::CameraFedCourtService>(participant, court.site(),
+                                                             court.cameras(), options);
+    } else {
+      Site site = read_site(args.site);
+      std::vector<FieldCamera> cameras = site_field_cameras(site);
+      service = std::make_unique<dds::CameraFedCourtService>(participant, std::move(site),
+                                                             std::move(cameras), options);
+    }
+  }
+  NavigationHub hub;
+  dds::CourtTopicsOptions topics_options;
+  topics_options.ball_radius_m = service->site().ball_radius_m;
+  topics_options.diagnostics_prefix =
+      "ballsight" + (args.domain.ns.empty() ? "" : "/" + args.domain.ns);
+  const dds::CourtTopics topics(
+      participant, hub, [&] { return service->health(); }, topics_options);
+  std::cout << "ballsight court-node: " << topic_prefix(args.domain_options())
+            << "{robot_pose,balls,ball_estimates,route,diagnostics} (DDS domain "
+            << dds::domain_id(args.domain_options()) << ")" << std::endl;
+  run_until_stopped(args, [&](const std::atomic<bool>& stop) { service->run(hub, stop); });
+  std::cout << "ballsight court-node: stopped after " << topics.written() << " updates"
+            << std::endl;
+}
+
+}  // namespace
+
+void add_node_commands(CLI::App& app) {
+  auto camera = std::make_shared<NodeArgs>();
+  CLI::App* camera_cmd = app.add_subcommand(
+      "camera-node",
+      "One court camera on DDS: its frames detected, the detections written for the court node");
+  add_node_options(*camera_cmd, *camera);
+  camera_cmd->add_option("--camera", camera->camera, "The site's name of the camera, or its index")
+      ->required();
+  camera_cmd->callback([camera] { run_camera_node(*camera); });
+
+  auto court = std::make_shared<NodeArgs>();
+  CLI::App* court_cmd = app.add_subcommand(
+      "court-node",
+      "A court on DDS: its camera nodes' detections fused, planned, and published as ROS 2 "
+      "topics (robot_pose, balls, ball_estimates, route, diagnostics)");
+  add_node_options(*court_cmd, *court);
+  court_cmd->add_flag("--camera-nodes", court->camera_nodes,
+                      "Simulated court: fuse camera nodes (camera-node --sim, same seed) instead "
+                      "of rendering the cameras here");
+  court_cmd->callback([court] { run_court_node(*court); });
+}
+
+}  // namespace ballsight::app

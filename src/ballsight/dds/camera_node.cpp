@@ -1,0 +1,46 @@
+#include "ballsight/dds/camera_node.hpp"
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/pipeline/site_setup.hpp"
+#include "ballsight/world/field_observation.hpp"
+
+namespace ballsight::dds {
+
+std::size_t site_camera_index(const Site& site, const std::string& name) {
+  std::string names;
+  for (std::size_t k = 0; k < site.cameras.size(); ++k) {
+    if (site.cameras[k].name == name || std::to_string(k) == name) return k;
+    names += (names.empty() ? "'" : ", '") + site.cameras[k].name + "'";
+  }
+  throw InputError("--camera: the site has no camera '" + name + "' (it has " + names +
+                   ", or give its index from 0)");
+}
+
+CameraNode::CameraNode(const Participant& participant, const Site& site,
+                       std::vector<FieldCamera> cameras, std::size_t camera)
+    : camera_(camera),
+      name_(site.cameras.at(camera).name),
+      field_camera_(cameras.at(camera)),
+      world_(service_pipeline_options(site).world),
+      pipeline_(make_ballsight_pipeline(std::move(cameras), service_pipeline_options(site))),
+      writer_(participant, detections_topic(name_)) {}
+
+CameraFrameDetections CameraNode::publish(const cv::Mat& frame, std::uint64_t frame_index,
+                                          std::int64_t capture_ns) {
+  CameraFrameDetections out{name_, frame_index, capture_ns, frame_problem(frame, field_camera_),
+                            {},    {}};
+  if (out.error.empty()) out.detections = pipeline_->detect(camera_, frame);
+  for (const PixelDetection& d : out.detections) {
+    const double height_m = object_center_height_m(d.object, world_);
+    const std::optional<FieldObservation> o =
+        observe_on_plane(field_camera_, d, height_m, world_.noise);
+    out.ground.push_back(
+        o ? std::optional<Vec3>(Vec3(o->position_m.x(), o->position_m.y(), height_m))
+          : std::nullopt);
+  }
+  MessageArena arena;
+  writer_.write(camera_detections_message(out, arena));
+  return out;
+}
+
+}  // namespace ballsight::dds
