@@ -17,19 +17,23 @@ std::size_t site_camera_index(const Site& site, const std::string& name) {
 }
 
 CameraNode::CameraNode(const Participant& participant, const Site& site,
-                       std::vector<FieldCamera> cameras, std::size_t camera)
-    : camera_(camera),
-      name_(site.cameras.at(camera).name),
+                       const std::vector<FieldCamera>& cameras, std::size_t camera,
+                       const BallsightPipelineOptions& options)
+    : name_(site.cameras.at(camera).name),
       field_camera_(cameras.at(camera)),
-      world_(service_pipeline_options(site).world),
-      pipeline_(make_ballsight_pipeline(std::move(cameras), service_pipeline_options(site))),
+      world_(options.world),
+      pipeline_(make_ballsight_pipeline({field_camera_}, options)),  // this camera's detector
       writer_(participant, detections_topic(name_)) {}
+
+CameraNode::CameraNode(const Participant& participant, const Site& site,
+                       const std::vector<FieldCamera>& cameras, std::size_t camera)
+    : CameraNode(participant, site, cameras, camera, service_pipeline_options(site)) {}
 
 CameraFrameDetections CameraNode::publish(const cv::Mat& frame, std::uint64_t frame_index,
                                           std::int64_t capture_ns) {
   CameraFrameDetections out{name_, frame_index, capture_ns, frame_problem(frame, field_camera_),
                             {},    {}};
-  if (out.error.empty()) out.detections = pipeline_->detect(camera_, frame);
+  if (out.error.empty()) out.detections = pipeline_->detect(0, frame);
   for (const PixelDetection& d : out.detections) {
     const double height_m = object_center_height_m(d.object, world_);
     const std::optional<FieldObservation> o =

@@ -19,8 +19,8 @@ class CameraNode {
  public:
   /// Camera `camera` of `site`, calibrated as `cameras` (the site's, in site order). Throws
   /// InputError when `camera` is not one of them.
-  CameraNode(const Participant& participant, const Site& site, std::vector<FieldCamera> cameras,
-             std::size_t camera);
+  CameraNode(const Participant& participant, const Site& site,
+             const std::vector<FieldCamera>& cameras, std::size_t camera);
 
   /// Detects `frame` (captured at `capture_ns`, UTC) and writes its detections; returns them.
   /// A frame the camera's calibration does not fit is written with its error and no detections.
@@ -29,11 +29,14 @@ class CameraNode {
   const std::string& camera_name() const { return name_; }
 
  private:
-  std::size_t camera_;
+  CameraNode(const Participant& participant, const Site& site,
+             const std::vector<FieldCamera>& cameras, std::size_t camera,
+             const BallsightPipelineOptions& options);
+
   std::string name_;
   FieldCamera field_camera_;
   CourtWorldOptions world_;
-  std::unique_ptr<CourtPipeline> pipeline_;
+  std::unique_ptr<CourtPipeline> pipeline_;  // of this camera alone (its index 0)
   Writer<CameraDetectionsMsg> writer_;
 };
 
