@@ -3,11 +3,8 @@
 // court node fuses its camera nodes' detections (or, with --sim alone, renders the simulated
 // court's cameras itself), plans, and writes the court's ROS 2 topics.
 
-#include <signal.h>
-
 #include <atomic>
 #include <chrono>
-#include <exception>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -22,6 +19,7 @@
 #include "ballsight/pipeline/site_setup.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
+#include "stop_signals.hpp"
 
 namespace ballsight::app {
 namespace {
@@ -44,10 +42,14 @@ struct NodeArgs {
     if (domain_id >= 0) options.domain = domain_id;
     return options;
   }
-  SimulatedCourtOptions court_options() const {
-    SimulatedCourtOptions options{service.seed, service.balls, service.cluster_share};
+  SimulatedServiceOptions service_options() const {
+    SimulatedServiceOptions options = service;
     if (balls >= 0) options.balls = balls;
     return options;
+  }
+  SimulatedCourtOptions court_options() const {
+    const SimulatedServiceOptions options = service_options();
+    return {options.seed, options.balls, options.cluster_share};
   }
 };
 
@@ -75,53 +77,13 @@ void validate(const NodeArgs& args) {
   args.domain_options().validate();
 }
 
-// Blocks SIGINT and SIGTERM in every thread started after it; `until_stopped` waits for one (or
-// for the duration) with them.
-sigset_t block_stop_signals() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  return signals;
-}
-
-void until_stopped(const sigset_t& signals, double duration_s, const std::atomic<bool>& failed) {
-  const auto started = Clock::now();
-  const timespec tick{0, 100'000'000};
-  while (!failed && sigtimedwait(&signals, nullptr, &tick) <= 0) {
-    if (duration_s > 0.0 &&
-        std::chrono::duration<double>(Clock::now() - started).count() >= duration_s)
-      return;
-  }
-}
-
-// Runs `work(stop)` on a thread until a signal or the duration; rethrows what it threw.
-template <class Work>
-void run_until_stopped(const NodeArgs& args, Work&& work) {
-  const sigset_t signals = block_stop_signals();
-  std::atomic<bool> stop{false}, failed{false};
-  std::exception_ptr failure;
-  std::thread thread([&] {
-    try {
-      work(stop);
-    } catch (...) {
-      failure = std::current_exception();
-      failed = true;
-    }
-  });
-  until_stopped(signals, args.duration_s, failed);
-  stop = true;
-  thread.join();
-  if (failure) std::rethrow_exception(failure);
-}
-
 std::string topic_prefix(const dds::DomainOptions& options) {
   return "/" + (options.ns.empty() ? "" : options.ns + "/");
 }
 
 void run_camera_node(const NodeArgs& args) {
   validate(args);
+  const StopSignals signals;  // before DDS starts its threads
   require(!args.camera.empty(), "--camera", "name the camera (--camera NAME)");
   const std::unique_ptr<SimulatedCourt> court =
       args.sim ? std::make_unique<SimulatedCourt>(args.court_options()) : nullptr;
@@ -134,7 +96,7 @@ void run_camera_node(const NodeArgs& args) {
             << topic_prefix(args.domain_options()) << dds::detections_topic(node.camera_name())
             << " (DDS domain " << dds::domain_id(args.domain_options()) << ")" << std::endl;
   std::uint64_t frames = 0;
-  run_until_stopped(args, [&](const std::atomic<bool>& stop) {
+  signals.run_until_stopped(args.duration_s, [&](const std::atomic<bool>& stop) {
     if (court) {
       // Ticks of the wall clock: camera nodes of one court render and stamp the same tick alike.
       const auto period_ns = static_cast<std::int64_t>(1e9 / args.service.vision_hz);
@@ -167,14 +129,13 @@ void run_camera_node(const NodeArgs& args) {
 
 void run_court_node(const NodeArgs& args) {
   validate(args);
+  const StopSignals signals;  // before DDS starts its threads
   require(!args.camera_nodes || args.sim, "--camera-nodes",
           "is for --sim (a site's court node always fuses its camera nodes)");
   const dds::Participant participant(args.domain_options());
   std::unique_ptr<CourtService> service;
   if (args.sim && !args.camera_nodes) {
-    SimulatedServiceOptions options = args.service;
-    if (args.balls >= 0) options.balls = args.balls;
-    service = std::make_unique<SimulatedCourtService>(options);
+    service = std::make_unique<SimulatedCourtService>(args.service_options());
   } else {
     dds::CourtNodeOptions options;
     if (args.sim) {
@@ -198,7 +159,8 @@ void run_court_node(const NodeArgs& args) {
   std::cout << "ballsight court-node: " << topic_prefix(args.domain_options())
             << "{robot_pose,balls,ball_estimates,route,diagnostics} (DDS domain "
             << dds::domain_id(args.domain_options()) << ")" << std::endl;
-  run_until_stopped(args, [&](const std::atomic<bool>& stop) { service->run(hub, stop); });
+  signals.run_until_stopped(args.duration_s,
+                            [&](const std::atomic<bool>& stop) { service->run(hub, stop); });
   std::cout << "ballsight court-node: stopped after " << topics.written() << " updates"
             << std::endl;
 }

@@ -2,15 +2,11 @@
 // cameras (--site) or the simulated court (--sim): every frame set through the court pipeline,
 // planned and published.
 
-#include <signal.h>
-
 #include <atomic>
 #include <chrono>
-#include <exception>
 #include <iostream>
 #include <memory>
 #include <string>
-#include <thread>
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/simulated_service.hpp"
@@ -21,6 +17,7 @@
 #include "ballsight/sim/omni_dataset.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
+#include "stop_signals.hpp"
 
 namespace ballsight::app {
 namespace {
@@ -78,12 +75,7 @@ void run_serve(const ServeArgs& args) {
   }
   CourtService& service = *court;
 
-  // SIGINT and SIGTERM are taken by this thread alone (blocked before any thread starts).
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  const StopSignals signals;  // before any thread starts
 
   HttpServerOptions server_options;
   server_options.address = args.listen.substr(0, colon);
@@ -138,29 +130,11 @@ void run_serve(const ServeArgs& args) {
   if (!args.web.empty())
     std::cout << "ballsight serve: dashboard at http://" << server_options.address << ":"
               << http.port() << "/" << std::endl;
-  std::atomic<bool> stop{false};
-  std::exception_ptr failure;  // the court service's, ends the command with its message
-  std::thread loop([&] {
-    try {
-      service.run(hub, stop);
-    } catch (...) {
-      failure = std::current_exception();
-      stop = true;
-    }
-  });
-  const timespec tick{0, 100'000'000};
-  while (true) {
-    if (sigtimedwait(&signals, nullptr, &tick) > 0 || stop) break;
-    if (args.duration_s > 0.0 &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >=
-            args.duration_s) {
-      break;
-    }
-  }
-  stop = true;
-  loop.join();
+  // A failure of the court service ends the command with its message (the server stops as it
+  // goes out of scope).
+  signals.run_until_stopped(args.duration_s,
+                            [&](const std::atomic<bool>& stop) { service.run(hub, stop); });
   http.stop();
-  if (failure) std::rethrow_exception(failure);
   std::cout << "ballsight serve: stopped after " << service.health()["frame_sets"] << " updates"
             << std::endl;
 }
