@@ -51,6 +51,8 @@ void add_eval_loop_command(CLI::App& eval);
 void add_eval_tsplib_command(CLI::App& eval);
 /// `eval tennis-real` (eval_tennis_command.cpp), registered on the `eval` group.
 void add_eval_tennis_command(CLI::App& eval);
+/// `eval nodes` (eval_nodes_command.cpp), registered on the `eval` group.
+void add_eval_nodes_command(CLI::App& eval);
 /// `camera-node` and `court-node`: the court on DDS (node_commands.cpp).
 void add_node_commands(CLI::App& app);
 /// `detect balls` and `colours learn` (detect_balls_command.cpp).

@@ -3,6 +3,7 @@
 // court node fuses its camera nodes' detections (or, with --sim alone, renders the simulated
 // court's cameras itself), plans, and writes the court's ROS 2 topics.
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <iostream>
@@ -99,14 +100,22 @@ void run_camera_node(const NodeArgs& args) {
   signals.run_until_stopped(args.duration_s, [&](const std::atomic<bool>& stop) {
     if (court) {
       // Ticks of the wall clock: camera nodes of one court render and stamp the same tick alike.
+      // Each tick's frame is rendered half a period ahead and written at its tick, as a camera
+      // delivers a frame when it is captured (the rendering keeps clear of the court node's work
+      // on the previous tick when they share a machine).
       const auto period_ns = static_cast<std::int64_t>(1e9 / args.service.vision_hz);
+      const auto sleep_until_ns = [](std::int64_t utc_ns) {
+        std::this_thread::sleep_for(std::chrono::nanoseconds(utc_ns - utc_now_ns()));
+      };
+      std::int64_t tick = utc_now_ns() / period_ns + 1;
       while (!stop) {
-        const std::int64_t tick = utc_now_ns() / period_ns + 1;
-        std::this_thread::sleep_for(std::chrono::nanoseconds(tick * period_ns - utc_now_ns()));
+        sleep_until_ns(tick * period_ns - period_ns / 2);
         const cv::Mat frame =
             court->render(index, court->scene(), static_cast<std::uint64_t>(tick));
+        sleep_until_ns(tick * period_ns);
         node.publish(frame, static_cast<std::uint64_t>(tick), tick * period_ns);
         ++frames;
+        tick = std::max(tick + 1, utc_now_ns() / period_ns + 1);
       }
       return;
     }
@@ -154,6 +163,22 @@ void run_court_node(const NodeArgs& args) {
   topics_options.ball_radius_m = service->site().ball_radius_m;
   topics_options.diagnostics_prefix =
       "ballsight" + (args.domain.ns.empty() ? "" : "/" + args.domain.ns);
+  if (args.sim && !args.camera_nodes) {
+    // Its cameras are detected here: their detections are written as camera nodes would.
+    topics_options.camera_detections =
+        [&service, cameras = service->cameras(),
+         world = service_pipeline_options(service->site()).world](const NavigationUpdate& update) {
+          std::vector<dds::CameraFrameDetections> out;
+          for (std::size_t k = 0; k < cameras.size(); ++k) {
+            std::optional<CameraView> view = service->camera_view(k);
+            if (view && view->seq == update.seq)  // else the next frame set has replaced it
+              out.push_back(dds::placed_detections(service->site().cameras[k].name, cameras[k],
+                                                   world, view->seq, view->capture_ns,
+                                                   std::move(view->detections)));
+          }
+          return out;
+        };
+  }
   const dds::CourtTopics topics(
       participant, hub, [&] { return service->health(); }, topics_options);
   std::cout << "ballsight court-node: " << topic_prefix(args.domain_options())

@@ -7,10 +7,12 @@
 
 #include "ballsight/core/child_process.hpp"
 #include "ballsight/dds/court_messages.hpp"
+#include "ballsight/dds/detection_messages.hpp"
 #include "ballsight/dds/topic_io.hpp"
 #include "ballsight/eval/simulated_court.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "dds_domain.hpp"
+#include "run_cli.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
@@ -18,14 +20,18 @@ namespace {
 
 using namespace std::chrono_literals;
 
+constexpr int kRateHz = 5;  // ten rendering processes share the machine's two cores
+
 std::vector<std::string> node_args(std::string command, const dds::DomainOptions& domain,
-                                   std::vector<std::string> more) {
+                                   std::uint64_t seed, std::vector<std::string> more) {
   std::vector<std::string> args{std::move(command),
                                 "--sim",
                                 "--seed",
-                                "3",
+                                std::to_string(seed),
                                 "--balls",
                                 "12",
+                                "--rate",
+                                std::to_string(kRateHz),
                                 "--loopback",
                                 "--domain",
                                 std::to_string(*domain.domain),
@@ -41,47 +47,71 @@ struct ReceivedSet {
   std::set<int> cameras;
 };
 
-// Every court's world model equals what one process makes of the same frames: the frames of a
-// simulated tick are the same wherever they are rendered, the detections cross DDS whole.
-TEST(DdsNodes, FourCameraNodesAndACourtNodeFuseWhatOneProcessFuses) {
-  const test::TempDir dir;
-  const dds::DomainOptions domain = test::test_domain();
-  const dds::Participant participant(domain);
-  dds::Reader<dds::BallArrayMsg> estimates(participant, "ball_estimates", {true, 1});
-  ChildProcess court(BALLSIGHT_CLI, node_args("court-node", domain, {"--camera-nodes"}),
-                     dir / "court.log");
-  std::vector<std::unique_ptr<ChildProcess>> cameras;
-  for (int k = 0; k < 4; ++k) {
-    cameras.push_back(std::make_unique<ChildProcess>(
-        BALLSIGHT_CLI, node_args("camera-node", domain, {"--camera", std::to_string(k)}),
-        dir / ("camera" + std::to_string(k) + ".log")));
+ReceivedSet received_set(const dds::BallArrayMsg& m) {
+  ReceivedSet set{dds::stamp_ns(m.header), {}, {}};
+  for (std::uint32_t k = 0; k < m.balls._length; ++k) {
+    const dds::BallMsg& b = m.balls._buffer[k];
+    set.balls.emplace_back(b.position.x, b.position.y);
+    set.cameras.insert(b.cameras._buffer, b.cameras._buffer + b.cameras._length);
   }
-  std::vector<ReceivedSet> received;
-  const auto until = std::chrono::steady_clock::now() + 60s;
-  while (std::chrono::steady_clock::now() < until) {
-    if (!estimates.wait(200ms)) continue;
-    estimates.take([&](const dds::BallArrayMsg& m) {
-      ReceivedSet set{dds::stamp_ns(m.header), {}, {}};
-      for (std::uint32_t k = 0; k < m.balls._length; ++k) {
-        const dds::BallMsg& b = m.balls._buffer[k];
-        set.balls.emplace_back(b.position.x, b.position.y);
-        set.cameras.insert(b.cameras._buffer, b.cameras._buffer + b.cameras._length);
-      }
-      received.push_back(set);
-    });
-    if (received.size() >= 5 && received.back().cameras.size() == 4) break;
-  }
-  ASSERT_GE(received.size(), 5u) << court.log_text();
-  const ReceivedSet& last = received.back();
-  ASSERT_EQ(last.cameras.size(), 4u) << "the last set did not fuse all four cameras";
+  return set;
+}
 
-  // The same frames through one process's pipeline (its sequence: every set received).
-  const SimulatedCourt simulated({3, 12, 0.25});
+// One simulated court as separate processes: a `court-node --sim --camera-nodes` and four
+// `camera-node --sim`, under a namespace of its own; and a reader of its world model.
+struct DistributedCourt {
+  DistributedCourt(const dds::Participant& participant, const dds::DomainOptions& court_domain,
+                   std::uint64_t court_seed, const std::filesystem::path& dir)
+      : domain(court_domain),
+        seed(court_seed),
+        log_dir(dir),
+        estimates(std::make_unique<dds::Reader<dds::BallArrayMsg>>(
+            participant, domain.ns + "/ball_estimates", dds::TopicQos{true, 1})),
+        court(BALLSIGHT_CLI, node_args("court-node", domain, seed, {"--camera-nodes"}),
+              dir / ("court" + std::to_string(seed) + ".log")) {
+    for (int k = 0; k < 4; ++k) cameras.push_back(start_camera(k));
+  }
+  std::unique_ptr<ChildProcess> start_camera(int k) const {
+    return std::make_unique<ChildProcess>(
+        BALLSIGHT_CLI, node_args("camera-node", domain, seed, {"--camera", std::to_string(k)}),
+        log_dir / ("court" + std::to_string(seed) + "-camera" + std::to_string(k) + "-" +
+                   random_hex(4) + ".log"));
+  }
+  // Takes what arrived; true once five sets came and the last fused all four cameras.
+  bool take() {
+    estimates->take([&](const dds::BallArrayMsg& m) { received.push_back(received_set(m)); });
+    return received.size() >= 5 && received.back().cameras.size() == 4;
+  }
+  // Waits until a set fuses `want` cameras, up to `timeout`; the cameras of the last set taken.
+  std::size_t wait_for_fused(std::size_t want, std::chrono::seconds timeout) {
+    const auto until = std::chrono::steady_clock::now() + timeout;
+    std::size_t fused = 0;
+    while (fused != want && std::chrono::steady_clock::now() < until)
+      if (estimates->wait(100ms))
+        estimates->take(
+            [&](const dds::BallArrayMsg& m) { fused = received_set(m).cameras.size(); });
+    return fused;
+  }
+
+  dds::DomainOptions domain;
+  std::uint64_t seed;
+  std::filesystem::path log_dir;
+  std::unique_ptr<dds::Reader<dds::BallArrayMsg>> estimates;
+  ChildProcess court;
+  std::vector<std::unique_ptr<ChildProcess>> cameras;
+  std::vector<ReceivedSet> received;
+};
+
+// The same frames through one process's pipeline: every set the court node published, in order.
+void expect_one_process_fuses_the_same(const DistributedCourt& court) {
+  SCOPED_TRACE(court.domain.ns);
+  const ReceivedSet& last = court.received.back();
+  const SimulatedCourt simulated({court.seed, 12, 0.25});
   const auto pipeline =
       make_ballsight_pipeline(simulated.cameras(), service_pipeline_options(simulated.site()));
-  const std::int64_t period_ns = 100'000'000;  // --rate 10
+  const std::int64_t period_ns = 1'000'000'000 / kRateHz;
   WorldModel world;
-  for (const ReceivedSet& set : received) {
+  for (const ReceivedSet& set : court.received) {
     ASSERT_EQ(set.capture_ns % period_ns, 0) << "camera nodes stamp whole ticks";
     const auto tick = static_cast<std::uint64_t>(set.capture_ns / period_ns);
     std::vector<cv::Mat> frames;
@@ -93,28 +123,46 @@ TEST(DdsNodes, FourCameraNodesAndACourtNodeFuseWhatOneProcessFuses) {
   for (std::size_t k = 0; k < last.balls.size(); ++k)
     EXPECT_LT((world.balls[k].position_m - last.balls[k]).norm(), 1e-9) << "ball " << k;
   EXPECT_GE(world.balls.size(), 10u);  // the court's 12 balls, a cluster may count fewer
+}
 
-  // A camera node killed: its court carries on with three cameras, then takes it back.
-  cameras[2]->stop();
-  const auto fused_cameras_soon = [&](std::size_t want) {
-    const auto deadline = std::chrono::steady_clock::now() + 30s;
-    std::size_t seen = 0;
-    while (std::chrono::steady_clock::now() < deadline && seen != want) {
-      if (!estimates.wait(200ms)) continue;
-      estimates.take([&](const dds::BallArrayMsg& m) {
-        std::set<int> c;
-        for (std::uint32_t k = 0; k < m.balls._length; ++k)
-          c.insert(m.balls._buffer[k].cameras._buffer,
-                   m.balls._buffer[k].cameras._buffer + m.balls._buffer[k].cameras._length);
-        seen = c.size();
-      });
-    }
-    return seen;
-  };
-  EXPECT_EQ(fused_cameras_soon(3), 3u);
-  cameras[2] = std::make_unique<ChildProcess>(
-      BALLSIGHT_CLI, node_args("camera-node", domain, {"--camera", "2"}), dir / "camera2b.log");
-  EXPECT_EQ(fused_cameras_soon(4), 4u);
+// Two courts on one DDS domain, each a court node and four camera nodes under its namespace:
+// every court's world model equals what one process makes of the same frames (the frames of a
+// simulated tick are the same wherever they are rendered, the detections cross DDS whole), and
+// a camera node killed leaves its court with three cameras until it is back.
+TEST(DdsNodes, TwoCourtsOfFourCameraNodesFuseWhatOneProcessFuses) {
+  const test::TempDir dir;
+  const dds::DomainOptions domain = test::test_domain();
+  dds::DomainOptions root = domain;  // the courts' namespaces are below the test's own
+  root.ns.clear();
+  const dds::Participant participant(root);
+  std::vector<std::unique_ptr<DistributedCourt>> courts;
+  for (const std::uint64_t seed : {3, 5}) {
+    dds::DomainOptions court_domain = domain;
+    court_domain.ns = domain.ns + "/court" + std::to_string(seed);
+    courts.push_back(
+        std::make_unique<DistributedCourt>(participant, court_domain, seed, dir.path()));
+  }
+  const auto until = std::chrono::steady_clock::now() + 90s;
+  bool done = false;
+  while (!done && std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(100ms);
+    done = courts[0]->take() & courts[1]->take();
+  }
+  for (const auto& court : courts) {
+    ASSERT_GE(court->received.size(), 5u) << court->court.log_text();
+    ASSERT_EQ(court->received.back().cameras.size(), 4u) << court->court.log_text();
+    expect_one_process_fuses_the_same(*court);
+  }
+  EXPECT_NE(courts[0]->received.back().balls, courts[1]->received.back().balls)
+      << "two courts, two scenes";
+
+  // A camera node of the first court killed: that court carries on with three cameras (the other
+  // court with four), then takes it back.
+  courts[0]->cameras[2]->stop();
+  EXPECT_EQ(courts[0]->wait_for_fused(3, 30s), 3u);
+  EXPECT_EQ(courts[1]->wait_for_fused(4, 5s), 4u);
+  courts[0]->cameras[2] = courts[0]->start_camera(2);
+  EXPECT_EQ(courts[0]->wait_for_fused(4, 30s), 4u) << courts[0]->court.log_text();
 }
 
 // `court-node --sim` alone renders its cameras itself and writes every topic.
@@ -126,10 +174,12 @@ TEST(DdsNodes, ACourtNodeAloneOnTheSimulatedCourtWritesEveryTopic) {
   dds::Reader<dds::PathMsg> route(participant, "route", {true, 1});
   dds::Reader<dds::PoseArrayMsg> balls(participant, "balls", {true, 1});
   dds::Reader<dds::DiagnosticArrayMsg> diagnostics(participant, "diagnostics");
-  ChildProcess court(BALLSIGHT_CLI, node_args("court-node", domain, {}), dir / "court.log");
+  const std::string camera = SimulatedCourt({3, 12, 0.25}).site().cameras[3].name;
+  dds::Reader<dds::CameraDetectionsMsg> detections(participant, dds::detections_topic(camera));
+  ChildProcess court(BALLSIGHT_CLI, node_args("court-node", domain, 3, {}), dir / "court.log");
   std::map<std::string, int> got;
   const auto until = std::chrono::steady_clock::now() + 60s;
-  while (std::chrono::steady_clock::now() < until && got.size() < 4) {
+  while (std::chrono::steady_clock::now() < until && got.size() < 5) {
     std::this_thread::sleep_for(50ms);
     pose.take([&](const dds::PoseStampedMsg& m) {
       if (std::string(m.header.frame_id) == "court") ++got["robot_pose"];
@@ -139,9 +189,12 @@ TEST(DdsNodes, ACourtNodeAloneOnTheSimulatedCourtWritesEveryTopic) {
     diagnostics.take([&](const dds::DiagnosticArrayMsg& m) {
       got["diagnostics"] += m.status._length == 5 ? 1 : 0;  // four cameras and the pipeline
     });
+    detections.take([&](const dds::CameraDetectionsMsg& m) {
+      got["detections"] += std::string(m.header.frame_id) == camera && m.detections._length > 0;
+    });
     for (auto it = got.begin(); it != got.end();) it = it->second == 0 ? got.erase(it) : ++it;
   }
-  EXPECT_EQ(got.size(), 4u) << court.log_text();
+  EXPECT_EQ(got.size(), 5u) << court.log_text();
 }
 
 // ROS 2's default middleware family reads ballsight's topics: a Fast DDS 2.9.1 reader (types
@@ -150,7 +203,7 @@ TEST(DdsNodes, ACourtNodeAloneOnTheSimulatedCourtWritesEveryTopic) {
 TEST(DdsNodes, AFastDdsReaderReceivesPoseBallsAndRoute) {
   const test::TempDir dir;
   const dds::DomainOptions domain = test::test_domain();
-  ChildProcess court(BALLSIGHT_CLI, node_args("court-node", domain, {}), dir / "court.log");
+  ChildProcess court(BALLSIGHT_CLI, node_args("court-node", domain, 3, {}), dir / "court.log");
   ASSERT_TRUE(court.wait_for_line("court-node:", 60s)) << court.log_text();
   ChildProcess listener(std::filesystem::path(BALLSIGHT_CLI).parent_path() / "fastdds_listener",
                         {"--namespace", domain.ns, "--domain", std::to_string(*domain.domain),
@@ -165,6 +218,38 @@ TEST(DdsNodes, AFastDdsReaderReceivesPoseBallsAndRoute) {
   }
   EXPECT_NE(log.find("\"frame_id\":\"court\""), std::string::npos) << log;
   EXPECT_NE(log.find("0.0335"), std::string::npos) << "balls at their centre height\n" << log;
+}
+
+// `eval nodes` measures both configurations: every frame set's world model reaches its reader,
+// the camera nodes' detections come before it, and the topics carry what a court writes.
+TEST(EvalNodes, MeasuresOneProcessAndCameraNodesOnLoopback) {
+  const dds::DomainOptions domain = test::test_domain();
+  const test::CliResult run =
+      test::run_cli({"eval", "nodes", "--seconds", "3", "--warmup", "0.5", "--balls", "12",
+                     "--domain", std::to_string(*domain.domain), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  const nlohmann::json out = nlohmann::json::parse(run.stdout_text);
+  for (const std::string config : {"one_process", "camera_nodes"}) {
+    SCOPED_TRACE(config);
+    const nlohmann::json& latency = out[config]["latency_ms"];
+    EXPECT_GE(latency["count"].get<int>(), 20) << "10 Hz for 3 s";
+    EXPECT_GT(latency["p50"].get<double>(), 0.0);
+    EXPECT_LE(latency["p50"].get<double>(), latency["p99"].get<double>());
+    EXPECT_NEAR(out[config]["topics"]["route"]["messages_per_s"].get<double>(), 10.0, 2.0);
+    EXPECT_GT(
+        out[config]["topics"]["cameras/camera_0/detections"]["bytes_per_message"].get<double>(),
+        100.0);
+  }
+  const nlohmann::json& nodes = out["camera_nodes"];
+  EXPECT_EQ(nodes["cpu_pct"].size(), 5u) << "four camera nodes and a court node";
+  EXPECT_LT(nodes["camera_ms"]["p50"].get<double>(), nodes["latency_ms"]["p50"].get<double>());
+  EXPECT_FALSE(out["one_process"].contains("camera_ms"));
+}
+
+TEST(EvalNodes, RefusesABadDuration) {
+  const test::CliResult run = test::run_cli({"eval", "nodes", "--seconds", "0"});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.stderr_text.find("--seconds"), std::string::npos) << run.stderr_text;
 }
 
 }  // namespace

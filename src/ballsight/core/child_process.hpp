@@ -39,6 +39,7 @@ class ChildProcess {
   /// SIGTERM, wait up to `grace`, then SIGKILL; the status.
   int stop(std::chrono::milliseconds grace = std::chrono::seconds(5));
 
+  pid_t pid() const { return pid_; }
   const std::filesystem::path& log() const { return log_; }
   std::string log_text() const;
 

@@ -29,19 +29,28 @@ CameraNode::CameraNode(const Participant& participant, const Site& site,
                        const std::vector<FieldCamera>& cameras, std::size_t camera)
     : CameraNode(participant, site, cameras, camera, service_pipeline_options(site)) {}
 
-CameraFrameDetections CameraNode::publish(const cv::Mat& frame, std::uint64_t frame_index,
-                                          std::int64_t capture_ns) {
-  CameraFrameDetections out{name_, frame_index, capture_ns, frame_problem(frame, field_camera_),
-                            {},    {}};
-  if (out.error.empty()) out.detections = pipeline_->detect(0, frame);
+CameraFrameDetections placed_detections(const std::string& name, const FieldCamera& camera,
+                                        const CourtWorldOptions& world, std::uint64_t frame_index,
+                                        std::int64_t capture_ns,
+                                        std::vector<PixelDetection> detections) {
+  CameraFrameDetections out{name, frame_index, capture_ns, "", std::move(detections), {}};
   for (const PixelDetection& d : out.detections) {
-    const double height_m = object_center_height_m(d.object, world_);
-    const std::optional<FieldObservation> o =
-        observe_on_plane(field_camera_, d, height_m, world_.noise);
+    const double height_m = object_center_height_m(d.object, world);
+    const std::optional<FieldObservation> o = observe_on_plane(camera, d, height_m, world.noise);
     out.ground.push_back(
         o ? std::optional<Vec3>(Vec3(o->position_m.x(), o->position_m.y(), height_m))
           : std::nullopt);
   }
+  return out;
+}
+
+CameraFrameDetections CameraNode::publish(const cv::Mat& frame, std::uint64_t frame_index,
+                                          std::int64_t capture_ns) {
+  std::string error = frame_problem(frame, field_camera_);
+  CameraFrameDetections out = placed_detections(
+      name_, field_camera_, world_, frame_index, capture_ns,
+      error.empty() ? pipeline_->detect(0, frame) : std::vector<PixelDetection>{});
+  out.error = std::move(error);
   MessageArena arena;
   writer_.write(camera_detections_message(out, arena));
   return out;

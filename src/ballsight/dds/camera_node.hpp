@@ -40,6 +40,13 @@ class CameraNode {
   Writer<CameraDetectionsMsg> writer_;
 };
 
+/// `detections` of camera `name` (calibrated as `camera`) in frame `frame_index`, each object's
+/// centre placed on its height plane of the court (`world`'s object heights) where it can be.
+CameraFrameDetections placed_detections(const std::string& name, const FieldCamera& camera,
+                                        const CourtWorldOptions& world, std::uint64_t frame_index,
+                                        std::int64_t capture_ns,
+                                        std::vector<PixelDetection> detections);
+
 /// The index of the camera named `name` (or given by its index, "0", "1", ...) in `site`;
 /// throws InputError listing the names.
 std::size_t site_camera_index(const Site& site, const std::string& name);

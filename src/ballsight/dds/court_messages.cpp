@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ballsight/core/error.hpp"
+
 namespace ballsight::dds {
 namespace {
 
@@ -39,6 +41,21 @@ HeaderMsg header_message(std::int64_t stamp_ns, const std::string& frame_id, Mes
 
 std::int64_t stamp_ns(const HeaderMsg& header) {
   return header.stamp.sec * kNsPerS + header.stamp.nanosec;
+}
+
+std::int64_t serialized_stamp_ns(const std::vector<std::uint8_t>& cdr) {
+  // Encapsulation (00 00: big-endian CDR, 00 01: little-endian), then int32 sec, uint32 nanosec.
+  require(cdr.size() >= 12 && cdr[0] == 0 && cdr[1] <= 1, "serialized message",
+          "expected plain CDR of at least 12 bytes beginning with a header");
+  const auto word = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t byte = cdr[1] == 1 ? at + 3 - k : at + k;  // most significant first
+      v = (v << 8) | cdr[byte];
+    }
+    return v;
+  };
+  return static_cast<std::int32_t>(word(4)) * kNsPerS + word(8);
 }
 
 PoseMsg pose_message(const Pose2D& pose) {

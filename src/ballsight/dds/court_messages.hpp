@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ballsight/dds/message_arena.hpp"
 #include "ballsight/dds/message_types.hpp"
@@ -21,6 +22,10 @@ inline constexpr const char* kCourtFrame = "court";
 HeaderMsg header_message(std::int64_t stamp_ns, const std::string& frame_id, MessageArena& arena);
 /// UTC nanoseconds of a header's stamp.
 std::int64_t stamp_ns(const HeaderMsg& header);
+/// The same of a serialized message (Reader::take_serialized) whose first member is a
+/// std_msgs/Header (every stamped message here); throws InputError for bytes too short or not
+/// plain CDR.
+std::int64_t serialized_stamp_ns(const std::vector<std::uint8_t>& cdr);
 
 /// A pose on the court: z 0, turned `heading_rad` about z.
 PoseMsg pose_message(const Pose2D& pose);

@@ -15,9 +15,7 @@ using Clock = FrameSetAssembler::Clock;
 CameraFedCourtService::CameraFedCourtService(const Participant& participant, Site site,
                                              std::vector<FieldCamera> cameras,
                                              const CourtNodeOptions& options)
-    : site_(std::move(site)),
-      options_(options),
-      waitset_(check_dds(dds_create_waitset(participant.handle()), "DDS wait set")) {
+    : site_(std::move(site)), options_(options), waitset_(participant) {
   require(cameras.size() == site_.cameras.size(), "court node",
           "the site has " + std::to_string(site_.cameras.size()) + " cameras, " +
               std::to_string(cameras.size()) + " calibrations were given");
@@ -27,14 +25,12 @@ CameraFedCourtService::CameraFedCourtService(const Participant& participant, Sit
   for (const SiteCamera& camera : site_.cameras) {
     readers_.push_back(
         std::make_unique<Reader<CameraDetectionsMsg>>(participant, detections_topic(camera.name)));
-    check_dds(dds_waitset_attach(waitset_, readers_.back()->condition(), 0), "DDS wait set");
+    waitset_.attach(readers_.back()->condition());
   }
   figures_.resize(site_.cameras.size());
 }
 
-CameraFedCourtService::~CameraFedCourtService() {
-  dds_delete(waitset_);
-}
+CameraFedCourtService::~CameraFedCourtService() = default;
 
 void CameraFedCourtService::take_frames(FrameSetAssembler& assembler) {
   for (std::size_t c = 0; c < readers_.size(); ++c) {
@@ -62,7 +58,7 @@ void CameraFedCourtService::take_frames(FrameSetAssembler& assembler) {
 void CameraFedCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {
   FrameSetAssembler assembler(readers_.size(), options_.frame_sets);
   while (!stop) {
-    dds_waitset_wait(waitset_, nullptr, 0, DDS_MSECS(20));
+    waitset_.wait(std::chrono::milliseconds(20));
     take_frames(assembler);
     while (std::optional<FrameSet> set = assembler.next(Clock::now()))
       publisher_->publish_detections(set->detections, set->capture_ns, hub);

@@ -50,7 +50,7 @@ class CameraFedCourtService : public CourtService {
   CourtNodeOptions options_;
   std::unique_ptr<UpdatePublisher> publisher_;
   std::vector<std::unique_ptr<Reader<CameraDetectionsMsg>>> readers_;
-  dds_entity_t waitset_;
+  WaitSet waitset_;
   mutable std::mutex mutex_;  // guards figures_, late_
   std::vector<CameraFigures> figures_;
   std::uint64_t late_ = 0;

@@ -18,7 +18,8 @@ CourtTopics::CourtTopics(const Participant& participant, NavigationHub& hub,
       balls_(participant, "balls", kLatest),
       ball_estimates_(participant, "ball_estimates", kLatest),
       route_(participant, "route", kLatest),
-      diagnostics_(participant, "diagnostics") {
+      diagnostics_(participant, "diagnostics"),
+      participant_(participant) {
   listener_ = hub_.add_listener([this](std::uint64_t seq) {
     {
       const std::lock_guard lock(mutex_);
@@ -67,7 +68,19 @@ void CourtTopics::write(const NavigationUpdate& update) {
   balls_.write(balls_message(update, options_.ball_radius_m, arena));
   ball_estimates_.write(ball_estimates_message(update, options_.ball_radius_m, arena));
   route_.write(route_message(update, arena));
+  if (options_.camera_detections) write_detections(update);
   ++written_;
+}
+
+void CourtTopics::write_detections(const NavigationUpdate& update) {
+  for (const CameraFrameDetections& frame : options_.camera_detections(update)) {
+    std::unique_ptr<Writer<CameraDetectionsMsg>>& writer = detections_[frame.camera];
+    if (!writer)
+      writer = std::make_unique<Writer<CameraDetectionsMsg>>(participant_,
+                                                             detections_topic(frame.camera));
+    MessageArena arena;
+    writer->write(camera_detections_message(frame, arena));
+  }
 }
 
 void CourtTopics::write_health() {

@@ -10,10 +10,13 @@
 #include <chrono>
 #include <condition_variable>
 #include <functional>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "ballsight/dds/detection_messages.hpp"
 #include "ballsight/dds/topic_io.hpp"
 #include "ballsight/net/navigation_hub.hpp"
 
@@ -23,6 +26,9 @@ struct CourtTopicsOptions {
   double ball_radius_m = 0.0335;
   std::string diagnostics_prefix = "ballsight";  // status names: "<prefix>/camera/<name>", ...
   std::chrono::milliseconds health_period{1000};
+  /// A court node that detects its cameras itself (no camera nodes): each update's detections
+  /// per camera, written on their `cameras/<camera>/detections` as a camera node would.
+  std::function<std::vector<CameraFrameDetections>(const NavigationUpdate&)> camera_detections;
 };
 
 class CourtTopics {
@@ -42,6 +48,7 @@ class CourtTopics {
   void run();
   void write(const NavigationUpdate& update);
   void write_health();
+  void write_detections(const NavigationUpdate& update);
 
   NavigationHub& hub_;
   std::function<nlohmann::json()> health_;
@@ -51,6 +58,8 @@ class CourtTopics {
   Writer<BallArrayMsg> ball_estimates_;
   Writer<PathMsg> route_;
   Writer<DiagnosticArrayMsg> diagnostics_;
+  const Participant& participant_;
+  std::map<std::string, std::unique_ptr<Writer<CameraDetectionsMsg>>> detections_;  // by camera
   std::mutex mutex_;
   std::condition_variable wake_;
   std::uint64_t pending_seq_ = 0;  // guarded by mutex_

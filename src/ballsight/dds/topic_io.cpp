@@ -44,6 +44,21 @@ std::vector<std::vector<std::uint8_t>> take_cdr(dds_entity_t reader) {
   }
 }
 
+WaitSet::WaitSet(const Participant& participant)
+    : waitset_(check_dds(dds_create_waitset(participant.handle()), "DDS wait set")) {}
+
+WaitSet::~WaitSet() {
+  dds_delete(waitset_);
+}
+
+void WaitSet::attach(dds_entity_t condition) {
+  check_dds(dds_waitset_attach(waitset_, condition, 0), "DDS wait set");
+}
+
+bool WaitSet::wait(std::chrono::nanoseconds timeout) {
+  return check_dds(dds_waitset_wait(waitset_, nullptr, 0, timeout.count()), "DDS wait") > 0;
+}
+
 int matched_count(dds_entity_t endpoint, bool writer) {
   if (writer) {
     dds_publication_matched_status_t status;

@@ -28,6 +28,22 @@ std::vector<std::vector<std::uint8_t>> take_cdr(dds_entity_t reader);
 /// Readers (of a writer) or writers (of a reader) matched now.
 int matched_count(dds_entity_t endpoint, bool writer);
 
+/// Waits for any of several readers at once (their condition()).
+class WaitSet {
+ public:
+  explicit WaitSet(const Participant& participant);
+  ~WaitSet();
+  WaitSet(const WaitSet&) = delete;
+  WaitSet& operator=(const WaitSet&) = delete;
+
+  void attach(dds_entity_t condition);
+  /// Waits until a condition attached is triggered or `timeout` passed; whether one is.
+  bool wait(std::chrono::nanoseconds timeout);
+
+ private:
+  dds_entity_t waitset_;
+};
+
 template <class Msg>
 class Writer {
  public:
@@ -53,20 +69,15 @@ class Reader {
       : reader_(make_endpoint(participant, MessageType<Msg>::descriptor(), name,
                               MessageType<Msg>::ros_name, qos, false)),
         condition_(check_dds(dds_create_readcondition(reader_, DDS_ANY_STATE), "DDS condition")),
-        waitset_(check_dds(dds_create_waitset(participant.handle()), "DDS wait set")) {
-    check_dds(dds_waitset_attach(waitset_, condition_, 0), "DDS wait set");
+        waitset_(participant) {
+    waitset_.attach(condition_);
   }
-  ~Reader() {
-    dds_delete(waitset_);
-    dds_delete(reader_);
-  }
+  ~Reader() { dds_delete(reader_); }
   Reader(const Reader&) = delete;
   Reader& operator=(const Reader&) = delete;
 
   /// Waits until a sample is there to take or `timeout` passed; whether one is.
-  bool wait(std::chrono::nanoseconds timeout) {
-    return dds_waitset_wait(waitset_, nullptr, 0, timeout.count()) > 0;
-  }
+  bool wait(std::chrono::nanoseconds timeout) { return waitset_.wait(timeout); }
   /// Calls `visit(const Msg&)` for every sample received and not taken yet, oldest first (the
   /// message is DDS's: copy what you keep); how many.
   template <class Visit>
@@ -97,7 +108,7 @@ class Reader {
  private:
   dds_entity_t reader_;
   dds_entity_t condition_;
-  dds_entity_t waitset_;
+  WaitSet waitset_;
 };
 
 }  // namespace ballsight::dds

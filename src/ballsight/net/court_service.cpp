@@ -115,14 +115,17 @@ std::uint64_t UpdatePublisher::publish_result(
   last_world_ = std::move(result.world);
   last_capture_ns_ = capture_ns;
   const auto plan_started = Clock::now();
-  const std::uint64_t seq = plan_and_publish(hub);
+  // The views are there before anyone hears of the update.
+  const std::uint64_t seq = plan_and_publish(hub, [&](std::uint64_t published_seq) {
+    const std::lock_guard lock(mutex_);
+    for (std::size_t k = 0; k < views.size() && k < views_.size(); ++k) {
+      if (views[k].frame.empty()) continue;  // a missing frame: the camera's last view stays
+      views[k].seq = published_seq;
+      views_[k] = std::move(views[k]);
+    }
+  });
   const double plan_ms = ms_since(plan_started);
   const std::lock_guard lock(mutex_);
-  for (std::size_t k = 0; k < views.size() && k < views_.size(); ++k) {
-    if (views[k].frame.empty()) continue;  // a missing frame: the camera's last view stays
-    views[k].seq = seq;
-    views_[k] = std::move(views[k]);
-  }
   ++frame_sets_;
   pipeline_ms_ = pipeline_ms;
   plan_ms_ = plan_ms;
@@ -141,7 +144,8 @@ void UpdatePublisher::republish(NavigationHub& hub) {
   plan_and_publish(hub);
 }
 
-std::uint64_t UpdatePublisher::plan_and_publish(NavigationHub& hub) {
+std::uint64_t UpdatePublisher::plan_and_publish(
+    NavigationHub& hub, const std::function<void(std::uint64_t)>& published) {
   std::string error;
   NavigationUpdate update;
   try {
@@ -153,7 +157,7 @@ std::uint64_t UpdatePublisher::plan_and_publish(NavigationHub& hub) {
     update.world = last_world_;
   }
   previous_ = update.route;
-  const std::uint64_t seq = hub.publish(std::move(update));
+  const std::uint64_t seq = hub.publish(std::move(update), published);
   const std::lock_guard lock(mutex_);
   last_error_ = error;
   return seq;

@@ -96,7 +96,9 @@ class UpdatePublisher {
   std::uint64_t publish_result(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
                                NavigationHub& hub,
                                const std::function<FrameSetResult(CourtPipeline&)>& run);
-  std::uint64_t plan_and_publish(NavigationHub& hub);  // plan_mutex_ held; the update's seq
+  // plan_mutex_ held; the update's seq (`published(seq)` runs before the hub's listeners).
+  std::uint64_t plan_and_publish(NavigationHub& hub,
+                                 const std::function<void(std::uint64_t)>& published = {});
 
   const Site& site_;
   mutable std::mutex pipeline_mutex_;  // guards pipeline_ (held while it runs)

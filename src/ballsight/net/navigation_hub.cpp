@@ -23,7 +23,8 @@ std::string random_hex(int digits) {
 
 NavigationHub::NavigationHub() : service_id_(random_hex(16)) {}
 
-std::uint64_t NavigationHub::publish(NavigationUpdate update) {
+std::uint64_t NavigationHub::publish(NavigationUpdate update,
+                                     const std::function<void(std::uint64_t)>& before_listeners) {
   std::uint64_t seq = 0;
   {
     const std::lock_guard lock(mutex_);
@@ -33,6 +34,7 @@ std::uint64_t NavigationHub::publish(NavigationUpdate update) {
     recent_.push_back(std::move(update));
     if (recent_.size() > kKept) recent_.pop_front();
   }
+  if (before_listeners) before_listeners(seq);
   const std::lock_guard lock(listeners_mutex_);
   for (const auto& [id, listener] : listeners_) listener(seq);
   return seq;

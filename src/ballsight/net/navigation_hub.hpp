@@ -49,8 +49,10 @@ class NavigationHub {
   /// and its sequence numbers began again.
   const std::string& service_id() const { return service_id_; }
 
-  /// Publishes `update` (its seq and published time are assigned) and tells every listener.
-  std::uint64_t publish(NavigationUpdate update);
+  /// Publishes `update` (its seq and published time are assigned) and tells every listener;
+  /// `before_listeners(seq)`, when given, runs first (to store what goes with the update).
+  std::uint64_t publish(NavigationUpdate update,
+                        const std::function<void(std::uint64_t)>& before_listeners = {});
   std::optional<NavigationUpdate> latest() const;
   /// The latest update's seq without copying it; 0 before the first.
   std::uint64_t latest_seq() const;
