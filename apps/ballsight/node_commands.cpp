@@ -1,13 +1,15 @@
 // `ballsight camera-node` and `ballsight court-node`: the court pipeline spread over processes
 // on DDS (docs/ros2.md). A camera node detects one camera's frames and writes its detections; a
 // court node fuses its camera nodes' detections (or, with --sim alone, renders the simulated
-// court's cameras itself), plans, and writes the court's ROS 2 topics.
+// court's cameras itself), plans, and writes the court's ROS 2 topics; with --serve it also
+// serves the navigation service's HTTP API.
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "ballsight/core/error.hpp"
@@ -19,6 +21,7 @@
 #include "ballsight/pipeline/capture.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "commands.hpp"
+#include "http_service.hpp"
 #include "option_parsing.hpp"
 #include "stop_signals.hpp"
 
@@ -37,6 +40,8 @@ struct NodeArgs {
   double duration_s = 0.0;
   std::string camera;         // camera-node
   bool camera_nodes = false;  // court-node --sim: fuse camera nodes' detections
+  bool serve = false;         // court-node: the navigation service's HTTP API inside
+  HttpServiceArgs http;
 
   dds::DomainOptions domain_options() const {
     dds::DomainOptions options = domain;
@@ -141,6 +146,7 @@ void run_court_node(const NodeArgs& args) {
   const StopSignals signals;  // before DDS starts its threads
   require(!args.camera_nodes || args.sim, "--camera-nodes",
           "is for --sim (a site's court node always fuses its camera nodes)");
+  if (args.serve) validate(args.http);
   const dds::Participant participant(args.domain_options());
   std::unique_ptr<CourtService> service;
   if (args.sim && !args.camera_nodes) {
@@ -184,8 +190,13 @@ void run_court_node(const NodeArgs& args) {
   std::cout << "ballsight court-node: " << topic_prefix(args.domain_options())
             << "{robot_pose,balls,ball_estimates,route,diagnostics} (DDS domain "
             << dds::domain_id(args.domain_options()) << ")" << std::endl;
+  std::optional<HttpService> http;
+  if (args.serve)
+    http.emplace(args.http, *service, hub, ServedCourt{args.sim, args.service.seed},
+                 "ballsight court-node");
   signals.run_until_stopped(args.duration_s,
                             [&](const std::atomic<bool>& stop) { service->run(hub, stop); });
+  if (http) http->stop();
   std::cout << "ballsight court-node: stopped after " << topics.written() << " updates"
             << std::endl;
 }
@@ -211,6 +222,10 @@ void add_node_commands(CLI::App& app) {
   court_cmd->add_flag("--camera-nodes", court->camera_nodes,
                       "Simulated court: fuse camera nodes (camera-node --sim, same seed) instead "
                       "of rendering the cameras here");
+  court_cmd->add_flag(
+      "--serve", court->serve,
+      "Also serve the navigation service's HTTP API (as `serve`: docs/robot-link.md)");
+  add_http_service_options(*court_cmd, court->http);
   court_cmd->callback([court] { run_court_node(*court); });
 }
 

@@ -10,12 +10,9 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/simulated_service.hpp"
-#include "ballsight/net/court_calibration_api.hpp"
-#include "ballsight/net/http_server.hpp"
-#include "ballsight/net/omni_calibration_api.hpp"
 #include "ballsight/net/site_service.hpp"
-#include "ballsight/sim/omni_dataset.hpp"
 #include "commands.hpp"
+#include "http_service.hpp"
 #include "option_parsing.hpp"
 #include "stop_signals.hpp"
 
@@ -25,16 +22,11 @@ namespace {
 struct ServeArgs {
   bool sim = false;
   std::string site;
-  std::string listen = "127.0.0.1:8080";
-  std::string token_file = "ballsight-token";
-  std::string web = BALLSIGHT_WEB_DIR;                    // "": no pages
-  std::string node_modules = BALLSIGHT_NODE_MODULES_DIR;  // the pages' libraries (npm)
+  HttpServiceArgs http;
   std::string planner = "ballsight";
-  bool open_reads = false;
   int balls = -1;           // simulated court: tennis balls (-1: the scenario's)
   double duration_s = 0.0;  // 0: until SIGINT or SIGTERM
   std::string fail_camera;  // K@T
-  std::string omni_frames;  // the omni calibration page's folder of images
   SimulatedServiceOptions service;
 };
 
@@ -42,12 +34,7 @@ void run_serve(const ServeArgs& args) {
   require(args.sim != !args.site.empty(), "--site",
           "give the site file (--site SITE.yml) or --sim, not both");
   require(args.duration_s >= 0.0, "--duration", "must not be negative");
-  const std::size_t colon = args.listen.rfind(':');
-  require(colon != std::string::npos, "--listen", "expected HOST:PORT, got '" + args.listen + "'");
-  const std::vector<double> port =
-      parse_numbers(args.listen.substr(colon + 1), 1, "--listen", "HOST:PORT");
-  require(port[0] >= 0 && port[0] <= 65535 && port[0] == std::floor(port[0]), "--listen",
-          "port must be an integer in [0, 65535]");
+  validate(args.http);
   const std::optional<PlannerKind> kind = planner_from_name(args.planner);
   require(kind && *kind != PlannerKind::exact, "--planner",
           "expected priority, nearest or ballsight, got '" + args.planner + "'");
@@ -77,59 +64,8 @@ void run_serve(const ServeArgs& args) {
 
   const StopSignals signals;  // before any thread starts
 
-  HttpServerOptions server_options;
-  server_options.address = args.listen.substr(0, colon);
-  server_options.port = static_cast<unsigned short>(port[0]);
-  server_options.token = read_or_create_token(args.token_file);
-  server_options.open_reads = args.open_reads;
-  server_options.web_root = args.web;
-  server_options.node_modules = args.node_modules;
-  server_options.body_limit = 16u << 20;  // the calibration pages upload images
-  OmniCalibrationOptions omni_options;
-  omni_options.frames_dir = args.omni_frames;
-  if (args.sim) {
-    omni_options.simulated_frame = [seed = args.service.seed] {
-      sim::OmniScenarioOptions scenario;
-      scenario.seed = seed;
-      return sim::render_calibration_frame(scenario);
-    };
-  }
-  OmniCalibrationApi omni(omni_options);
-  CourtCalibrationApiOptions court_options;
-  court_options.site = service.site();
-  for (const FieldCamera& camera : service.cameras())
-    court_options.intrinsics.push_back(camera.camera.params());
-  court_options.latest_frame = [&service](std::size_t camera) -> std::optional<cv::Mat> {
-    if (std::optional<CameraView> view = service.camera_view(camera)) return view->frame;
-    return std::nullopt;
-  };
-  court_options.write_files = !args.sim;  // the simulated court's calibration is the simulator's
-  if (!args.sim) court_options.on_saved = [&service] { service.reload_calibration(); };
-  CourtCalibrationApi court_calibration(std::move(court_options));
   NavigationHub hub;
-  const auto started = std::chrono::steady_clock::now();
-  std::atomic<HttpServer*> server{nullptr};  // health is asked on the server's thread
-  ApiContext context = service.api_context(hub);
-  context.omni = &omni;
-  context.court_calibration = &court_calibration;
-  context.health = [&] {
-    nlohmann::json h = service.health();
-    h["uptime_s"] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const HttpServer* serving = server;
-    h["connections"] = serving ? serving->connections() : 0;
-    h["clients"] = serving ? clients_json(serving->clients()) : nlohmann::json::array();
-    h["acknowledged_seq"] = hub.acknowledged();
-    h["service_id"] = hub.service_id();
-    return h;
-  };
-  HttpServer http(server_options, context);
-  server = &http;
-  std::cout << "ballsight serve: http://" << server_options.address << ":" << http.port()
-            << "/api/v1/ (token in " << args.token_file << ")" << std::endl;
-  if (!args.web.empty())
-    std::cout << "ballsight serve: dashboard at http://" << server_options.address << ":"
-              << http.port() << "/" << std::endl;
+  HttpService http(args.http, service, hub, {args.sim, args.service.seed}, "ballsight serve");
   // A failure of the court service ends the command with its message (the server stops as it
   // goes out of scope).
   signals.run_until_stopped(args.duration_s,
@@ -150,21 +86,7 @@ void add_serve_command(CLI::App& app) {
   cmd->add_option("--site", args->site, "Site file: serve its cameras");
   cmd->add_flag("--sim", args->sim, "Serve the built-in simulated court (rendered frames)");
   add_seed_option(*cmd, args->service.seed, "Simulated court: seed of the rig and the scene");
-  cmd->add_option("--listen", args->listen, "HOST:PORT to listen on (port 0: a free one)")
-      ->capture_default_str();
-  cmd->add_option("--web", args->web,
-                  "Folder of the web pages served at / (the dashboard) and /web/; \"\": none")
-      ->capture_default_str();
-  cmd->add_option("--node-modules", args->node_modules,
-                  "npm folder of the pages' libraries (scripts/setup installs them)")
-      ->capture_default_str();
-  cmd->add_option("--omni-frames", args->omni_frames,
-                  "Folder of omni images the calibration page may open by name")
-      ->check(CLI::ExistingDirectory);
-  cmd->add_option("--token-file", args->token_file,
-                  "Bearer token for writes; created (mode 0600) when missing")
-      ->capture_default_str();
-  cmd->add_flag("--open-reads", args->open_reads, "Reads from other hosts need no token");
+  add_http_service_options(*cmd, args->http);
   cmd->add_option("--planner", args->planner, "priority, nearest or ballsight")
       ->capture_default_str();
   cmd->add_option("--rate", args->service.vision_hz,

@@ -10,8 +10,10 @@
 #include "ballsight/dds/detection_messages.hpp"
 #include "ballsight/dds/topic_io.hpp"
 #include "ballsight/eval/simulated_court.hpp"
+#include "ballsight/net/http_server.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "dds_domain.hpp"
+#include "http_request.hpp"
 #include "run_cli.hpp"
 #include "temp_dir.hpp"
 
@@ -195,6 +197,48 @@ TEST(DdsNodes, ACourtNodeAloneOnTheSimulatedCourtWritesEveryTopic) {
     for (auto it = got.begin(); it != got.end();) it = it->second == 0 ? got.erase(it) : ++it;
   }
   EXPECT_EQ(got.size(), 5u) << court.log_text();
+}
+
+// `court-node --serve`: the navigation service's HTTP API inside the court node serves the very
+// updates its DDS topics carry.
+TEST(DdsNodes, ACourtNodeServesTheNavigationServiceAsWell) {
+  const test::TempDir dir;
+  const dds::DomainOptions domain = test::test_domain();
+  const dds::Participant participant(domain);
+  dds::Reader<dds::PathMsg> route(participant, "route");
+  ChildProcess court(BALLSIGHT_CLI,
+                     node_args("court-node", domain, 3,
+                               {"--serve", "--listen", "127.0.0.1:0", "--token-file",
+                                (dir / "token").string(), "--web", ""}),
+                     dir / "court.log");
+  const std::optional<std::string> line = court.wait_for_line("/api/v1/", 60s);
+  ASSERT_TRUE(line) << court.log_text();
+  const auto port = static_cast<unsigned short>(
+      std::stoi(line->substr(line->find("127.0.0.1:") + std::string("127.0.0.1:").size())));
+  const std::string token = read_or_create_token(dir / "token");
+  std::map<std::int64_t, std::vector<Vec2>> topic_routes;  // by capture time
+  bool compared = false;
+  const auto until = std::chrono::steady_clock::now() + 30s;
+  while (!compared && std::chrono::steady_clock::now() < until) {
+    const test::Reply reply =
+        test::request(port, boost::beast::http::verb::get, "/api/v1/route", "", token);
+    if (reply.status != 200) continue;
+    route.wait(500ms);
+    route.take([&](const dds::PathMsg& m) {
+      std::vector<Vec2>& points = topic_routes[dds::stamp_ns(m.header)];
+      for (std::uint32_t k = 0; k < m.poses._length; ++k)
+        points.emplace_back(m.poses._buffer[k].pose.position.x, m.poses._buffer[k].pose.position.y);
+    });
+    const auto it = topic_routes.find(reply.body["capture_time_ns"].get<std::int64_t>());
+    if (it == topic_routes.end()) continue;
+    const nlohmann::json& waypoints = reply.body["waypoints_m"];
+    ASSERT_EQ(waypoints.size(), it->second.size());
+    ASSERT_GT(waypoints.size(), 1u);
+    for (std::size_t k = 0; k < waypoints.size(); ++k)
+      EXPECT_EQ(Vec2(waypoints[k][0], waypoints[k][1]), it->second[k]) << "waypoint " << k;
+    compared = true;
+  }
+  EXPECT_TRUE(compared) << "no update seen both over HTTP and on DDS\n" << court.log_text();
 }
 
 // ROS 2's default middleware family reads ballsight's topics: a Fast DDS 2.9.1 reader (types

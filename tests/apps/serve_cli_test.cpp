@@ -12,6 +12,7 @@
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/eval/loop_truth.hpp"
+#include "http_request.hpp"
 #include "simulated_site.hpp"
 #include "temp_dir.hpp"
 
@@ -22,29 +23,6 @@ namespace asio = boost::asio;
 namespace beast = boost::beast;
 namespace http = beast::http;
 using nlohmann::json;
-
-struct Reply {
-  int status = 0;
-  json body;
-};
-
-Reply request(unsigned short port, http::verb verb, const std::string& target,
-              const std::string& body = "", const std::string& token = "") {
-  asio::io_context io;
-  asio::ip::tcp::socket socket(io);
-  socket.connect({asio::ip::make_address("127.0.0.1"), port});
-  http::request<http::string_body> req{verb, target, 11};
-  req.set(http::field::host, "127.0.0.1");
-  if (!token.empty()) req.set(http::field::authorization, "Bearer " + token);
-  req.body() = body;
-  req.prepare_payload();
-  http::write(socket, req);
-  beast::flat_buffer buffer;
-  http::response<http::string_body> res;
-  http::read(socket, buffer, res);
-  return {static_cast<int>(res.result_int()),
-          res.body().empty() ? json() : json::parse(res.body())};
-}
 
 /// `ballsight serve ARGS --listen 127.0.0.1:0`, its stdout read through `out`; its port.
 unsigned short start_serve(const std::string& args, FILE*& out) {
