@@ -55,6 +55,8 @@ void add_eval_tennis_command(CLI::App& eval);
 void add_eval_nodes_command(CLI::App& eval);
 /// `camera-node` and `court-node`: the court on DDS (node_commands.cpp).
 void add_node_commands(CLI::App& app);
+/// `omni-node`: a robot's omni camera on DDS (omni_node_command.cpp).
+void add_omni_node_command(CLI::App& app);
 /// `detect balls` and `colours learn` (detect_balls_command.cpp).
 void add_detect_commands(CLI::App& app);
 

@@ -4,13 +4,10 @@
 // court's cameras itself), plans, and writes the court's ROS 2 topics; with --serve it also
 // serves the navigation service's HTTP API.
 
-#include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <thread>
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/dds/camera_node.hpp"
@@ -18,36 +15,26 @@
 #include "ballsight/dds/court_topics.hpp"
 #include "ballsight/eval/simulated_court.hpp"
 #include "ballsight/eval/simulated_service.hpp"
-#include "ballsight/pipeline/capture.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "commands.hpp"
 #include "http_service.hpp"
+#include "node_options.hpp"
 #include "option_parsing.hpp"
 #include "stop_signals.hpp"
 
 namespace ballsight::app {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-struct NodeArgs {
+struct NodeArgs : DdsArgs {
   std::string site;
   bool sim = false;
   SimulatedServiceOptions service;  // the simulated court: seed, balls, rate
   int balls = -1;
-  dds::DomainOptions domain;
-  int domain_id = -1;  // -1: ROS_DOMAIN_ID or 0
-  double duration_s = 0.0;
   std::string camera;         // camera-node
   bool camera_nodes = false;  // court-node --sim: fuse camera nodes' detections
   bool serve = false;         // court-node: the navigation service's HTTP API inside
   HttpServiceArgs http;
 
-  dds::DomainOptions domain_options() const {
-    dds::DomainOptions options = domain;
-    if (domain_id >= 0) options.domain = domain_id;
-    return options;
-  }
   SimulatedServiceOptions service_options() const {
     SimulatedServiceOptions options = service;
     if (balls >= 0) options.balls = balls;
@@ -66,29 +53,18 @@ void add_node_options(CLI::App& cmd, NodeArgs& args) {
   cmd.add_option("--balls", args.balls, "Simulated court: tennis balls on it (default 20-60)");
   cmd.add_option("--rate", args.service.vision_hz, "Simulated court: frames per second")
       ->capture_default_str();
-  cmd.add_option("--namespace", args.domain.ns,
-                 "ROS 2 namespace of the court's topics (court1: /court1/...)");
-  cmd.add_option("--domain", args.domain_id, "DDS domain id (default: ROS_DOMAIN_ID, else 0)");
-  cmd.add_flag("--loopback", args.domain.loopback,
-               "DDS on this machine only (127.0.0.1, no multicast; as ROS 2's LOCALHOST range)");
-  cmd.add_option("--duration", args.duration_s, "Stop after this many seconds (0: on a signal)")
-      ->capture_default_str();
+  add_dds_options(cmd, args, "court's topics");
 }
 
-void validate(const NodeArgs& args) {
+void validate_node(const NodeArgs& args) {
   require(args.sim != !args.site.empty(), "--site",
           "give the site file (--site SITE.yml) or --sim, not both");
-  require(args.duration_s >= 0.0, "--duration", "must not be negative");
+  validate(static_cast<const DdsArgs&>(args));
   args.service.validate();
-  args.domain_options().validate();
-}
-
-std::string topic_prefix(const dds::DomainOptions& options) {
-  return "/" + (options.ns.empty() ? "" : options.ns + "/");
 }
 
 void run_camera_node(const NodeArgs& args) {
-  validate(args);
+  validate_node(args);
   const StopSignals signals;  // before DDS starts its threads
   require(!args.camera.empty(), "--camera", "name the camera (--camera NAME)");
   const std::unique_ptr<SimulatedCourt> court =
@@ -98,51 +74,29 @@ void run_camera_node(const NodeArgs& args) {
   const dds::Participant participant(args.domain_options());
   dds::CameraNode node(participant, site, court ? court->cameras() : site_field_cameras(site),
                        index);
-  std::cout << "ballsight camera-node: " << node.camera_name() << " -> "
-            << topic_prefix(args.domain_options()) << dds::detections_topic(node.camera_name())
-            << " (DDS domain " << dds::domain_id(args.domain_options()) << ")" << std::endl;
+  std::cout << "ballsight camera-node: " << node.camera_name() << " -> " << topic_prefix(args)
+            << dds::detections_topic(node.camera_name()) << " (DDS domain "
+            << dds::domain_id(args.domain_options()) << ")" << std::endl;
   std::uint64_t frames = 0;
+  const FramePublisher publish = [&](const cv::Mat& frame, std::uint64_t k, std::int64_t at_ns) {
+    node.publish(frame, k, at_ns);
+    ++frames;
+  };
   signals.run_until_stopped(args.duration_s, [&](const std::atomic<bool>& stop) {
     if (court) {
-      // Ticks of the wall clock: camera nodes of one court render and stamp the same tick alike.
-      // Each tick's frame is rendered half a period ahead and written at its tick, as a camera
-      // delivers a frame when it is captured (the rendering keeps clear of the court node's work
-      // on the previous tick when they share a machine).
-      const auto period_ns = static_cast<std::int64_t>(1e9 / args.service.vision_hz);
-      const auto sleep_until_ns = [](std::int64_t utc_ns) {
-        std::this_thread::sleep_for(std::chrono::nanoseconds(utc_ns - utc_now_ns()));
-      };
-      std::int64_t tick = utc_now_ns() / period_ns + 1;
-      while (!stop) {
-        sleep_until_ns(tick * period_ns - period_ns / 2);
-        const cv::Mat frame =
-            court->render(index, court->scene(), static_cast<std::uint64_t>(tick));
-        sleep_until_ns(tick * period_ns);
-        node.publish(frame, static_cast<std::uint64_t>(tick), tick * period_ns);
-        ++frames;
-        tick = std::max(tick + 1, utc_now_ns() / period_ns + 1);
-      }
-      return;
-    }
-    CameraCapture capture(args.camera, site_frame_source(site.cameras[index]), CaptureOptions{},
-                          [](const std::string& message) {
-                            std::cerr << "ballsight camera-node: " << message << "\n";
-                          });
-    capture.start();
-    while (!stop) {
-      if (std::optional<Frame> frame = capture.frames().pop(std::chrono::milliseconds(100))) {
-        const auto age =
-            std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - frame->timestamp);
-        node.publish(frame->image, frame->sequence, utc_now_ns() - age.count());
-        ++frames;
-      }
+      publish_ticks(
+          args.service.vision_hz, stop,
+          [&](std::uint64_t tick) { return court->render(index, court->scene(), tick); }, publish);
+    } else {
+      publish_captured("ballsight camera-node", args.camera, site_frame_source(site.cameras[index]),
+                       stop, publish);
     }
   });
   std::cout << "ballsight camera-node: stopped after " << frames << " frames" << std::endl;
 }
 
 void run_court_node(const NodeArgs& args) {
-  validate(args);
+  validate_node(args);
   const StopSignals signals;  // before DDS starts its threads
   require(!args.camera_nodes || args.sim, "--camera-nodes",
           "is for --sim (a site's court node always fuses its camera nodes)");
@@ -187,7 +141,7 @@ void run_court_node(const NodeArgs& args) {
   }
   const dds::CourtTopics topics(
       participant, hub, [&] { return service->health(); }, topics_options);
-  std::cout << "ballsight court-node: " << topic_prefix(args.domain_options())
+  std::cout << "ballsight court-node: " << topic_prefix(args)
             << "{robot_pose,balls,ball_estimates,route,diagnostics} (DDS domain "
             << dds::domain_id(args.domain_options()) << ")" << std::endl;
   std::optional<HttpService> http;

@@ -33,6 +33,7 @@ std::vector<TypeDescription> descriptions() {
       {"geometry_msgs/msg/Pose",
        {nested("position", "geometry_msgs/msg/Point"),
         nested("orientation", "geometry_msgs/msg/Quaternion")}},
+      {"geometry_msgs/msg/PointStamped", {header, nested("point", "geometry_msgs/msg/Point")}},
       {"geometry_msgs/msg/PoseStamped", {header, nested("pose", "geometry_msgs/msg/Pose")}},
       {"geometry_msgs/msg/PoseArray",
        {header, nested("poses", "geometry_msgs/msg/Pose", FieldShape::sequence)}},

@@ -11,6 +11,7 @@ namespace ballsight::dds {
 using TimeMsg = builtin_interfaces_msg_dds__Time_;
 using HeaderMsg = std_msgs_msg_dds__Header_;
 using PoseMsg = geometry_msgs_msg_dds__Pose_;
+using PointStampedMsg = geometry_msgs_msg_dds__PointStamped_;
 using PoseStampedMsg = geometry_msgs_msg_dds__PoseStamped_;
 using PoseArrayMsg = geometry_msgs_msg_dds__PoseArray_;
 using PathMsg = nav_msgs_msg_dds__Path_;
@@ -32,6 +33,8 @@ struct MessageType;
     static constexpr const char* ros_name = ros;                       \
     static const dds_topic_descriptor_t& descriptor() { return desc; } \
   };
+BALLSIGHT_DDS_MESSAGE(PointStampedMsg, "geometry_msgs/msg/PointStamped",
+                      geometry_msgs_msg_dds__PointStamped__desc)
 BALLSIGHT_DDS_MESSAGE(PoseStampedMsg, "geometry_msgs/msg/PoseStamped",
                       geometry_msgs_msg_dds__PoseStamped__desc)
 BALLSIGHT_DDS_MESSAGE(PoseArrayMsg, "geometry_msgs/msg/PoseArray",

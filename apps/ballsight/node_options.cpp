@@ -1,0 +1,75 @@
+#include "node_options.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <thread>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/net/navigation_hub.hpp"
+#include "ballsight/pipeline/capture.hpp"
+
+namespace ballsight::app {
+
+dds::DomainOptions DdsArgs::domain_options() const {
+  dds::DomainOptions options = domain;
+  if (domain_id >= 0) options.domain = domain_id;
+  return options;
+}
+
+void add_dds_options(CLI::App& command, DdsArgs& args, const std::string& topics) {
+  command.add_option("--namespace", args.domain.ns,
+                     "ROS 2 namespace of the " + topics + " (court1: /court1/...)");
+  command.add_option("--domain", args.domain_id, "DDS domain id (default: ROS_DOMAIN_ID, else 0)");
+  command.add_flag(
+      "--loopback", args.domain.loopback,
+      "DDS on this machine only (127.0.0.1, no multicast; as ROS 2's LOCALHOST range)");
+  command
+      .add_option("--duration", args.duration_s, "Stop after this many seconds (0: on a signal)")
+      ->capture_default_str();
+}
+
+void validate(const DdsArgs& args) {
+  require(args.duration_s >= 0.0, "--duration", "must not be negative");
+  args.domain_options().validate();
+}
+
+std::string topic_prefix(const DdsArgs& args) {
+  return "/" + (args.domain.ns.empty() ? "" : args.domain.ns + "/");
+}
+
+void publish_ticks(double rate_hz, const std::atomic<bool>& stop,
+                   const std::function<cv::Mat(std::uint64_t tick)>& render,
+                   const FramePublisher& publish) {
+  const auto period_ns = static_cast<std::int64_t>(1e9 / rate_hz);
+  const auto sleep_until_ns = [](std::int64_t utc_ns) {
+    std::this_thread::sleep_for(std::chrono::nanoseconds(utc_ns - utc_now_ns()));
+  };
+  // Rendered half a period ahead: clear of the work on the previous tick on a shared machine.
+  std::int64_t tick = utc_now_ns() / period_ns + 1;
+  while (!stop) {
+    sleep_until_ns(tick * period_ns - period_ns / 2);
+    const cv::Mat frame = render(static_cast<std::uint64_t>(tick));
+    sleep_until_ns(tick * period_ns);
+    publish(frame, static_cast<std::uint64_t>(tick), tick * period_ns);
+    tick = std::max(tick + 1, utc_now_ns() / period_ns + 1);
+  }
+}
+
+void publish_captured(const std::string& program, const std::string& camera,
+                      std::unique_ptr<FrameSource> source, const std::atomic<bool>& stop,
+                      const FramePublisher& publish) {
+  CameraCapture capture(
+      camera, std::move(source), CaptureOptions{},
+      [&program](const std::string& message) { std::cerr << program << ": " << message << "\n"; });
+  capture.start();
+  while (!stop) {
+    if (std::optional<Frame> frame = capture.frames().pop(std::chrono::milliseconds(100))) {
+      const auto age = std::chrono::duration_cast<std::chrono::nanoseconds>(
+          std::chrono::steady_clock::now() - frame->timestamp);
+      publish(frame->image, frame->sequence, utc_now_ns() - age.count());
+    }
+  }
+}
+
+}  // namespace ballsight::app
