@@ -36,7 +36,7 @@ using FramePublisher =
     std::function<void(const cv::Mat& frame, std::uint64_t index, std::int64_t capture_ns)>;
 
 /// Simulated frames at wall-clock ticks of `rate_hz` until `stop`: tick k's frame is rendered
-/// (`render(k)`) half a period ahead and published at the tick, stamped k / rate_hz, as a camera
+/// (`render(k)`) just ahead of it and published at the tick, stamped k / rate_hz, as a camera
 /// delivers a frame when it is captured; nodes of one simulated court render the same tick alike.
 void publish_ticks(double rate_hz, const std::atomic<bool>& stop,
                    const std::function<cv::Mat(std::uint64_t tick)>& render,
