@@ -120,7 +120,8 @@ class NodesRun {
          {std::string("--sim"), std::string("--seed"), std::to_string(args_.seed),
           std::string("--balls"), std::to_string(args_.balls), std::string("--rate"),
           fixed(args_.rate_hz, 3), std::string("--loopback"), std::string("--domain"),
-          std::to_string(domain_), std::string("--namespace"), ns_})
+          std::to_string(domain_), std::string("--namespace"), ns_, std::string("--duration"),
+          fixed(limit_s(), 0)})
       all.push_back(option);
     camera_nodes_ = camera_nodes_ || all.front() == "camera-node";
     nodes_.push_back({name, std::make_unique<ChildProcess>(own_executable(), all, log), 0.0});
@@ -151,6 +152,10 @@ class NodesRun {
   }
 
  private:
+  // How long a node may run: the whole run and a margin, so that no node outlives an eval that
+  // was killed (its destructors stop them otherwise).
+  double limit_s() const { return 60.0 + args_.warmup_s + args_.seconds + 60.0; }
+
   // Takes what arrived within 100 ms; whether a world model did. Figures go into `report`.
   bool receive(RunReport* report) {
     waitset_.wait(std::chrono::milliseconds(100));
@@ -272,8 +277,8 @@ std::string run_text(const RunReport& run) {
 }
 
 void run_eval_nodes(const EvalNodesArgs& args) {
-  require(args.seconds > 0.0, "--seconds", "must be positive");
-  require(args.warmup_s >= 0.0, "--warmup", "must not be negative");
+  require(args.seconds > 0.0 && args.seconds <= 3600.0, "--seconds", "must be in (0, 3600]");
+  require(args.warmup_s >= 0.0 && args.warmup_s <= 600.0, "--warmup", "must be in [0, 600]");
   require(args.rate_hz > 0.0 && args.rate_hz <= 30.0, "--rate", "must be in (0, 30] Hz");
   require(args.balls >= 0, "--balls", "must not be negative");
   dds::DomainOptions domain;

@@ -48,33 +48,41 @@ CourtCalibrationApiOptions court_calibration_options(CourtService& service,
     if (std::optional<CameraView> view = service.camera_view(camera)) return view->frame;
     return std::nullopt;
   };
-  options.write_files = !court.simulated;  // the simulated court's calibration is the simulator's
-  if (!court.simulated) options.on_saved = [&service] { service.reload_calibration(); };
+  // The simulated court's calibration is the simulator's; a court fed by camera nodes would not
+  // apply one (its camera nodes place the detections): neither saves.
+  options.write_files = !court.simulated && court.frames;
+  if (options.write_files) options.on_saved = [&service] { service.reload_calibration(); };
   return options;
 }
 
 }  // namespace
 
-void add_http_service_options(CLI::App& command, HttpServiceArgs& args) {
-  command.add_option("--listen", args.listen, "HOST:PORT to listen on (port 0: a free one)")
-      ->capture_default_str();
-  command
-      .add_option("--web", args.web,
-                  "Folder of the web pages served at / (the dashboard) and /web/; \"\": none")
-      ->capture_default_str();
-  command
-      .add_option("--node-modules", args.node_modules,
-                  "npm folder of the pages' libraries (scripts/setup installs them)")
-      ->capture_default_str();
-  command
-      .add_option("--omni-frames", args.omni_frames,
-                  "Folder of omni images the calibration page may open by name")
-      ->check(CLI::ExistingDirectory);
-  command
-      .add_option("--token-file", args.token_file,
-                  "Bearer token for writes; created (mode 0600) when missing")
-      ->capture_default_str();
-  command.add_flag("--open-reads", args.open_reads, "Reads from other hosts need no token");
+std::vector<CLI::Option*> add_http_service_options(CLI::App& command, HttpServiceArgs& args) {
+  std::vector<CLI::Option*> options;
+  options.push_back(
+      command.add_option("--listen", args.listen, "HOST:PORT to listen on (port 0: a free one)")
+          ->capture_default_str());
+  options.push_back(
+      command
+          .add_option("--web", args.web,
+                      "Folder of the web pages served at / (the dashboard) and /web/; \"\": none")
+          ->capture_default_str());
+  options.push_back(
+      command
+          .add_option("--node-modules", args.node_modules,
+                      "npm folder of the pages' libraries (scripts/setup installs them)")
+          ->capture_default_str());
+  options.push_back(command
+                        .add_option("--omni-frames", args.omni_frames,
+                                    "Folder of omni images the calibration page may open by name")
+                        ->check(CLI::ExistingDirectory));
+  options.push_back(command
+                        .add_option("--token-file", args.token_file,
+                                    "Bearer token for writes; created (mode 0600) when missing")
+                        ->capture_default_str());
+  options.push_back(
+      command.add_flag("--open-reads", args.open_reads, "Reads from other hosts need no token"));
+  return options;
 }
 
 void validate(const HttpServiceArgs& args) {

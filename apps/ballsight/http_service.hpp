@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ballsight/net/api.hpp"
 #include "ballsight/net/court_calibration_api.hpp"
@@ -27,14 +28,16 @@ struct HttpServiceArgs {
   std::string omni_frames;  // the omni calibration page's folder of images
 };
 
-/// --listen, --web, --node-modules, --omni-frames, --token-file, --open-reads.
-void add_http_service_options(CLI::App& command, HttpServiceArgs& args);
+/// --listen, --web, --node-modules, --omni-frames, --token-file, --open-reads; returns them.
+std::vector<CLI::Option*> add_http_service_options(CLI::App& command, HttpServiceArgs& args);
 /// Throws InputError naming the option at fault (--listen not HOST:PORT, ...).
 void validate(const HttpServiceArgs& args);
 
-/// Where the court's frames come from, for the calibration pages.
+/// What the court behind the service is, for the calibration pages.
 struct ServedCourt {
   bool simulated = false;  // the simulated court: calibration is the simulator's, not saved
+  bool frames = true;      // its frames pass through this process (not a court fed by camera
+                           // nodes): camera views, and a calibration from stills that applies
   std::uint64_t seed = 1;  // simulated: the seed of the omni calibration page's frame
 };
 

@@ -119,12 +119,24 @@ void run_court_node(const NodeArgs& args) {
     }
   }
   NavigationHub hub;
+  // The HTTP service first: a bad --listen ends the command before the topics are up. A court fed
+  // by camera nodes holds no frames: no camera views, and no calibration saved from stills.
+  const bool frames_here = args.sim && !args.camera_nodes;
+  std::optional<HttpService> http;
+  if (args.serve)
+    http.emplace(args.http, *service, hub, ServedCourt{args.sim, frames_here, args.service.seed},
+                 "ballsight court-node");
   dds::CourtTopicsOptions topics_options;
+  topics_options.on_error = [](const std::string& message) {
+    std::cerr << "ballsight court-node: DDS write failed: " << message << std::endl;
+  };
   topics_options.ball_radius_m = service->site().ball_radius_m;
   topics_options.diagnostics_prefix =
       "ballsight" + (args.domain.ns.empty() ? "" : "/" + args.domain.ns);
-  if (args.sim && !args.camera_nodes) {
+  if (frames_here) {
     // Its cameras are detected here: their detections are written as camera nodes would.
+    for (const SiteCamera& camera : service->site().cameras)
+      topics_options.detection_cameras.push_back(camera.name);
     topics_options.camera_detections =
         [&service, cameras = service->cameras(),
          world = service_pipeline_options(service->site()).world](const NavigationUpdate& update) {
@@ -144,15 +156,11 @@ void run_court_node(const NodeArgs& args) {
   std::cout << "ballsight court-node: " << topic_prefix(args)
             << "{robot_pose,balls,ball_estimates,route,diagnostics} (DDS domain "
             << dds::domain_id(args.domain_options()) << ")" << std::endl;
-  std::optional<HttpService> http;
-  if (args.serve)
-    http.emplace(args.http, *service, hub, ServedCourt{args.sim, args.service.seed},
-                 "ballsight court-node");
   signals.run_until_stopped(args.duration_s,
                             [&](const std::atomic<bool>& stop) { service->run(hub, stop); });
   if (http) http->stop();
-  std::cout << "ballsight court-node: stopped after " << topics.written() << " updates"
-            << std::endl;
+  std::cout << "ballsight court-node: stopped after " << topics.written() << " updates ("
+            << topics.failed() << " writes refused)" << std::endl;
 }
 
 }  // namespace
@@ -179,7 +187,8 @@ void add_node_commands(CLI::App& app) {
   court_cmd->add_flag(
       "--serve", court->serve,
       "Also serve the navigation service's HTTP API (as `serve`: docs/robot-link.md)");
-  add_http_service_options(*court_cmd, court->http);
+  for (CLI::Option* option : add_http_service_options(*court_cmd, court->http))
+    option->needs("--serve");
   court_cmd->callback([court] { run_court_node(*court); });
 }
 

@@ -42,8 +42,10 @@ void publish_ticks(double rate_hz, const std::atomic<bool>& stop,
                    const std::function<cv::Mat(std::uint64_t tick)>& render,
                    const FramePublisher& publish) {
   const auto period_ns = static_cast<std::int64_t>(1e9 / rate_hz);
-  const auto sleep_until_ns = [](std::int64_t utc_ns) {
-    std::this_thread::sleep_for(std::chrono::nanoseconds(utc_ns - utc_now_ns()));
+  const auto sleep_until_ns = [&stop](std::int64_t utc_ns) {  // a tenth of a second at a time
+    for (std::int64_t left = utc_ns - utc_now_ns(); left > 0 && !stop; left = utc_ns - utc_now_ns())
+      std::this_thread::sleep_for(
+          std::chrono::nanoseconds(std::min<std::int64_t>(left, 100'000'000)));
   };
   // Rendered just ahead of its tick (twice the last rendering's time and 2 ms, at most half a
   // period): clear of the work on the previous tick on a shared machine, and the machine awake at
@@ -56,6 +58,7 @@ void publish_ticks(double rate_hz, const std::atomic<bool>& stop,
     const cv::Mat frame = render(static_cast<std::uint64_t>(tick));
     render_ns = utc_now_ns() - started_ns;
     sleep_until_ns(tick * period_ns);
+    if (stop) break;
     publish(frame, static_cast<std::uint64_t>(tick), tick * period_ns);
     tick = std::max(tick + 1, utc_now_ns() / period_ns + 1);
   }

@@ -84,7 +84,7 @@ void run_omni_node(const OmniNodeArgs& args) {
           "give the camera (--camera SOURCE) or --sim, not both");
   require(args.sim || !args.lut.empty(), "--lut", "the camera's lookup table is needed");
   require(args.rate_hz > 0.0 && args.rate_hz <= 120.0, "--rate", "must be in (0, 120] Hz");
-  require(args.scenes >= 1, "--scenes", "must be at least 1");
+  require(args.scenes >= 1 && args.scenes <= 1000, "--scenes", "must be in [1, 1000]");
   BallOnFloor ball;
   ball.radius_cm = args.ball_radius_cm;
   ball.validate();
@@ -103,12 +103,18 @@ void run_omni_node(const OmniNodeArgs& args) {
             << std::endl;
   std::uint64_t frames = 0;
   std::uint64_t balls = 0;
+  std::uint64_t misfits = 0;  // a camera's frames of another size than the table's: skipped
   const FramePublisher publish = [&](const cv::Mat& frame, std::uint64_t, std::int64_t capture_ns) {
-    require(frame.cols == map.width() && frame.rows == map.height(), "--camera",
-            "a frame of " + std::to_string(frame.cols) + "x" + std::to_string(frame.rows) +
-                " px, the lookup table is " + std::to_string(map.width()) + "x" +
-                std::to_string(map.height()));
     ++frames;
+    if (frame.cols != map.width() || frame.rows != map.height()) {
+      const std::string problem = "a frame of " + std::to_string(frame.cols) + "x" +
+                                  std::to_string(frame.rows) + " px, the lookup table is " +
+                                  std::to_string(map.width()) + "x" + std::to_string(map.height());
+      require(!args.sim, "--lut", problem);  // the simulated camera's size is fixed
+      if (misfits++ == 0)
+        std::cerr << "ballsight omni-node: --camera: " << problem << "; skipped\n";
+      return;
+    }
     if (node.publish(frame, capture_ns)) ++balls;
   };
   signals.run_until_stopped(args.duration_s, [&](const std::atomic<bool>& stop) {
@@ -125,8 +131,8 @@ void run_omni_node(const OmniNodeArgs& args) {
                        publish);
     }
   });
-  std::cout << "ballsight omni-node: stopped after " << frames << " frames, a ball in " << balls
-            << std::endl;
+  std::cout << "ballsight omni-node: stopped after " << frames << " frames (" << misfits
+            << " of another size than the table), a ball in " << balls << std::endl;
 }
 
 }  // namespace

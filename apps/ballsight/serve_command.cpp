@@ -65,7 +65,7 @@ void run_serve(const ServeArgs& args) {
   const StopSignals signals;  // before any thread starts
 
   NavigationHub hub;
-  HttpService http(args.http, service, hub, {args.sim, args.service.seed}, "ballsight serve");
+  HttpService http(args.http, service, hub, {args.sim, true, args.service.seed}, "ballsight serve");
   // A failure of the court service ends the command with its message (the server stops as it
   // goes out of scope).
   signals.run_until_stopped(args.duration_s,

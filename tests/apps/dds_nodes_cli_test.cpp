@@ -68,7 +68,7 @@ struct DistributedCourt {
         seed(court_seed),
         log_dir(dir),
         estimates(std::make_unique<dds::Reader<dds::BallArrayMsg>>(
-            participant, domain.ns + "/ball_estimates", dds::TopicQos{true, 1})),
+            participant, domain.ns + "/ball_estimates", dds::TopicQos{true, 100})),
         court(BALLSIGHT_CLI, node_args("court-node", domain, seed, {"--camera-nodes"}),
               dir / ("court" + std::to_string(seed) + ".log")) {
     for (int k = 0; k < 4; ++k) cameras.push_back(start_camera(k));
@@ -84,14 +84,13 @@ struct DistributedCourt {
     estimates->take([&](const dds::BallArrayMsg& m) { received.push_back(received_set(m)); });
     return received.size() >= 5 && received.back().cameras.size() == 4;
   }
-  // Waits until a set fuses `want` cameras, up to `timeout`; the cameras of the last set taken.
-  std::size_t wait_for_fused(std::size_t want, std::chrono::seconds timeout) {
+  // Waits until a set fuses the cameras `want`, up to `timeout`; the cameras of the last set.
+  std::set<int> wait_for_fused(const std::set<int>& want, std::chrono::seconds timeout) {
     const auto until = std::chrono::steady_clock::now() + timeout;
-    std::size_t fused = 0;
+    std::set<int> fused;
     while (fused != want && std::chrono::steady_clock::now() < until)
       if (estimates->wait(100ms))
-        estimates->take(
-            [&](const dds::BallArrayMsg& m) { fused = received_set(m).cameras.size(); });
+        estimates->take([&](const dds::BallArrayMsg& m) { fused = received_set(m).cameras; });
     return fused;
   }
 
@@ -166,10 +165,11 @@ TEST(DdsNodes, TwoCourtsOfFourCameraNodesFuseWhatOneProcessFuses) {
   // A camera node of the first court killed: that court carries on with three cameras (the other
   // court with four), then takes it back.
   courts[0]->cameras[2]->stop();
-  EXPECT_EQ(courts[0]->wait_for_fused(3, 30s), 3u);
-  EXPECT_EQ(courts[1]->wait_for_fused(4, 5s), 4u);
+  const std::set<int> all{0, 1, 2, 3};
+  EXPECT_EQ(courts[0]->wait_for_fused({0, 1, 3}, 30s), (std::set<int>{0, 1, 3}));
+  EXPECT_EQ(courts[1]->wait_for_fused(all, 5s), all);
   courts[0]->cameras[2] = courts[0]->start_camera(2);
-  EXPECT_EQ(courts[0]->wait_for_fused(4, 30s), 4u) << courts[0]->court.log_text();
+  EXPECT_EQ(courts[0]->wait_for_fused(all, 30s), all) << courts[0]->court.log_text();
 }
 
 // `court-node --sim` alone renders its cameras itself and writes every topic.
@@ -227,7 +227,10 @@ TEST(DdsNodes, ACourtNodeServesTheNavigationServiceAsWell) {
   while (!compared && std::chrono::steady_clock::now() < until) {
     const test::Reply reply =
         test::request(port, boost::beast::http::verb::get, "/api/v1/route", "", token);
-    if (reply.status != 200) continue;
+    if (reply.status != 200) {  // no update yet
+      std::this_thread::sleep_for(100ms);
+      continue;
+    }
     route.wait(500ms);
     route.take([&](const dds::PathMsg& m) {
       std::vector<Vec2>& points = topic_routes[dds::stamp_ns(m.header)];
@@ -275,16 +278,15 @@ TEST(EvalNodes, MeasuresOneProcessAndCameraNodesOnLoopback) {
   const dds::DomainOptions domain = test::test_domain();
   const test::CliResult run =
       test::run_cli({"eval", "nodes", "--seconds", "3", "--warmup", "0.5", "--balls", "12",
-                     "--domain", std::to_string(*domain.domain), "--json"});
+                     "--rate", "5", "--domain", std::to_string(*domain.domain), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
   const nlohmann::json out = nlohmann::json::parse(run.stdout_text);
   for (const std::string config : {"one_process", "camera_nodes"}) {
     SCOPED_TRACE(config);
     const nlohmann::json& latency = out[config]["latency_ms"];
-    EXPECT_GE(latency["count"].get<int>(), 20) << "10 Hz for 3 s";
-    EXPECT_GT(latency["p50"].get<double>(), 0.0);
+    EXPECT_GE(latency["count"].get<int>(), 10) << "5 Hz for 3 s";
     EXPECT_LE(latency["p50"].get<double>(), latency["p99"].get<double>());
-    EXPECT_NEAR(out[config]["topics"]["route"]["messages_per_s"].get<double>(), 10.0, 2.0);
+    EXPECT_NEAR(out[config]["topics"]["route"]["messages_per_s"].get<double>(), 5.0, 2.0);
     EXPECT_GT(
         out[config]["topics"]["cameras/camera_0/detections"]["bytes_per_message"].get<double>(),
         100.0);

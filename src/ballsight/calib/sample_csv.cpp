@@ -159,7 +159,7 @@ std::vector<PolarSample> parse_polar_samples_csv(std::string_view text, const st
 }
 
 std::vector<PolarSample> read_polar_samples_csv(const std::filesystem::path& path) {
-  return parse_polar_samples_csv(read_file(path), path.string());
+  return parse_polar_samples_csv(read_file(path, kMaxDocumentBytes), path.string());
 }
 
 std::string format_csv_number(double value) {

@@ -193,7 +193,7 @@ CameraFile parse_camera_file(std::string_view text, const std::string& name) {
 }
 
 CameraCalibration read_camera_file(const std::filesystem::path& path) {
-  return parse_camera_file(read_file(path), path.string()).calibration;
+  return parse_camera_file(read_file(path, kMaxDocumentBytes), path.string()).calibration;
 }
 
 std::string camera_file_text(const CameraCalibration& calibration) {

@@ -46,16 +46,19 @@ std::int16_t IrisLut::at(int theta_deg, int bin) const {
 }
 
 IrisLut read_iris_lut(const std::filesystem::path& path, IrisLutKind kind) {
-  const std::string file = read_file(path);
+  return parse_iris_lut(read_file(path), path.string(), kind);
+}
+
+IrisLut parse_iris_lut(std::string_view file, const std::string& where, IrisLutKind kind) {
   const std::size_t entries =
       static_cast<std::size_t>(IrisLut::kDirections) * IrisLut::bins_for(kind);
   const std::string expected = std::to_string(2 * entries) + " bytes";
   const std::string layout = "an iris " + std::string(to_string(kind)) + " table is 360 x " +
                              std::to_string(IrisLut::bins_for(kind)) + " int16";
-  require(!file.empty(), path.string(), "empty file (" + layout + ")");
+  require(!file.empty(), where, "empty file (" + layout + ")");
   const std::string got = ", got " + std::to_string(file.size()) + " (" + layout + ")";
-  require(file.size() >= 2 * entries, path.string(), "truncated: expected " + expected + got);
-  require(file.size() == 2 * entries, path.string(), "expected " + expected + got);
+  require(file.size() >= 2 * entries, where, "truncated: expected " + expected + got);
+  require(file.size() == 2 * entries, where, "expected " + expected + got);
   std::vector<std::int16_t> values(entries);
   LittleEndianReader in(file);
   for (std::int16_t& v : values) v = in.i16();

@@ -58,6 +58,8 @@ class IrisLut {
 /// Reads a raw table; throws InputError naming the file when it is missing or not exactly
 /// 360 x bins int16 long.
 IrisLut read_iris_lut(const std::filesystem::path& path, IrisLutKind kind);
+/// The same from the file's bytes, `where` naming them in errors.
+IrisLut parse_iris_lut(std::string_view bytes, const std::string& where, IrisLutKind kind);
 /// The raw little-endian table's bytes.
 std::string iris_lut_bytes(const IrisLut& lut);
 /// Writes the raw little-endian table atomically.

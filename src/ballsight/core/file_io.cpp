@@ -1,7 +1,6 @@
 #include "ballsight/core/file_io.hpp"
 
 #include <fstream>
-#include <sstream>
 #include <system_error>
 
 #include "ballsight/core/error.hpp"
@@ -10,13 +9,28 @@ namespace ballsight {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const fs::path& path) {
+std::string read_file(const fs::path& path, std::uintmax_t max_bytes) {
+  const auto too_large = [&](std::uintmax_t bytes) {
+    return path.string() + ": " + std::to_string(bytes) +
+           " bytes or more, larger than the limit of " + std::to_string(max_bytes) +
+           " bytes; not read";
+  };
+  std::error_code ec;
+  const bool regular = fs::is_regular_file(path, ec);
+  const std::uintmax_t size = regular ? fs::file_size(path, ec) : 0;
+  if (regular && !ec && size > max_bytes) throw InputError(too_large(size));
   std::ifstream in(path, std::ios::binary);
   require(in.good(), path.string(), "cannot open for reading");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  std::string bytes;
+  if (regular && !ec) bytes.reserve(size);
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    const auto n = static_cast<std::size_t>(in.gcount());
+    if (bytes.size() + n > max_bytes) throw InputError(too_large(bytes.size() + n));
+    bytes.append(chunk, n);
+  }
   require(!in.bad(), path.string(), "read failed");
-  return buffer.str();
+  return bytes;
 }
 
 void write_file_atomic(const fs::path& path, std::string_view bytes) {

@@ -1,11 +1,14 @@
 #include "ballsight/dds/court_topics.hpp"
 
+#include <algorithm>
+
 #include "ballsight/dds/court_messages.hpp"
 
 namespace ballsight::dds {
 namespace {
 
-const TopicQos kLatest{true, 1};  // transient-local, keep last 1
+const TopicQos kLatest{true, 1};       // transient-local, keep last 1
+constexpr std::uint64_t kBehind = 16;  // updates written at most when several came at once
 
 }  // namespace
 
@@ -18,8 +21,12 @@ CourtTopics::CourtTopics(const Participant& participant, NavigationHub& hub,
       balls_(participant, "balls", kLatest),
       ball_estimates_(participant, "ball_estimates", kLatest),
       route_(participant, "route", kLatest),
-      diagnostics_(participant, "diagnostics"),
-      participant_(participant) {
+      diagnostics_(participant, "diagnostics") {
+  if (options_.camera_detections) {
+    for (const std::string& camera : options_.detection_cameras)
+      detections_.emplace(camera, std::make_unique<Writer<CameraDetectionsMsg>>(
+                                      participant, detections_topic(camera)));
+  }
   listener_ = hub_.add_listener([this](std::uint64_t seq) {
     {
       const std::lock_guard lock(mutex_);
@@ -49,15 +56,28 @@ void CourtTopics::run() {
     if (stop_) break;
     const std::uint64_t seq = pending_seq_;
     lock.unlock();
-    if (seq != written_seq) {
-      if (const std::optional<NavigationUpdate> update = hub_.find(seq)) write(*update);
-      written_seq = seq;
+    // Every update in turn (those published while one was written too; the hub keeps the
+    // recent ones): a subscriber sees the sequence the court made, not only its latest.
+    for (std::uint64_t s = std::max(written_seq + 1, seq > kBehind ? seq - kBehind : 1); s <= seq;
+         ++s) {
+      if (const std::optional<NavigationUpdate> update = hub_.find(s))
+        guarded("update " + std::to_string(s), [&] { write(*update); });
     }
+    written_seq = seq;
     if (std::chrono::steady_clock::now() >= next_health) {
-      write_health();
+      guarded("diagnostics", [&] { write_health(); });
       next_health = std::chrono::steady_clock::now() + options_.health_period;
     }
     lock.lock();
+  }
+}
+
+void CourtTopics::guarded(const std::string& what, const std::function<void()>& write) {
+  try {
+    write();
+  } catch (const std::exception& e) {  // DDS refused: say so, the next update is written anew
+    ++failed_;
+    if (options_.on_error) options_.on_error(what + ": " + e.what());
   }
 }
 
@@ -74,12 +94,10 @@ void CourtTopics::write(const NavigationUpdate& update) {
 
 void CourtTopics::write_detections(const NavigationUpdate& update) {
   for (const CameraFrameDetections& frame : options_.camera_detections(update)) {
-    std::unique_ptr<Writer<CameraDetectionsMsg>>& writer = detections_[frame.camera];
-    if (!writer)
-      writer = std::make_unique<Writer<CameraDetectionsMsg>>(participant_,
-                                                             detections_topic(frame.camera));
+    const auto writer = detections_.find(frame.camera);
+    if (writer == detections_.end()) continue;  // not one of the cameras named in the options
     MessageArena arena;
-    writer->write(camera_detections_message(frame, arena));
+    writer->second->write(camera_detections_message(frame, arena));
   }
 }
 

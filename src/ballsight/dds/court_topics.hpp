@@ -4,7 +4,8 @@
 // (ballsight_msgs/BallArray), `route` (nav_msgs/Path) and `diagnostics`
 // (diagnostic_msgs/DiagnosticArray, once a second). The balls and the route are transient-local,
 // keep last 1: a subscriber that joins late gets the latest at once. Every update the hub
-// publishes is written from a thread of this object's (the hub's listener only hands it over).
+// publishes is written, in order, from a thread of this object's (the hub's listener only hands
+// it over).
 
 #include <atomic>
 #include <chrono>
@@ -27,8 +28,12 @@ struct CourtTopicsOptions {
   std::string diagnostics_prefix = "ballsight";  // status names: "<prefix>/camera/<name>", ...
   std::chrono::milliseconds health_period{1000};
   /// A court node that detects its cameras itself (no camera nodes): each update's detections
-  /// per camera, written on their `cameras/<camera>/detections` as a camera node would.
+  /// per camera, written on the `cameras/<camera>/detections` of `detection_cameras` (the site's
+  /// camera names) as a camera node would.
   std::function<std::vector<CameraFrameDetections>(const NavigationUpdate&)> camera_detections;
+  std::vector<std::string> detection_cameras;
+  /// A write DDS refused (the update or the diagnostics are then skipped; the next are written).
+  std::function<void(const std::string& message)> on_error;
 };
 
 class CourtTopics {
@@ -41,14 +46,16 @@ class CourtTopics {
   CourtTopics(const CourtTopics&) = delete;
   CourtTopics& operator=(const CourtTopics&) = delete;
 
-  /// Updates written so far.
+  /// Updates written so far, and writes DDS refused.
   std::uint64_t written() const { return written_; }
+  std::uint64_t failed() const { return failed_; }
 
  private:
   void run();
   void write(const NavigationUpdate& update);
   void write_health();
   void write_detections(const NavigationUpdate& update);
+  void guarded(const std::string& what, const std::function<void()>& write);
 
   NavigationHub& hub_;
   std::function<nlohmann::json()> health_;
@@ -58,13 +65,13 @@ class CourtTopics {
   Writer<BallArrayMsg> ball_estimates_;
   Writer<PathMsg> route_;
   Writer<DiagnosticArrayMsg> diagnostics_;
-  const Participant& participant_;
   std::map<std::string, std::unique_ptr<Writer<CameraDetectionsMsg>>> detections_;  // by camera
   std::mutex mutex_;
   std::condition_variable wake_;
   std::uint64_t pending_seq_ = 0;  // guarded by mutex_
   bool stop_ = false;              // guarded by mutex_
   std::atomic<std::uint64_t> written_{0};
+  std::atomic<std::uint64_t> failed_{0};
   int listener_ = 0;
   std::thread thread_;
 };

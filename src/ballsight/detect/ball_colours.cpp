@@ -107,7 +107,8 @@ BallColours ball_colours_from_json(const nlohmann::json& json, const std::string
 }
 
 BallColours read_ball_colours(const std::string& path) {
-  const nlohmann::json document = nlohmann::json::parse(read_file(path), nullptr, false);
+  const nlohmann::json document =
+      nlohmann::json::parse(read_file(path, kMaxDocumentBytes), nullptr, false);
   require(!document.is_discarded(), path, "not valid JSON");
   return ball_colours_from_json(document, path);
 }

@@ -84,11 +84,15 @@ json event_record(const TruthEvent& e) {
 LoopTruth read_loop_truth(const std::filesystem::path& file) {
   std::ifstream in(file);
   require(in.good(), file.string(), "cannot open for reading");
+  return parse_loop_truth(in, file.string());
+}
+
+LoopTruth parse_loop_truth(std::istream& in, const std::string& source) {
   LoopTruth truth;
   bool scene = false;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
-    const std::string where = file.string() + ":" + std::to_string(number);
+    const std::string where = source + ":" + std::to_string(number);
     if (line.empty()) continue;
     json j;
     try {
@@ -120,7 +124,7 @@ LoopTruth read_loop_truth(const std::filesystem::path& file) {
       throw InputError(where + ": " + e.what());
     }
   }
-  require(scene, file.string(), "has no scene record (is it a serve --sim --truth-out file?)");
+  require(scene, source, "has no scene record (is it a serve --sim --truth-out file?)");
   return truth;
 }
 

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <istream>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -63,6 +64,8 @@ nlohmann::json event_record(const TruthEvent& event);
 /// Reads a record; throws InputError "<file>:<line>: ..." naming what is wrong. A last line cut
 /// short (the service killed while writing it) is ignored.
 LoopTruth read_loop_truth(const std::filesystem::path& file);
+/// The same from a stream, `source` naming it in errors.
+LoopTruth parse_loop_truth(std::istream& in, const std::string& source);
 
 /// Cuts a last line the writer did not finish (it was killed), so that appending goes on cleanly.
 void drop_unfinished_line(const std::filesystem::path& file);

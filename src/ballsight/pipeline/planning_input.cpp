@@ -70,7 +70,7 @@ WorldBalls parse_world_balls(std::string_view text, const std::string& source) {
 }
 
 WorldBalls read_world_balls(const std::filesystem::path& file) {
-  return parse_world_balls(read_file(file), file.string());
+  return parse_world_balls(read_file(file, kMaxDocumentBytes), file.string());
 }
 
 std::vector<Vec2> parse_ball_csv(std::string_view text, const std::string& source) {
@@ -109,7 +109,7 @@ std::vector<Vec2> parse_ball_csv(std::string_view text, const std::string& sourc
 }
 
 std::vector<Vec2> read_ball_csv(const std::filesystem::path& file) {
-  return parse_ball_csv(read_file(file), file.string());
+  return parse_ball_csv(read_file(file, kMaxDocumentBytes), file.string());
 }
 
 }  // namespace ballsight

@@ -199,7 +199,7 @@ Site parse_site(std::string_view text, const fs::path& file) {
 }
 
 Site read_site(const fs::path& file) {
-  return parse_site(read_file(file), file);
+  return parse_site(read_file(file, kMaxDocumentBytes), file);
 }
 
 }  // namespace ballsight
