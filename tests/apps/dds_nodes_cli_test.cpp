@@ -10,6 +10,7 @@
 #include "ballsight/dds/detection_messages.hpp"
 #include "ballsight/dds/topic_io.hpp"
 #include "ballsight/eval/simulated_court.hpp"
+#include "ballsight/net/court_service.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "dds_domain.hpp"
@@ -60,7 +61,7 @@ ReceivedSet received_set(const dds::BallArrayMsg& m) {
 }
 
 // One simulated court as separate processes: a `court-node --sim --camera-nodes` and four
-// `camera-node --sim`, under a namespace of its own; and a reader of its world model.
+// `camera-node --sim`, under a namespace of its own; and readers of its world model and route.
 struct DistributedCourt {
   DistributedCourt(const dds::Participant& participant, const dds::DomainOptions& court_domain,
                    std::uint64_t court_seed, const std::filesystem::path& dir)
@@ -69,6 +70,8 @@ struct DistributedCourt {
         log_dir(dir),
         estimates(std::make_unique<dds::Reader<dds::BallArrayMsg>>(
             participant, domain.ns + "/ball_estimates", dds::TopicQos{true, 100})),
+        route(std::make_unique<dds::Reader<dds::PathMsg>>(participant, domain.ns + "/route",
+                                                          dds::TopicQos{true, 100})),
         court(BALLSIGHT_CLI, node_args("court-node", domain, seed, {"--camera-nodes"}),
               dir / ("court" + std::to_string(seed) + ".log")) {
     for (int k = 0; k < 4; ++k) cameras.push_back(start_camera(k));
@@ -98,44 +101,63 @@ struct DistributedCourt {
   std::uint64_t seed;
   std::filesystem::path log_dir;
   std::unique_ptr<dds::Reader<dds::BallArrayMsg>> estimates;
+  std::unique_ptr<dds::Reader<dds::PathMsg>> route;
   ChildProcess court;
   std::vector<std::unique_ptr<ChildProcess>> cameras;
   std::vector<ReceivedSet> received;
 };
 
-// The same frames through one process's pipeline: every set the court node published, in order,
-// of the cameras it fused.
-void expect_one_process_fuses_the_same(const DistributedCourt& court) {
+// The same frames through one process's publisher (pipeline, planner, hub): every set the court
+// node published, in order, of the cameras it fused; its last world model and route.
+void expect_one_process_makes_the_same(DistributedCourt& court) {
   SCOPED_TRACE(court.domain.ns);
   const ReceivedSet& last = court.received.back();
   const SimulatedCourt simulated({court.seed, 12, 0.25});
-  const auto pipeline =
-      make_ballsight_pipeline(simulated.cameras(), service_pipeline_options(simulated.site()));
+  const BallsightPipelineOptions options = service_pipeline_options(simulated.site());
+  const auto detector = make_ballsight_pipeline(simulated.cameras(), options);
+  UpdatePublisher publisher(simulated.site(), make_ballsight_pipeline(simulated.cameras(), options),
+                            PlannerOptions{});
+  NavigationHub hub;
   const std::int64_t period_ns = 1'000'000'000 / kRateHz;
-  WorldModel world;
   for (const ReceivedSet& set : court.received) {
     ASSERT_EQ(set.capture_ns % period_ns, 0) << "camera nodes stamp whole ticks";
     const auto tick = static_cast<std::uint64_t>(set.capture_ns / period_ns);
     // The cameras the court node fused in this set (a camera late under load is left out, and
-    // the pipeline remembers hidden balls from set to set).
+    // the pipeline remembers hidden balls from set to set; each camera sees some of 12 balls).
     CameraDetectionLists lists(4);
     for (const int k : set.cameras)
       lists[static_cast<std::size_t>(k)] =
-          pipeline->detect(static_cast<std::size_t>(k),
+          detector->detect(static_cast<std::size_t>(k),
                            simulated.render(static_cast<std::size_t>(k), simulated.scene(), tick));
-    world = pipeline->fuse(lists);
+    publisher.publish_detections(lists, set.capture_ns, hub);
   }
-  ASSERT_EQ(world.balls.size(), last.balls.size());
+  const NavigationUpdate one = *hub.latest();
+  ASSERT_EQ(one.world.balls.size(), last.balls.size());
   for (std::size_t k = 0; k < last.balls.size(); ++k)
-    EXPECT_LT((world.balls[k].position_m - last.balls[k]).norm(), 1e-9) << "ball " << k;
-  EXPECT_GE(world.balls.size(), 10u);  // the court's 12 balls, a cluster may count fewer
+    EXPECT_LT((one.world.balls[k].position_m - last.balls[k]).norm(), 1e-9) << "ball " << k;
+  EXPECT_GE(one.world.balls.size(), 10u);  // the court's 12 balls, a cluster may count fewer
+
+  std::vector<Vec2> route;  // the court node's route of the last set
+  const auto until = std::chrono::steady_clock::now() + 10s;
+  while (route.empty() && std::chrono::steady_clock::now() < until) {
+    court.route->wait(100ms);
+    court.route->take([&](const dds::PathMsg& m) {
+      if (dds::stamp_ns(m.header) != last.capture_ns) return;
+      for (std::uint32_t k = 0; k < m.poses._length; ++k)
+        route.emplace_back(m.poses._buffer[k].pose.position.x, m.poses._buffer[k].pose.position.y);
+    });
+  }
+  ASSERT_EQ(route.size(), one.route.waypoints_m.size());
+  ASSERT_GT(route.size(), 1u);
+  for (std::size_t k = 0; k < route.size(); ++k)
+    EXPECT_LT((one.route.waypoints_m[k] - route[k]).norm(), 1e-9) << "waypoint " << k;
 }
 
 // Two courts on one DDS domain, each a court node and four camera nodes under its namespace:
-// every court's world model equals what one process makes of the same frames (the frames of a
-// simulated tick are the same wherever they are rendered, the detections cross DDS whole), and
+// every court's world model and route equal what one process makes of the same frames (the frames
+// of a simulated tick are the same wherever they are rendered, the detections cross DDS whole), and
 // a camera node killed leaves its court with three cameras until it is back.
-TEST(DdsNodes, TwoCourtsOfFourCameraNodesFuseWhatOneProcessFuses) {
+TEST(DdsNodes, TwoCourtsOfFourCameraNodesMakeWhatOneProcessMakes) {
   const test::TempDir dir;
   const dds::DomainOptions domain = test::test_domain();
   dds::DomainOptions root = domain;  // the courts' namespaces are below the test's own
@@ -157,7 +179,7 @@ TEST(DdsNodes, TwoCourtsOfFourCameraNodesFuseWhatOneProcessFuses) {
   for (const auto& court : courts) {
     ASSERT_GE(court->received.size(), 5u) << court->court.log_text();
     ASSERT_EQ(court->received.back().cameras.size(), 4u) << court->court.log_text();
-    expect_one_process_fuses_the_same(*court);
+    expect_one_process_makes_the_same(*court);
   }
   EXPECT_NE(courts[0]->received.back().balls, courts[1]->received.back().balls)
       << "two courts, two scenes";
