@@ -57,7 +57,9 @@ void add_eval_court_command(CLI::App& eval) {
   cmd->add_flag("--no-net", args->no_net,
                 "Scenes on a court without a net (the simulator of before the net)");
   cmd->add_flag("--json", args->json,
-                "JSON: {\"methods\": {\"seed\": {...}, \"ballsight\": {...}}, ...}");
+                "JSON: {\"methods\": {\"seed\": {...}, \"ballsight\": {...}}, ..., \"wall_clock\": "
+                "{\"methods\": {...: {\"frame_set_ms_mean\"}}}} (all but wall_clock: the same "
+                "every run of a seed)");
   CLI::Option* plot_dir =
       cmd->add_option("--plot-dir", args->plot_dir,
                       "Write each camera's view with detections and a field map of truth vs "

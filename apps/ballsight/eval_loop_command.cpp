@@ -76,7 +76,8 @@ void add_eval_loop_command(CLI::App& eval) {
                   "Comma-separated subset of report,ballsight-priority,ballsight");
   cmd->add_flag("--json", args->json,
                 "JSON: {\"systems\": {\"<name>\": {\"collected_fraction\", \"time_s_mean\", "
-                "\"distance_m_mean\", \"time_ratio_to_ballsight\", \"runs\"}}}");
+                "\"distance_m_mean\", \"time_ratio_to_ballsight\", \"runs\"}}, \"wall_clock\": {}} "
+                "(simulated time only: the same every run of a seed)");
   cmd->callback([args] { run_eval_loop(*args); });
 }
 

@@ -48,9 +48,11 @@ void add_eval_plan_command(CLI::App& eval) {
   cmd->add_option("--sizes", args->sizes,
                   "Ball counts, comma-separated (default 5,8,12,20,50,"
                   "100,200,400)");
-  cmd->add_flag("--json", args->json,
-                "JSON: {\"planners\": {\"<name>\": {\"by_n\": {\"<n>\": {...}}}}, \"layouts\": "
-                "..., \"ballsight_time_saved_pct\": ...}");
+  cmd->add_flag(
+      "--json", args->json,
+      "JSON: {\"planners\": {\"<name>\": {\"by_n\": {\"<n>\": {...}}}}, \"layouts\": "
+      "..., \"ballsight_time_saved_pct\": ..., \"wall_clock\": {every plan_ms_mean, at its "
+      "path}} (all but wall_clock: the same every run of a seed)");
   cmd->add_option("--plot-dir", args->plot_dir,
                   "Write the three planners' routes for the first layout of 20, 50 and 100 balls");
   cmd->callback([args] { run_eval_plan(*args); });

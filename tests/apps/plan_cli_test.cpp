@@ -131,7 +131,18 @@ TEST(EvalPlanCli, SmallSizesMeetTheExactOptimum) {
     EXPECT_LT(ours["gap_to_optimal_pct_max"].get<double>(), 2.0) << n;
     EXPECT_GE(ours["gap_to_optimal_pct_mean"].get<double>(), -1e-9) << n;  // exact is exact
     EXPECT_GT(j["ballsight_time_saved_pct"]["priority"][n].get<double>(), 0.0) << n;
+    // The planning times are wall-clock: apart, at their path.
+    EXPECT_FALSE(ours.contains("plan_ms_mean")) << n;
+    EXPECT_TRUE(
+        j["wall_clock"]["planners"]["ballsight"]["by_n"][n]["plan_ms_mean"].is_number_float());
   }
+  // One seed, the same bytes but the wall clock's.
+  nlohmann::json again =
+      nlohmann::json::parse(run_cli({"eval", "plan", "--sizes", "5,12", "--json"}).stdout_text);
+  nlohmann::json first = j;
+  first.erase("wall_clock");
+  again.erase("wall_clock");
+  EXPECT_EQ(again.dump(), first.dump());
   expect_one_line_error(run_cli({"eval", "plan", "--sizes", "5,x"}), "--sizes");
 }
 

@@ -1,8 +1,10 @@
 #include "ballsight/calib/intrinsics.hpp"
 
+#include <dlfcn.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #include "ballsight/calib/chessboard_corners.hpp"
@@ -106,6 +108,23 @@ TEST(Intrinsics, AViewThatStandsOutIsDroppedAndReported) {
   EXPECT_GT(r.views[4].rms_px, 1.0);
   EXPECT_LT(r.rms_px, 0.2);
   EXPECT_LT(std::abs(r.camera.fx / s.truth.params().fx - 1.0), 0.005);
+}
+
+// OpenCV's calibration calls LAPACK and BLAS. ATLAS (installed with libceres3, then preferred by
+// Debian) sums in an order that depends on where its buffers lie, so one set of views gave cameras
+// that differed in the 13th digit from run to run, and `eval court` moved a ball by 2 cm. Every
+// program loads the reference LAPACK and BLAS instead (cmake/reference_lapack.cmake): the
+// functions OpenCV calls come from them.
+TEST(Intrinsics, OpenCVCallsTheReferenceLapackAndBlas) {
+  for (const auto& [symbol, folder] :
+       {std::pair{"dgesdd_", "lapack"}, {"dgemm_", "blas"}, {"cblas_dgemm", "blas"}}) {
+    void* address = dlsym(RTLD_DEFAULT, symbol);
+    ASSERT_NE(address, nullptr) << symbol;
+    Dl_info info{};
+    ASSERT_NE(dladdr(address, &info), 0) << symbol;
+    const std::filesystem::path library = std::filesystem::canonical(info.dli_fname);
+    EXPECT_EQ(library.parent_path().filename(), folder) << symbol << " comes from " << library;
+  }
 }
 
 TEST(Intrinsics, TooFewViewsIsAnInputError) {

@@ -13,6 +13,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/court_plots.hpp"
+#include "ballsight/eval/wall_clock.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_truth.hpp"
@@ -253,7 +254,7 @@ nlohmann::json court_eval_json(const CourtEvalReport& report) {
   out["scenes"] = report.options.scenes;
   out["match_radius_m"] = report.options.match_radius_m;
   out["pictures"] = report.pictures;
-  return out;
+  return with_wall_clock_apart(std::move(out), {"frame_set_ms_mean"});
 }
 
 namespace {

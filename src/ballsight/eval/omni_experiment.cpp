@@ -16,6 +16,7 @@
 #include "ballsight/camera/rig_ground_map.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/eval/wall_clock.hpp"
 #include "ballsight/pipeline/marker_frame_samples.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
 #include "ballsight/sim/omni_renderer.hpp"
@@ -271,20 +272,21 @@ nlohmann::json omni_experiment_json(const OmniExperimentResult& result) {
     }
   }
   const OmniExperimentOptions& o = result.options;
-  return {{"methods", methods},
-          {"setup",
-           {{"seed", o.seed},
-            {"mirror", mirror_kind_name(o.mirror)},
-            {"tilt_deg", o.tilt_deg},
-            {"tilt_azimuth_deg", o.tilt_azimuth_deg},
-            {"center_offset_px", {o.center_offset_px.x(), o.center_offset_px.y()}},
-            {"sensor_noise", o.sensor_noise},
-            {"click_noise_px", o.click_noise_px},
-            {"ball_cm", {o.ball_cm.x(), o.ball_cm.y()}},
-            {"turn_step_deg", o.turn_step_deg},
-            {"measured_height_sigma_cm", o.measured_height_sigma_cm
-                                             ? nlohmann::json(*o.measured_height_sigma_cm)
-                                             : nlohmann::json()}}}};
+  nlohmann::json out = {{"methods", methods},
+                        {"setup",
+                         {{"seed", o.seed},
+                          {"mirror", mirror_kind_name(o.mirror)},
+                          {"tilt_deg", o.tilt_deg},
+                          {"tilt_azimuth_deg", o.tilt_azimuth_deg},
+                          {"center_offset_px", {o.center_offset_px.x(), o.center_offset_px.y()}},
+                          {"sensor_noise", o.sensor_noise},
+                          {"click_noise_px", o.click_noise_px},
+                          {"ball_cm", {o.ball_cm.x(), o.ball_cm.y()}},
+                          {"turn_step_deg", o.turn_step_deg},
+                          {"measured_height_sigma_cm",
+                           o.measured_height_sigma_cm ? nlohmann::json(*o.measured_height_sigma_cm)
+                                                      : nlohmann::json()}}}};
+  return with_wall_clock_apart(std::move(out), {"fit_seconds"});
 }
 
 std::string omni_experiment_table(const OmniExperimentResult& result) {

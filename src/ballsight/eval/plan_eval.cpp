@@ -8,6 +8,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/route_plot.hpp"
+#include "ballsight/eval/wall_clock.hpp"
 #include "ballsight/plan/exact_path.hpp"
 #include "ballsight/plan/planner.hpp"
 #include "ballsight/world/collection_sites.hpp"
@@ -203,7 +204,7 @@ nlohmann::json plan_eval_json(const PlanEvalReport& report) {
           100.0 * (1.0 - ours.at(n).time_s.mean / f.time_s.mean);
     }
   }
-  return j;
+  return with_wall_clock_apart(std::move(j), {"plan_ms_mean"});
 }
 
 std::string plan_eval_text(const PlanEvalReport& report) {
