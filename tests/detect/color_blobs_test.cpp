@@ -21,11 +21,12 @@ struct CentroidStats {
 // Reference balls (orange, 2 cm) in noisy, shadowed court views: every visible one within 19 m is
 // found, centroids close to the analytic silhouette centroid, and nothing else is found.
 TEST(ColorBlobs, ReferenceBallsInCourtViews) {
-  const auto& court = sim::testing::shared_court();
+  const auto& court = sim::test_support::shared_court();
   CentroidStats stats;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     const sim::CourtScene scene = sim::make_court_scene(court.rig.court, {}, seed);
-    const sim::testing::RenderedScene rendered = sim::testing::render_in_all_cameras(scene, seed);
+    const sim::test_support::RenderedScene rendered =
+        sim::test_support::render_in_all_cameras(scene, seed);
     for (std::size_t c = 0; c < court.rig.cameras.size(); ++c) {
       SCOPED_TRACE("scene seed " + std::to_string(seed) + " camera " + std::to_string(c));
       const std::vector<ColorBlob> blobs = find_color_blobs(rendered.renders[c].bgr, {});

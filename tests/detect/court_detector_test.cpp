@@ -120,12 +120,12 @@ TEST(CourtDetector, FindsTheSimulatedBalls) {
   // every ball can be seen (the net hides a sixth of them from some camera, and the stray count,
   // a dozen far reference balls at ~1 px, would be judged against fewer detections; the net is
   // the world model's business: CourtNet tests, eval court).
-  const auto& court = sim::testing::shared_court_without_net();
+  const auto& court = sim::test_support::shared_court_without_net();
   int visible = 0, found = 0, detections = 0, unmatched = 0;
   std::vector<double> errors;
   for (std::uint64_t seed = 11; seed <= 13; ++seed) {
     const sim::CourtScene scene = sim::make_court_scene(court.rig.court, {}, seed);
-    const auto rendered = sim::testing::render_in_all_cameras(court, scene, seed);
+    const auto rendered = sim::test_support::render_in_all_cameras(court, scene, seed);
     for (std::size_t c = 0; c < court.rig.cameras.size(); ++c) {
       SCOPED_TRACE("scene seed " + std::to_string(seed) + " camera " + std::to_string(c));
       const sim::CourtCamera& camera = court.rig.cameras[c];

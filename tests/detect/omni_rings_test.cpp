@@ -27,7 +27,7 @@ Summary summarize(std::vector<double> v) {
   return {v.size(), v[v.size() / 2], v[v.size() * 95 / 100], v.back()};
 }
 
-const Vec2 kCenter{200.0, 200.0};
+const Vec2 kConfiguredCenter{200.0, 200.0};
 const Vec2 kRingCenter{201.5, 199.0};  // the rings' true centre, off the configured one
 const std::vector<double> kRadii{60.0, 90.0, 115.0, 135.0};
 constexpr double kStrutThetaDeg[] = {30.0, 150.0, 270.0};
@@ -42,7 +42,7 @@ cv::Mat1b ring_image() {
                220, 3, cv::LINE_AA, shift);
   }
   for (const double theta : kStrutThetaDeg) {
-    const Vec2 end = pixel_from_image_polar({theta, 190.0}, kCenter);
+    const Vec2 end = pixel_from_image_polar({theta, 190.0}, kConfiguredCenter);
     cv::line(image, {200, 200}, {static_cast<int>(end.x()), static_cast<int>(end.y())}, 5, 9);
   }
   cv::Mat1b noise(image.size());
@@ -51,10 +51,10 @@ cv::Mat1b ring_image() {
   return image;
 }
 
-// Where ring `radius` crosses the ray from kCenter at image angle theta.
+// Where ring `radius` crosses the ray from kConfiguredCenter at image angle theta.
 double true_radius(double theta_deg, double radius) {
-  const Vec2 u = pixel_from_image_polar({theta_deg, 1.0}, kCenter) - kCenter;
-  const Vec2 c = kCenter - kRingCenter;
+  const Vec2 u = pixel_from_image_polar({theta_deg, 1.0}, kConfiguredCenter) - kConfiguredCenter;
+  const Vec2 c = kConfiguredCenter - kRingCenter;
   const double b = u.dot(c);
   return -b + std::sqrt(b * b - c.squaredNorm() + radius * radius);
 }
@@ -66,7 +66,7 @@ RingSearchOptions four_rings() {
 }
 
 TEST(OmniRings, FindsEveryRingAtItsTrueRadius) {
-  const RingSearch search = find_omni_rings(ring_image(), kCenter, four_rings());
+  const RingSearch search = find_omni_rings(ring_image(), kConfiguredCenter, four_rings());
   ASSERT_EQ(search.ring_radius_px.size(), kRadii.size());
   std::vector<double> errors;
   for (const RingDirection& d : search.directions) {
@@ -83,7 +83,7 @@ TEST(OmniRings, FindsEveryRingAtItsTrueRadius) {
 }
 
 TEST(OmniRings, RejectsTheDirectionsTheStrutsHide) {
-  const RingSearch search = find_omni_rings(ring_image(), kCenter, four_rings());
+  const RingSearch search = find_omni_rings(ring_image(), kConfiguredCenter, four_rings());
   for (const RingDirection& d : search.directions) {
     for (const double strut : kStrutThetaDeg) {
       if (std::abs(d.theta_deg - strut) < 0.5) {
@@ -101,7 +101,7 @@ TEST(OmniRings, TooManyRingsAskedIsAnError) {
   RingSearchOptions options = four_rings();
   options.rings = 6;
   try {
-    find_omni_rings(ring_image(), kCenter, options);
+    find_omni_rings(ring_image(), kConfiguredCenter, options);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("shows 4 rings"), std::string::npos) << e.what();
@@ -128,7 +128,8 @@ TEST(OmniRings, AgreesWithTheCncMslLineDetector) {
     for (double r; fields >> r;) radii.push_back(r);
     if (radii.size() < 5) continue;
     const double row = std::cos(a), column = std::sin(a);
-    thetas.push_back(image_polar_from_pixel(kCenter + Vec2(column, row), kCenter).theta_deg);
+    thetas.push_back(
+        image_polar_from_pixel(kConfiguredCenter + Vec2(column, row), kConfiguredCenter).theta_deg);
     team.push_back(radii);
   }
   ASSERT_GE(thetas.size(), 60u);

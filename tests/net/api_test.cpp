@@ -4,6 +4,7 @@
 
 #include <variant>
 
+#include "api_error.hpp"
 #include "ballsight/net/court_calibration_api.hpp"
 #include "ballsight/net/omni_calibration_api.hpp"
 #include "example_site.hpp"
@@ -12,6 +13,8 @@
 
 namespace ballsight {
 namespace {
+
+using test::expect_error;
 
 using nlohmann::json;
 
@@ -56,14 +59,6 @@ struct Fixture {
 
 NavigationUpdate update_with_robot(double x) {
   return test::sample_update({Vec2(x, 1.0), 0.5});
-}
-
-void expect_error(const ApiResponse& r, int status, const std::string& where) {
-  EXPECT_EQ(r.status, status) << r.body;
-  const json j = json::parse(r.body, nullptr, false);
-  ASSERT_TRUE(j.is_object()) << r.body;
-  EXPECT_TRUE(j.contains("error")) << r.body;
-  EXPECT_EQ(j.value("where", ""), where) << r.body;
 }
 
 TEST(Api, TheReportsFourMethodsAndItsFlag) {

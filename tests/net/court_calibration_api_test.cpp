@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "api_error.hpp"
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/file_io.hpp"
@@ -14,6 +15,8 @@
 
 namespace ballsight {
 namespace {
+
+using test::expect_error;
 
 using nlohmann::json;
 
@@ -76,12 +79,6 @@ struct CourtFixture {
                      201)["still"];
   }
 };
-
-void expect_error(const ApiResponse& r, int status, const std::string& where) {
-  EXPECT_EQ(r.status, status) << r.body;
-  const json j = json::parse(r.body, nullptr, false);
-  EXPECT_EQ(j.value("where", ""), where) << r.body;
-}
 
 const json& reference(const json& pose, const std::string& name) {
   for (const json& r : pose["references"])

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <thread>
 
+#include "api_error.hpp"
 #include "ballsight/calib/sample_csv.hpp"
 #include "ballsight/camera/ground_map_io.hpp"
 #include "ballsight/camera/image_file.hpp"
@@ -15,6 +16,8 @@
 
 namespace ballsight {
 namespace {
+
+using test::expect_error;
 
 using nlohmann::json;
 
@@ -41,13 +44,6 @@ struct OmniFixture {
     return json::parse(r.body, nullptr, false);
   }
 };
-
-void expect_error(const ApiResponse& r, int status, const std::string& where) {
-  EXPECT_EQ(r.status, status) << r.body;
-  const json j = json::parse(r.body, nullptr, false);
-  ASSERT_TRUE(j.is_object()) << r.body;
-  EXPECT_EQ(j.value("where", ""), where) << r.body;
-}
 
 TEST(OmniCalibrationApi, ABadUploadIsRefusedAndChangesNothing) {
   OmniFixture f;

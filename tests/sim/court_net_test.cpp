@@ -13,10 +13,10 @@
 namespace ballsight::sim {
 namespace {
 
-using testing::clean_scenario;
-using testing::render_in_all_cameras;
-using testing::shared_court;
-using testing::shared_court_without_net;
+using test_support::clean_scenario;
+using test_support::render_in_all_cameras;
+using test_support::shared_court;
+using test_support::shared_court_without_net;
 
 SceneSphere tennis_ball_at(double x, double y) {
   return {ObjectKind::tennis_ball, 0, Vec3(x, y, kTennisBallRadiusM), kTennisBallRadiusM,

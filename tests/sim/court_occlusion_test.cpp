@@ -8,9 +8,9 @@
 namespace ballsight::sim {
 namespace {
 
-using testing::clean_scenario;
-using testing::render_in_all_cameras;
-using testing::shared_court;
+using test_support::clean_scenario;
+using test_support::render_in_all_cameras;
+using test_support::shared_court;
 
 /// Pixels of the id buffer showing object `index`.
 int pixels_showing(const CourtRender& render, int index) {
@@ -18,7 +18,7 @@ int pixels_showing(const CourtRender& render, int index) {
 }
 
 TEST(CourtOcclusion, BallRightBehindTheRobotIsHiddenFromThatCameraOnly) {
-  const testing::CourtFixture& court = shared_court();
+  const test_support::CourtFixture& court = shared_court();
   CourtScene scene;
   // On camera 0's side of the net and far enough from it that the cameras on the other side see
   // the box and the ball over the net; turned so that no camera sees one marker behind the other.
@@ -57,7 +57,7 @@ TEST(CourtOcclusion, BallRightBehindTheRobotIsHiddenFromThatCameraOnly) {
 // A bottle stands up like the robot: it hides a ball right behind it from one camera, and is
 // seen by all four; a leaf lies flat and hides nothing, but colours the floor.
 TEST(CourtOcclusion, ABottleHidesTheBallBehindItALeafColoursTheFloor) {
-  const testing::CourtFixture& court = shared_court();
+  const test_support::CourtFixture& court = shared_court();
   CourtScene scene;
   scene.robot.pose = {{-8.0, 1.0}, 0.3};
   scene.effects.noise_sigma = 0.0;

@@ -11,9 +11,9 @@
 namespace ballsight::sim {
 namespace {
 
-using testing::clean_scenario;
-using testing::render_in_all_cameras;
-using testing::shared_court;
+using test_support::clean_scenario;
+using test_support::render_in_all_cameras;
+using test_support::shared_court;
 
 struct HsvRange {
   cv::Scalar lo, hi;

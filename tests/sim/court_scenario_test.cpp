@@ -14,7 +14,7 @@
 namespace ballsight::sim {
 namespace {
 
-using testing::render_in_all_cameras;
+using test_support::render_in_all_cameras;
 
 std::vector<const SceneSphere*> of_kind(const CourtScene& scene, ObjectKind kind) {
   std::vector<const SceneSphere*> out;
@@ -208,7 +208,7 @@ TEST(CourtScenario, EveryCameraSeesSixWellSpreadReferenceBalls) {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const auto rendered = render_in_all_cameras(make_court_scene({}, {}, seed));
-    const testing::CourtFixture& court = testing::shared_court();
+    const test_support::CourtFixture& court = test_support::shared_court();
     for (size_t c = 0; c < court.rig.cameras.size(); ++c) {
       const CourtCamera& camera = court.rig.cameras[c];
       std::vector<cv::Point2f> near;  // visible and within 20 m: about 1 px in radius or more

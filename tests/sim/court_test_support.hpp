@@ -11,7 +11,7 @@
 #include "ballsight/sim/court_scenario.hpp"
 #include "ballsight/sim/court_truth.hpp"
 
-namespace ballsight::sim::testing {
+namespace ballsight::sim::test_support {
 
 inline constexpr std::uint64_t kRigSeed = 20240611;
 
@@ -71,4 +71,4 @@ inline CourtScenarioOptions clean_scenario() {
   return options;
 }
 
-}  // namespace ballsight::sim::testing
+}  // namespace ballsight::sim::test_support

@@ -162,7 +162,7 @@ OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options) {
   }
   const auto record_fit = [&](const std::string& name, Clock::time_point start,
                               const OmniGroundModel& model) {
-    MethodResult& fitted = result.methods[name];
+    OmniMethodResult& fitted = result.methods[name];
     fitted.fit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     fitted.held_out_median_cm = ground_errors(model, held_out).position_cm.median;
   };

@@ -52,7 +52,7 @@ struct DistanceResult {
   int found = 0;
 };
 
-struct MethodResult {
+struct OmniMethodResult {
   std::map<int, DistanceResult> by_distance;
   double held_out_median_cm = 0.0;  // mapping error on random floor points (oracle: 0)
   double fit_seconds = 0.0;
@@ -61,7 +61,7 @@ struct MethodResult {
 
 struct OmniExperimentResult {
   OmniExperimentOptions options;
-  std::map<std::string, MethodResult> methods;  // poly, paper-mlp, ballsight, oracle
+  std::map<std::string, OmniMethodResult> methods;  // poly, paper-mlp, ballsight, oracle
 };
 
 OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options);

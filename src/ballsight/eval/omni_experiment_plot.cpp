@@ -19,7 +19,7 @@ const std::map<std::string, cv::Scalar> kColours = {{"poly", {40, 40, 220}},
 constexpr double kZoomBelowCm = 5.0;
 
 cv::Mat plot_omni_experiment(const OmniExperimentResult& result) {
-  const std::map<std::string, MethodResult>& methods = result.methods;
+  const std::map<std::string, OmniMethodResult>& methods = result.methods;
   std::vector<int> distances = result.options.distances_cm;
   const Vec2 truth = result.options.ball_cm;
   // Row 0: every method; row 1: the methods whose estimates all lie within kZoomBelowCm.

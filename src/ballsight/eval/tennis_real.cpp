@@ -80,9 +80,9 @@ std::vector<PhotoBall> report_hsv(const cv::Mat& bgr) {
   return balls;
 }
 
-MethodResult run_method(const std::string& name, const Detector& detect,
-                        const std::vector<LabelledPhotoSet>& sets, int timing_runs) {
-  MethodResult result{name, {}, {}};
+TennisMethodResult run_method(const std::string& name, const Detector& detect,
+                              const std::vector<LabelledPhotoSet>& sets, int timing_runs) {
+  TennisMethodResult result{name, {}, {}};
   for (const LabelledPhotoSet& set : sets) {
     for (const LabelledPhoto& photo : set.photos) {
       const cv::Mat image = read_image_bgr(set.images_dir / photo.file);
@@ -197,7 +197,7 @@ nlohmann::json match_json(const BoxMatch& match) {
 
 nlohmann::json tennis_real_json(const TennisRealResult& result) {
   nlohmann::json methods = nlohmann::json::array();
-  for (const MethodResult& method : result.methods) {
+  for (const TennisMethodResult& method : result.methods) {
     nlohmann::json photos = nlohmann::json::array();
     std::vector<double> ms;
     for (const PhotoResult& photo : method.photos) {
@@ -233,7 +233,7 @@ std::string tennis_real_table(const TennisRealResult& result) {
         << fixed(median_or_zero(match.center_error_ratio), 3) << std::setw(8) << fixed(ms, 2)
         << "\n";
   };
-  for (const MethodResult& method : result.methods) {
+  for (const TennisMethodResult& method : result.methods) {
     std::vector<double> ms;
     for (const PhotoResult& photo : method.photos) {
       row(method.method, photo.set + "/" + photo.file, photo.match, photo.milliseconds);

@@ -50,7 +50,7 @@ struct PhotoResult {
   double milliseconds = 0.0;  // median of the timing runs
 };
 
-struct MethodResult {
+struct TennisMethodResult {
   std::string method;  // "ballsight", "report-hsv"
   std::vector<PhotoResult> photos;
   BoxMatch total;
@@ -63,7 +63,7 @@ struct TennisRealOptions {
 };
 
 struct TennisRealResult {
-  std::vector<MethodResult> methods;  // ballsight, then the report's HSV detector
+  std::vector<TennisMethodResult> methods;  // ballsight, then the report's HSV detector
 };
 
 /// Runs ballsight's detector and the tennis report's (HSV threshold, median filter, contours'

@@ -479,8 +479,9 @@ bool OmniCalibrationApi::owns(const std::string& path) {
 }
 
 ApiResponse OmniCalibrationApi::handle(const ApiRequest& request) {
-  const auto [path, query] = split_target(request.target);
-  return answer_or_error([&] { return impl_->route(request, path_parts(path, kPrefix), query); });
+  const RequestTarget target = split_target(request.target);
+  return answer_or_error(
+      [&] { return impl_->route(request, path_parts(target.path, kPrefix), target.query); });
 }
 
 }  // namespace ballsight
