@@ -1,7 +1,7 @@
 #pragma once
 // The wall-clock times of an evaluation, kept apart from its figures: with one seed, everything
-// an evaluation prints in JSON but its "wall_clock" member is the same to the byte in every run and
-// in every build (Release or with the sanitizers; docs/RESULTS.md, "Same seed, same figures").
+// an evaluation prints in JSON but its "wall_clock" member is the same to the byte in every run
+// (docs/RESULTS.md, "Same seed, same figures").
 
 #include <nlohmann/json.hpp>
 #include <set>
