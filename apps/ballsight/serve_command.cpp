@@ -4,9 +4,11 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/eval/simulated_service.hpp"
@@ -24,11 +26,29 @@ struct ServeArgs {
   std::string site;
   HttpServiceArgs http;
   std::string planner = "ballsight";
-  int balls = -1;           // simulated court: tennis balls (-1: the scenario's)
-  double duration_s = 0.0;  // 0: until SIGINT or SIGTERM
-  std::string fail_camera;  // K@T
+  int balls = -1;                        // simulated court: tennis balls (-1: the scenario's)
+  double duration_s = 0.0;               // 0: until SIGINT or SIGTERM
+  std::vector<std::string> fail_camera;  // K@T or K@T-U, each
   SimulatedServiceOptions service;
 };
+
+// K@T (camera K fails at simulated second T for good) or K@T-U (and returns at U).
+CameraOutage parse_camera_outage(const std::string& text) {
+  const std::string form = "K@T or K@T-U (camera index @ simulated seconds)";
+  const std::size_t at = text.find('@');
+  require(at != std::string::npos, "--sim-fail-camera",
+          "expected " + form + ", got '" + text + "'");
+  const double k = parse_numbers(text.substr(0, at), 1, "--sim-fail-camera", form)[0];
+  require(k == std::floor(k), "--sim-fail-camera", "camera K must be an integer");
+  const std::string when = text.substr(at + 1);
+  const std::size_t dash = when.find('-');
+  CameraOutage outage{static_cast<int>(k),
+                      parse_numbers(when.substr(0, dash), 1, "--sim-fail-camera", form)[0]};
+  if (dash != std::string::npos) {
+    outage.until_s = parse_numbers(when.substr(dash + 1), 1, "--sim-fail-camera", form)[0];
+  }
+  return outage;
+}
 
 void run_serve(const ServeArgs& args) {
   require(args.sim != !args.site.empty(), "--site",
@@ -43,16 +63,8 @@ void run_serve(const ServeArgs& args) {
     SimulatedServiceOptions options = args.service;
     options.planner.kind = *kind;
     if (args.balls >= 0) options.balls = args.balls;
-    if (!args.fail_camera.empty()) {
-      const std::size_t at = args.fail_camera.find('@');
-      require(at != std::string::npos, "--sim-fail-camera",
-              "expected K@T (camera index @ simulated seconds), got '" + args.fail_camera + "'");
-      const std::vector<double> k =
-          parse_numbers(args.fail_camera.substr(0, at), 1, "--sim-fail-camera", "K@T");
-      const std::vector<double> t =
-          parse_numbers(args.fail_camera.substr(at + 1), 1, "--sim-fail-camera", "K@T");
-      require(k[0] == std::floor(k[0]), "--sim-fail-camera", "camera K must be an integer");
-      options.fail_camera = CameraFailure{static_cast<int>(k[0]), t[0]};
+    for (const std::string& text : args.fail_camera) {
+      options.camera_outages.push_back(parse_camera_outage(text));
     }
     court = std::make_unique<SimulatedCourtService>(options);
   } else {
@@ -108,7 +120,7 @@ void add_serve_command(CLI::App& app) {
                 "service; the robot where it stood, collected balls gone)");
   cmd->add_option("--sim-fail-camera", args->fail_camera,
                   "Simulated court: camera K (0-3) delivers no frames from simulated second T "
-                  "on (K@T)");
+                  "on (K@T), or until second U (K@T-U); may be given several times");
   cmd->add_option("--duration", args->duration_s, "Stop after this many seconds (0: on a signal)")
       ->capture_default_str();
   cmd->callback([args] { run_serve(*args); });

@@ -228,7 +228,7 @@ TEST(ServeCli, BadOptionsFailWithOneLine) {
   expect_one_line_error(run_cli({"serve", "--sim", "--listen", "nowhere:80"}), "--listen");
   expect_one_line_error(run_cli({"serve", "--sim", "--planner", "exact"}), "--planner");
   expect_one_line_error(run_cli({"serve", "--sim", "--resume"}), "--resume");
-  for (const char* bad : {"7@3", "1", "1@x", "1.5@2", "1@-2"}) {
+  for (const char* bad : {"7@3", "1", "1@x", "1.5@2", "1@-2", "1@5-3", "1@2-x"}) {
     expect_one_line_error(run_cli({"serve", "--sim", "--sim-fail-camera", bad}),
                           "--sim-fail-camera");
   }

@@ -155,7 +155,7 @@ void refine(const std::vector<Vec2>& points, std::vector<BlobCircle>& circles) {
   for (int iteration = 0; iteration < 3; ++iteration) {
     const auto parts = assign(points, circles, iteration == 0);
     for (std::size_t k = 0; k < circles.size(); ++k) {
-      Vec2 c;
+      Vec2 c = Vec2::Zero();
       double r = 0.0;
       if (arc_concentration(parts[k], circles[k].center_px) > 0.85 || !fit_circle(parts[k], c, r))
         continue;

@@ -20,7 +20,11 @@ namespace ballsight {
 
 namespace {
 
-enum Stream : std::uint64_t { kBoardStream = 1, kReferenceSceneStream, kNoiseStream = 100 };
+enum CalibrationStream : std::uint64_t {
+  kBoardStream = 1,
+  kReferenceSceneStream,
+  kNoiseStream = 100
+};
 
 const sim::ChessboardSpec kBoard;  // 9 x 6 inner corners, 5 cm squares
 

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/chart.hpp"
 
 namespace ballsight {
@@ -28,12 +28,6 @@ const Direction kDirections[] = {
     {0, {0, 0, 0}},        {45, {0, 159, 230}},  {90, {233, 180, 86}}, {135, {115, 158, 0}},
     {180, {66, 228, 240}}, {225, {178, 114, 0}}, {270, {0, 94, 213}},  {315, {167, 121, 204}},
 };
-
-std::string fixed(double v, int decimals) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
-}
 
 // The largest plausible written value, to scale the distance axis and the heat map.
 double largest_distance_cm(const InspectedLut& lut, const LutInspection& inspection) {

@@ -7,6 +7,8 @@
 #include <mutex>
 #include <opencv2/core/utility.hpp>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
@@ -36,11 +38,12 @@ void SimulatedServiceOptions::validate() const {
   require(std::isfinite(cluster_share) && cluster_share >= 0.0 && cluster_share <= 1.0,
           "--cluster-share", "must be in [0, 1]");
   require(!resume || !truth_out.empty(), "--resume", "needs --truth-out (the court to resume)");
-  if (fail_camera) {
-    require(fail_camera->camera >= 0 && fail_camera->camera < 4, "--sim-fail-camera",
+  for (const CameraOutage& o : camera_outages) {
+    require(o.camera >= 0 && o.camera < 4, "--sim-fail-camera",
             "camera must be 0..3 (the court's four cameras)");
-    require(std::isfinite(fail_camera->at_s) && fail_camera->at_s >= 0.0, "--sim-fail-camera",
+    require(std::isfinite(o.from_s) && o.from_s >= 0.0, "--sim-fail-camera",
             "time must be a non-negative number of simulated seconds");
+    require(o.until_s > o.from_s, "--sim-fail-camera", "the camera must return after it fails");
   }
 }
 
@@ -61,11 +64,21 @@ struct SimulatedCourtService::Impl {
   int collected = 0, blocked_ticks = 0, balls_left = 0;
   double time_s = 0.0;
   Pose2D robot;
-  std::atomic<bool> camera_failed{false};  // health() reads it on the server's thread
-  Pose2D start;                            // the robot when this service began
+  std::vector<bool> camera_failed = std::vector<bool>(4, false);  // mutex held
+  Pose2D start;  // the robot when this service began
   // The court's record: the scene as it began (written first), or the run this one resumes.
   std::optional<LoopTruth> resumed;
   std::vector<SceneBall> scene_balls;
+
+  std::vector<bool> failed_cameras(double at_s) const {
+    std::vector<bool> failed(camera_failed.size(), false);
+    for (const CameraOutage& o : options.camera_outages) {
+      for (std::size_t k = 0; k < failed.size(); ++k) {
+        if (o.covers(static_cast<int>(k), at_s)) failed[k] = true;
+      }
+    }
+    return failed;
+  }
 
   bool driving(Clock::time_point now) const {  // mutex held
     return last_command && now - *last_command < std::chrono::seconds(3);
@@ -115,7 +128,7 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
     s.world->resume(last.world.time_s, last.world.robot, gone);
     s.collected = static_cast<int>(gone.size());
     s.time_s = last.world.time_s;
-    s.camera_failed = options.fail_camera && s.time_s >= options.fail_camera->at_s;  // recorded
+    s.camera_failed = s.failed_cameras(s.time_s);  // recorded as they were
   }
   s.balls_left = s.world->balls_left();
   s.start = s.world->motion().pose;
@@ -183,18 +196,22 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     // The cameras rendered side by side (the pipeline after them is a few ms).
     std::vector<cv::Mat> frames(s.court->cameras().size());
     const sim::CourtScene& scene = s.world->scene();
-    const std::optional<CameraFailure>& failure = s.options.fail_camera;
-    const bool failed = failure && s.world->time_s() >= failure->at_s;
-    if (failed && !s.camera_failed) {
-      record(event_record({s.world->time_s(),
-                           s.court->site().cameras[static_cast<std::size_t>(failure->camera)].name +
-                               " failed: no more frames"}));
+    const std::vector<bool> failed = s.failed_cameras(s.world->time_s());
+    std::vector<bool> was;
+    {
+      const std::lock_guard lock(s.mutex);
+      was = std::exchange(s.camera_failed, failed);
     }
-    s.camera_failed = failed;
+    for (std::size_t k = 0; k < failed.size(); ++k) {
+      if (failed[k] == was[k]) continue;
+      record(event_record({s.world->time_s(), s.court->site().cameras[k].name +
+                                                  (failed[k] ? " failed: no more frames"
+                                                             : " returned: frames again")}));
+    }
     cv::parallel_for_(cv::Range(0, static_cast<int>(frames.size())), [&](const cv::Range& r) {
       for (int c = r.start; c < r.end; ++c) {
         const auto k = static_cast<std::size_t>(c);
-        if (failed && c == failure->camera) continue;  // an empty frame: the camera is gone
+        if (failed[k]) continue;  // an empty frame: the camera is gone
         frames[k] = s.court->render(k, scene, tick);
       }
     });
@@ -267,15 +284,14 @@ nlohmann::json SimulatedCourtService::health() const {
   const Impl& s = *impl_;
   nlohmann::json h = s.publisher->health();
   nlohmann::json cameras = nlohmann::json::array();
-  for (const SiteCamera& c : s.court->site().cameras) {
-    cameras.push_back({{"name", c.name}, {"state", "simulated"}, {"frames", h["frame_sets"]}});
-  }
-  if (s.camera_failed) {
-    cameras[static_cast<std::size_t>(s.options.fail_camera->camera)]["state"] = "failed";
+  const std::lock_guard lock(s.mutex);
+  for (std::size_t k = 0; k < s.court->site().cameras.size(); ++k) {
+    cameras.push_back({{"name", s.court->site().cameras[k].name},
+                       {"state", s.camera_failed[k] ? "failed" : "simulated"},
+                       {"frames", h["frame_sets"]}});
   }
   h["cameras"] = cameras;
   h["render_ms"] = s.render_ms.load();
-  const std::lock_guard lock(s.mutex);
   h["sim"] = {{"time_s", s.time_s},
               {"balls_left", s.balls_left},
               {"collected", s.collected},

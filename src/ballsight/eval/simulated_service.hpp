@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -24,10 +25,15 @@
 
 namespace ballsight {
 
-/// A camera that stops delivering frames at a moment of simulated time.
-struct CameraFailure {
+/// A camera that delivers no frames from one moment of simulated time until another (or for good).
+struct CameraOutage {
   int camera = 0;  // index in the site's cameras
-  double at_s = 0.0;
+  double from_s = 0.0;
+  double until_s = std::numeric_limits<double>::infinity();
+
+  bool covers(int c, double time_s) const {
+    return c == camera && time_s >= from_s && time_s < until_s;
+  }
 };
 
 struct SimulatedServiceOptions {
@@ -39,8 +45,8 @@ struct SimulatedServiceOptions {
   double robot_wait_s = 1.0;        // for a driving robot's command, at most (wall)
   std::filesystem::path truth_out;  // JSON lines, one per tick (empty: not written)
   bool resume = false;              // continue the court recorded in truth_out (when it exists)
-  std::optional<CameraFailure> fail_camera;
-  bool report_pipeline = false;  // the report's court pipeline instead of ballsight's
+  std::vector<CameraOutage> camera_outages;  // a camera may fail and come back, several times
+  bool report_pipeline = false;              // the report's court pipeline instead of ballsight's
   PlannerOptions planner;
 
   /// Throws InputError naming the first invalid field.

@@ -1,0 +1,69 @@
+#include "ballsight/eval/simulated_service.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/eval/loop_truth.hpp"
+#include "ballsight/net/navigation_hub.hpp"
+#include "temp_dir.hpp"
+
+namespace ballsight {
+namespace {
+
+// A camera fails and returns while nobody drives (the court keeps to the wall clock): the record
+// says both, the health says which camera is dark, and the pipeline goes on without it.
+TEST(SimulatedService, ACameraFailsAndReturns) {
+  const test::TempDir dir;
+  SimulatedServiceOptions options;
+  options.seed = 3;
+  options.balls = 4;
+  options.vision_hz = 20.0;
+  options.truth_out = dir / "truth.jsonl";
+  options.camera_outages = {{2, 0.1, 0.3}, {0, 0.4}};
+  SimulatedCourtService service(options);
+  NavigationHub hub;
+  std::atomic<bool> stop{false};
+  std::thread runner([&] { service.run(hub, stop); });
+  const auto sim_time = [&] { return service.health()["sim"]["time_s"].get<double>(); };
+  const auto state = [&](int k) { return service.health()["cameras"][k]["state"]; };
+  bool saw_failed = false;
+  while (sim_time() < 0.3) {
+    if (sim_time() > 0.12 && sim_time() < 0.28) saw_failed = saw_failed || state(2) == "failed";
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  while (sim_time() < 0.5) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(state(2), "simulated");
+  EXPECT_EQ(state(0), "failed");
+  stop = true;
+  runner.join();
+  EXPECT_TRUE(saw_failed);
+
+  const LoopTruth truth = read_loop_truth(options.truth_out);
+  std::vector<std::string> camera_events;
+  for (const TruthEvent& e : truth.events) {
+    if (e.what.find("frames") != std::string::npos) camera_events.push_back(e.what);
+  }
+  const std::vector<std::string> names = {service.site().cameras[2].name,
+                                          service.site().cameras[0].name};
+  EXPECT_EQ(camera_events, (std::vector<std::string>{names[0] + " failed: no more frames",
+                                                     names[0] + " returned: frames again",
+                                                     names[1] + " failed: no more frames"}));
+  EXPECT_GT(service.health()["frame_sets"].get<int>(), 8);
+}
+
+TEST(SimulatedService, AnOutageMustEndAfterItBegins) {
+  SimulatedServiceOptions options;
+  options.camera_outages = {{1, 2.0, 1.0}};
+  EXPECT_THROW(options.validate(), InputError);
+  options.camera_outages = {{4, 1.0}};
+  EXPECT_THROW(options.validate(), InputError);
+  options.camera_outages = {{3, 1.0, 2.0}, {3, 5.0}};
+  EXPECT_NO_THROW(options.validate());
+}
+
+}  // namespace
+}  // namespace ballsight
