@@ -42,6 +42,13 @@ function(ballsight_layer name)
   add_library(ballsight::${name} ALIAS ballsight_${name})
 endfunction()
 
+# ballsight_sanitized_names(<list>): in the list variable, every ballsight::<layer> becomes
+# ballsight_<layer>_sanitized (ballsight_sanitized_layers).
+function(ballsight_sanitized_names list)
+  list(TRANSFORM ${list} REPLACE "^ballsight::(.*)$" "ballsight_\\1_sanitized")
+  set(${list} ${${list}} PARENT_SCOPE)
+endfunction()
+
 # ballsight_sanitized_layers(): with BALLSIGHT_SANITIZE, ballsight_<layer>_sanitized for every
 # layer, what the unit tests of the sanitized layers link: a second build of each layer of
 # BALLSIGHT_SANITIZED_LAYERS with the sanitizers (at -O1, the sanitizers' usual level), and for
@@ -54,7 +61,7 @@ function(ballsight_sanitized_layers)
   foreach(name ${layers})
     get_property(sources GLOBAL PROPERTY BALLSIGHT_LAYER_${name}_SOURCES)
     get_property(deps GLOBAL PROPERTY BALLSIGHT_LAYER_${name}_DEPS)
-    list(TRANSFORM deps REPLACE "^ballsight::(.*)$" "ballsight_\\1_sanitized")
+    ballsight_sanitized_names(deps)
     set(copy ballsight_${name}_sanitized)
     if(sources AND name IN_LIST BALLSIGHT_SANITIZED_LAYERS)
       add_library(${copy} STATIC EXCLUDE_FROM_ALL ${sources})
@@ -65,12 +72,11 @@ function(ballsight_sanitized_layers)
       target_compile_options(${copy} PRIVATE -O1)
       set_target_properties(${copy} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 6
                                                BALLSIGHT_SANITIZED ON)
-    elseif(sources)
+    else()  # the ordinary library's archive (none for a header-only layer)
       add_library(${copy} INTERFACE)
-      target_link_libraries(${copy} INTERFACE $<TARGET_FILE:ballsight_${name}> ${deps})
-      target_include_directories(${copy} INTERFACE ${PROJECT_SOURCE_DIR}/src)
-    else()
-      add_library(${copy} INTERFACE)
+      if(sources)
+        target_link_libraries(${copy} INTERFACE $<TARGET_FILE:ballsight_${name}>)
+      endif()
       target_link_libraries(${copy} INTERFACE ${deps})
       target_include_directories(${copy} INTERFACE ${PROJECT_SOURCE_DIR}/src)
     endif()

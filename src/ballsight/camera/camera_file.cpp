@@ -161,12 +161,10 @@ std::string parse_error_text(const cv::Exception& e, int added_lines) {
 // docs/RESULTS.md, "Fuzzing"): the text must be YAML, by yaml-cpp, before OpenCV reads it. That
 // refuses the first; the second (a line less indented than the mapping before it) yaml-cpp accepts,
 // and it still hangs OpenCV: reading the keys with yaml-cpp instead of OpenCV is the cure, not done
-// yet. OpenCV's own directive ("%YAML:1.0") is not YAML's; it is left out of the check.
-void require_yaml(std::string_view text, const std::string& name) {
-  const std::string body(
-      text.substr(0, 5) == "%YAML" ? text.substr(std::min(text.find('\n'), text.size())) : text);
+// yet. `body`: the text without OpenCV's own directive ("%YAML:1.0"), which is not YAML's.
+void require_yaml(std::string_view body, const std::string& name) {
   try {
-    YAML::Load(body);
+    YAML::Load(std::string(body));
   } catch (const YAML::Exception& e) {
     throw InputError(name + ": not a readable YAML file (line " + std::to_string(e.mark.line + 1) +
                      ": " + e.msg + ")");
@@ -182,7 +180,7 @@ cv::Mat column(const std::vector<double>& values) {
 CameraFile parse_camera_file(std::string_view text, const std::string& name) {
   // OpenCV recognises YAML in memory by its directive; ROS files have none.
   const bool has_directive = text.substr(0, 5) == "%YAML";
-  require_yaml(text, name);
+  require_yaml(has_directive ? text.substr(std::min(text.find('\n'), text.size())) : text, name);
   const std::string yaml = has_directive ? std::string(text) : "%YAML:1.0\n" + std::string(text);
   cv::FileStorage storage;
   try {

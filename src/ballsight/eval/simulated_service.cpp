@@ -73,9 +73,7 @@ struct SimulatedCourtService::Impl {
   std::vector<bool> failed_cameras(double at_s) const {
     std::vector<bool> failed(camera_failed.size(), false);
     for (const CameraOutage& o : options.camera_outages) {
-      for (std::size_t k = 0; k < failed.size(); ++k) {
-        if (o.covers(static_cast<int>(k), at_s)) failed[k] = true;
-      }
+      if (o.covers(at_s)) failed[static_cast<std::size_t>(o.camera)] = true;  // validated
     }
     return failed;
   }

@@ -31,9 +31,7 @@ struct CameraOutage {
   double from_s = 0.0;
   double until_s = std::numeric_limits<double>::infinity();
 
-  bool covers(int c, double time_s) const {
-    return c == camera && time_s >= from_s && time_s < until_s;
-  }
+  bool covers(double time_s) const { return time_s >= from_s && time_s < until_s; }
 };
 
 struct SimulatedServiceOptions {
