@@ -39,8 +39,8 @@ struct CameraFile {
 
 /// Parses the text of a calibration file; `name` (the file) prefixes every error. A ROS
 /// camera_info is recognised by its `distortion_model` key (plumb_bob or rational_polynomial).
-/// Throws InputError "<name>: key '<key>' ..." for a missing or malformed key, or
-/// "<name>: not a readable YAML file (...)".
+/// Throws InputError "<name>:<line>: key '<key>' ..." for a missing or malformed key, or
+/// "<name>:<line>:<column>: not valid YAML: ...". Keys it does not know are allowed.
 CameraFile parse_camera_file(std::string_view text, const std::string& name);
 
 /// Reads and parses a calibration file; throws InputError naming the file (and the key).

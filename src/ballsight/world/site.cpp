@@ -5,7 +5,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
-#include "ballsight/world/yaml_reader.hpp"
+#include "ballsight/core/yaml_reader.hpp"
 
 namespace ballsight {
 

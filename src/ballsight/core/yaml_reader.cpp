@@ -1,4 +1,4 @@
-#include "ballsight/world/yaml_reader.hpp"
+#include "ballsight/core/yaml_reader.hpp"
 
 #include <cmath>
 
