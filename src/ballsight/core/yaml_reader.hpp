@@ -1,9 +1,8 @@
 #pragma once
 // Strict reading of a YAML file a user keeps (yaml-cpp: the site file, camera calibration files):
 // every value is reached by its dotted key ("cameras[1].source.file"), typed on the way, and every
-// error reads
-// "<file>:<line>: key '<key>' <what was expected>". A map must be closed with finish(), which
-// rejects keys nobody asked for, so a typo never passes silently.
+// error reads "<file>:<line>: key '<key>' <what was expected>". A map must be closed with finish(),
+// which rejects keys nobody asked for, so a typo never passes silently.
 
 #include <yaml-cpp/yaml.h>
 
