@@ -34,19 +34,23 @@ struct ServeArgs {
 
 // K@T (camera K fails at simulated second T for good) or K@T-U (and returns at U).
 CameraOutage parse_camera_outage(const std::string& text) {
-  const std::string form = "K@T or K@T-U (camera index @ simulated seconds)";
+  const std::string expected =
+      "expected K@T or K@T-U (camera index @ simulated seconds), got '" + text + "'";
+  const auto number = [&](const std::string& piece) {
+    try {
+      return parse_numbers(piece, 1, "--sim-fail-camera", expected)[0];
+    } catch (const InputError&) {
+      throw InputError("--sim-fail-camera: " + expected);
+    }
+  };
   const std::size_t at = text.find('@');
-  require(at != std::string::npos, "--sim-fail-camera",
-          "expected " + form + ", got '" + text + "'");
-  const double k = parse_numbers(text.substr(0, at), 1, "--sim-fail-camera", form)[0];
+  require(at != std::string::npos, "--sim-fail-camera", expected);
+  const double k = number(text.substr(0, at));
   require(k == std::floor(k), "--sim-fail-camera", "camera K must be an integer");
   const std::string when = text.substr(at + 1);
   const std::size_t dash = when.find('-');
-  CameraOutage outage{static_cast<int>(k),
-                      parse_numbers(when.substr(0, dash), 1, "--sim-fail-camera", form)[0]};
-  if (dash != std::string::npos) {
-    outage.until_s = parse_numbers(when.substr(dash + 1), 1, "--sim-fail-camera", form)[0];
-  }
+  CameraOutage outage{static_cast<int>(k), number(when.substr(0, dash))};
+  if (dash != std::string::npos) outage.until_s = number(when.substr(dash + 1));
   return outage;
 }
 

@@ -232,6 +232,10 @@ TEST(ServeCli, BadOptionsFailWithOneLine) {
     expect_one_line_error(run_cli({"serve", "--sim", "--sim-fail-camera", bad}),
                           "--sim-fail-camera");
   }
+  for (const char* malformed : {"1", "x@2", "1@x", "1@2-x"}) {  // the whole option is quoted
+    expect_one_line_error(run_cli({"serve", "--sim", "--sim-fail-camera", malformed}),
+                          "got '" + std::string(malformed) + "'");
+  }
   expect_one_line_error(run_cli({"serve", "--sim", "--cluster-share", "2"}), "--cluster-share");
   // A record of another scene is not resumed.
   const TempDir temp;

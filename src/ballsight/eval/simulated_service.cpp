@@ -17,6 +17,7 @@
 #include "ballsight/eval/simulated_court.hpp"
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
+#include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
 
 namespace ballsight {
@@ -39,8 +40,9 @@ void SimulatedServiceOptions::validate() const {
           "--cluster-share", "must be in [0, 1]");
   require(!resume || !truth_out.empty(), "--resume", "needs --truth-out (the court to resume)");
   for (const CameraOutage& o : camera_outages) {
-    require(o.camera >= 0 && o.camera < 4, "--sim-fail-camera",
-            "camera must be 0..3 (the court's four cameras)");
+    require(o.camera >= 0 && o.camera < sim::kCourtRigCameras, "--sim-fail-camera",
+            "camera must be 0.." + std::to_string(sim::kCourtRigCameras - 1) +
+                " (the court's cameras)");
     require(std::isfinite(o.from_s) && o.from_s >= 0.0, "--sim-fail-camera",
             "time must be a non-negative number of simulated seconds");
     require(o.until_s > o.from_s, "--sim-fail-camera", "the camera must return after it fails");
@@ -64,7 +66,7 @@ struct SimulatedCourtService::Impl {
   int collected = 0, blocked_ticks = 0, balls_left = 0;
   double time_s = 0.0;
   Pose2D robot;
-  std::vector<bool> camera_failed = std::vector<bool>(4, false);  // mutex held
+  std::vector<bool> camera_failed = std::vector<bool>(sim::kCourtRigCameras, false);  // mutex held
   Pose2D start;  // the robot when this service began
   // The court's record: the scene as it began (written first), or the run this one resumes.
   std::optional<LoopTruth> resumed;

@@ -1,5 +1,6 @@
 #include "ballsight/sim/court_rig.hpp"
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -77,7 +78,8 @@ CourtRig make_court_rig(const TennisCourtSpec& court, const CourtRigOptions& opt
   CourtRig rig{court, {}};
   const double corner_x = court.surround_length_m / 2.0 + 0.25;
   const double corner_y = court.surround_width_m / 2.0 + 0.25;
-  const std::pair<double, double> corners[] = {{1, 1}, {1, -1}, {-1, -1}, {-1, 1}};
+  const std::array<std::pair<double, double>, kCourtRigCameras> corners = {
+      {{1, 1}, {1, -1}, {-1, -1}, {-1, 1}}};
   for (const auto& [sx, sy] : corners) {
     PinholeParams p;
     p.width = options.width;

@@ -21,6 +21,9 @@ struct CourtCamera {
   Vec3 center_in_field() const { return camera_from_field.inverse().translation; }
 };
 
+/// Cameras of the rig: one per corner.
+inline constexpr int kCourtRigCameras = 4;
+
 /// The report's IP cameras: its printed image coordinates reach x = 1523. `sim court` and `eval
 /// court` render at this size unless told otherwise.
 inline constexpr int kReportCameraWidth = 1920;
