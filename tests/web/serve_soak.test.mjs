@@ -3,7 +3,7 @@
 // speak), while the cameras fail and return one after another. The service's open file
 // descriptors must come back to what they were, its memory must stay flat, and it must exit
 // cleanly (against a ballsight linked with -fsanitize=address, LeakSanitizer's check at exit is
-// part of that: a leak makes the exit status 23).
+// part of that: a leak report makes the exit status 1).
 // ctest runs it for SOAK_SECONDS=20; the 10-minute soak of docs/RESULTS.md, "Long runs":
 //   BALLSIGHT_BIN=build-ci/bin/ballsight SOAK_SECONDS=600 SOAK_REPORT=soak.json \
 //     node --test tests/web/serve_soak.test.mjs
@@ -174,7 +174,7 @@ test(title, { timeout: (SECONDS + 120) * 1000 }, async (t) => {
   }
 
   assert.deepEqual(failures, [], "every client got its answer or its close");
-  const why = `a clean exit (a leak report ends it with 23):\n${service.stderr()}`;
+  const why = `a clean exit (a leak report under AddressSanitizer ends it with 1):\n${service.stderr()}`;
   assert.deepEqual(exit, { code: 0, signal: null }, why);
   assert.ok(rounds >= SECONDS / 4, `${rounds} rounds of clients`);
   const failing = Math.min(4, outages(SECONDS).length / 2);
