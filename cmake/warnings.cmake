@@ -55,7 +55,9 @@ endfunction()
 # the other layers their ordinary library, so that a test of calib, say, runs the sanitized calib,
 # camera and core under the ordinary simulator. The command and every other test link the
 # ordinary libraries: instrumented, the simulator's rendering made the whole suite three times
-# slower (docs/RESULTS.md, "Sanitizers"). Call it after the last ballsight_layer().
+# slower (docs/RESULTS.md, "Sanitizers"). The ordinary copies name a plain archive, which CMake
+# cannot order by its dependencies: a layer's DEPS list higher layers before lower ones, the order
+# the linker must read them in. Call it after the last ballsight_layer().
 function(ballsight_sanitized_layers)
   get_property(layers GLOBAL PROPERTY BALLSIGHT_LAYERS)
   foreach(name ${layers})
