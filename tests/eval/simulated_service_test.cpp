@@ -55,6 +55,37 @@ TEST(SimulatedService, ACameraFailsAndReturns) {
   EXPECT_GT(service.health()["frame_sets"].get<int>(), 8);
 }
 
+// In lockstep the court waits for the robot's acknowledgement of every update, however long it
+// takes (eval loop: a run never depends on the machine's load), and takes the robot's command.
+TEST(SimulatedService, InLockstepTheCourtWaitsForEveryAcknowledgement) {
+  SimulatedServiceOptions options;
+  options.seed = 2;
+  options.balls = 3;
+  options.lockstep = true;
+  SimulatedCourtService service(options);
+  NavigationHub hub;
+  std::atomic<bool> stop{false};
+  std::thread runner([&] { service.run(hub, stop); });
+  const auto sim_time = [&] { return service.health()["sim"]["time_s"].get<double>(); };
+  const auto published = [&] { return service.health()["frame_sets"].get<std::uint64_t>(); };
+  const Pose2D start = service.robot_start();
+  for (std::uint64_t seq = 1; seq <= 3; ++seq) {
+    while (published() < seq) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // a slow robot
+    EXPECT_EQ(published(), seq);
+    EXPECT_DOUBLE_EQ(sim_time(), 0.1 * static_cast<double>(seq - 1));
+    service.drive(seq, 0.5, 0.0);
+    hub.acknowledge(seq);
+  }
+  while (published() < 4) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  stop = true;
+  runner.join();
+  EXPECT_NEAR(sim_time(), 0.3, 1e-9);
+  const std::vector<sim::WorldTick> ticks = service.history();
+  ASSERT_EQ(ticks.size(), 3u);
+  EXPECT_GT((ticks.back().robot.position - start.position).norm(), 0.02);  // it drove
+}
+
 TEST(SimulatedService, AnOutageMustEndAfterItBegins) {
   SimulatedServiceOptions options;
   options.camera_outages = {{1, 2.0, 1.0}};

@@ -31,6 +31,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   options.cluster_share = scene.clustered ? 0.75 : 0.0;
   options.report_pipeline = system.report_pipeline;
   options.planner.kind = system.planner;
+  options.lockstep = true;
   SimulatedCourtService service(options);
   NavigationHub hub;
   ApiContext context = service.api_context(hub);
@@ -62,8 +63,12 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   link.stop();
   server.stop();
 
+  // The court is stopped from here, at wall-clock moments: a run is scored on its first
+  // max_time_s simulated seconds, the same ticks every time.
+  std::vector<sim::WorldTick> ticks = service.history();
+  std::erase_if(ticks, [&](const sim::WorldTick& t) { return t.time_s > max_time_s + 1e-6; });
   const LoopScore score =
-      score_loop(scene.balls, start, service.history(), collector_footprint(service.site().robot));
+      score_loop(scene.balls, start, ticks, collector_footprint(service.site().robot));
   return {system.name,      scene.seed,      scene.clustered,
           score.balls,      score.collected, score.all ? score.time_s : max_time_s,
           score.distance_m, score.all,       score.never_overlapped};

@@ -185,7 +185,7 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     bool driving = false;
     {
       const std::lock_guard lock(s.mutex);
-      driving = s.driving(started);
+      driving = s.options.lockstep || s.driving(started);
     }
     std::vector<int> removed;
     if (!driving) {  // no robot drives: balls reported collected are taken off by hand
@@ -220,7 +220,14 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     const std::uint64_t seq = s.publisher->publish(frames, capture_ns, hub);
     // A driving robot answers this update with its command; the court waits for it.
     sim::DriveCommand command;
-    {
+    if (s.options.lockstep) {
+      std::unique_lock lock(s.mutex);
+      while (!stop && hub.acknowledged() < seq) {  // acknowledgements come through the hub
+        s.commanded.wait_for(lock, std::chrono::milliseconds(1));
+      }
+      if (stop) break;  // an update not acknowledged does not move the court
+      command = s.command;
+    } else {
       std::unique_lock lock(s.mutex);
       if (s.driving(Clock::now())) {
         s.commanded.wait_for(lock, std::chrono::duration<double>(s.options.robot_wait_s),

@@ -36,11 +36,15 @@ struct CameraOutage {
 
 struct SimulatedServiceOptions {
   std::uint64_t seed = 1;
-  std::optional<int> balls;         // tennis balls on the court; nullopt: the scenario's 20-60
-  double cluster_share = 0.25;      // of them, in clusters of 2-4 touching balls
-  double vision_hz = 10.0;          // frame sets per second of simulated time
-  bool realtime = false;            // simulated time at wall time (else as fast as possible)
-  double robot_wait_s = 1.0;        // for a driving robot's command, at most (wall)
+  std::optional<int> balls;     // tennis balls on the court; nullopt: the scenario's 20-60
+  double cluster_share = 0.25;  // of them, in clusters of 2-4 touching balls
+  double vision_hz = 10.0;      // frame sets per second of simulated time
+  bool realtime = false;        // simulated time at wall time (else as fast as possible)
+  double robot_wait_s = 1.0;    // for a driving robot's command, at most (wall)
+  // Every update waits, however long, for the robot's acknowledgement (which it sends after its
+  // command and its report of collected balls), from the first update on: the run then never
+  // depends on wall time or the machine's load (eval loop: same seed, same run).
+  bool lockstep = false;
   std::filesystem::path truth_out;  // JSON lines, one per tick (empty: not written)
   bool resume = false;              // continue the court recorded in truth_out (when it exists)
   std::vector<CameraOutage> camera_outages;  // a camera may fail and come back, several times

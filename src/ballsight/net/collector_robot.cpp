@@ -59,7 +59,6 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
                   {{"seq", u->seq},
                    {"speed_mps", command.speed_mps},
                    {"turn_rate_dps", deg_from_rad(command.turn_rate_rps)}});
-    link.acknowledge(u->seq);
     if (drove) result.sim_time_s = drove->value("time_s", result.sim_time_s);
     const int taken = drove ? drove->value("collected", 0) : 0;
     if (taken > 0 && u->robot) {
@@ -69,6 +68,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
       link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken), mouth));
       result.collected += taken;
     }
+    link.acknowledge(u->seq);  // last: the update is dealt with, its collected balls reported
     if (progress && result.updates % 100 == 0) {
       progress("update " + std::to_string(u->seq) + ", " + std::to_string(u->balls_m.size()) +
                " balls seen, " + std::to_string(result.collected) + " collected, simulated time " +
