@@ -1,5 +1,6 @@
 #include "ballsight/eval/simulated_service.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -222,7 +223,9 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     sim::DriveCommand command;
     if (s.options.lockstep) {
       std::unique_lock lock(s.mutex);
-      while (!stop && hub.acknowledged() < seq) {  // acknowledgements come through the hub
+      // The newest update, not only this one: a report of collected balls publishes one more
+      // (the route without them), which the robot answers too before the court goes on.
+      while (!stop && hub.acknowledged() < std::max(seq, hub.latest_seq())) {
         s.commanded.wait_for(lock, std::chrono::milliseconds(1));
       }
       if (stop) break;  // an update not acknowledged does not move the court

@@ -41,9 +41,10 @@ struct SimulatedServiceOptions {
   double vision_hz = 10.0;      // frame sets per second of simulated time
   bool realtime = false;        // simulated time at wall time (else as fast as possible)
   double robot_wait_s = 1.0;    // for a driving robot's command, at most (wall)
-  // Every update waits, however long, for the robot's acknowledgement (which it sends after its
-  // command and its report of collected balls), from the first update on: the run then never
-  // depends on wall time or the machine's load (eval loop: same seed, same run).
+  // Every tick waits, however long, for the robot's acknowledgement of the newest update (sent
+  // after its command and its report of collected balls, which publishes an update of its own),
+  // from the first update on: the run then never depends on wall time or the machine's load
+  // (eval loop: same seed, same run).
   bool lockstep = false;
   std::filesystem::path truth_out;  // JSON lines, one per tick (empty: not written)
   bool resume = false;              // continue the court recorded in truth_out (when it exists)
