@@ -225,7 +225,7 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       std::unique_lock lock(s.mutex);
       // The newest update, not only this one: a report of collected balls publishes one more
       // (the route without them), which the robot answers too before the court goes on.
-      while (!stop && hub.acknowledged() < std::max(seq, hub.latest_seq())) {
+      while (!stop && hub.acknowledged() < hub.latest_seq()) {
         s.commanded.wait_for(lock, std::chrono::milliseconds(1));
       }
       if (stop) break;  // an update not acknowledged does not move the court
