@@ -1,9 +1,12 @@
 // `ballsight omni rings`: calibration from one spin, no clicking. The rings that floor lines at
 // known distances leave in the image of a robot turning on the spot are found along every
-// direction and written as calibration samples for omni fit.
+// direction and written as calibration samples for omni fit; or, with --line-toward-deg, the
+// image of one straight floor line at a known distance (each of its points at d / cos of its
+// angle off the line's normal).
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <string>
@@ -11,8 +14,10 @@
 
 #include "ballsight/calib/sample_csv.hpp"
 #include "ballsight/camera/image_file.hpp"
+#include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/text_format.hpp"
+#include "ballsight/detect/omni_line.hpp"
 #include "ballsight/detect/omni_rings.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
@@ -29,10 +34,21 @@ std::vector<PolarSample> ring_samples(const RingSearch& search,
   for (const RingDirection& direction : search.directions) {
     for (std::size_t k = 0; k < distances_cm.size(); ++k) {
       if (direction.radius_px[k]) {
-        samples.push_back({std::fmod(std::fmod(direction.theta_deg, 360.0) + 360.0, 360.0),
-                           *direction.radius_px[k], distances_cm[k], std::nullopt});
+        samples.push_back({wrap_deg_360(direction.theta_deg), *direction.radius_px[k],
+                           distances_cm[k], std::nullopt});
       }
     }
+  }
+  return samples;
+}
+
+// One sample per point of a straight line at `distance_cm` from the robot: d / cos(off normal).
+std::vector<PolarSample> line_samples(const LineSearch& search, double distance_cm) {
+  std::vector<PolarSample> samples;
+  for (const LinePoint& p : search.points) {
+    samples.push_back({wrap_deg_360(p.theta_deg), p.radius_px,
+                       distance_cm / std::cos(p.off_normal_deg * std::numbers::pi / 180.0),
+                       std::nullopt});
   }
   return samples;
 }
@@ -43,8 +59,34 @@ struct RingsArgs {
   std::string out;
   std::optional<std::string> center;
   std::optional<std::string> plot;
+  std::optional<double> line_toward_deg;
   RingSearchOptions search;
 };
+
+void run_line(const RingsArgs& args, const cv::Mat1b& grey, const Vec2& center) {
+  require(args.distances_m.size() == 1, "--distances-m",
+          "expected one distance with --line-toward-deg (the line's, from the robot's centre)");
+  LineSearchOptions options;
+  options.toward_deg = *args.line_toward_deg;
+  options.min_radius_px = args.search.min_radius_px;
+  options.tolerance_px = args.search.tolerance_px;
+  options.peaks = {args.search.min_contrast, args.search.background_px};
+  LineSearch search;
+  try {
+    search = find_omni_line(grey, center, options);
+  } catch (const InputError& e) {
+    throw InputError(args.image + ": " + e.what());
+  }
+  const double distance_cm = 100.0 * args.distances_m.front();
+  const std::vector<PolarSample> samples = line_samples(search, distance_cm);
+  write_polar_samples_csv(args.out, samples);
+  if (args.plot) write_png_atomic(*args.plot, plot_omni_line(grey, center, search));
+  std::cout << samples.size() << " samples along a straight line at " << fixed(distance_cm, 0)
+            << " cm -> " << args.out << "\n  normal at " << fixed(search.normal_deg, 2)
+            << " deg, nearest radius " << fixed(search.nearest_radius_px, 2) << " px; points "
+            << fixed(search.points.front().off_normal_deg, 1) << " to "
+            << fixed(search.points.back().off_normal_deg, 1) << " deg off the normal\n";
+}
 
 void run_rings(RingsArgs& args) {
   require(!args.distances_m.empty(), "--distances-m", "expected at least one distance");
@@ -59,6 +101,7 @@ void run_rings(RingsArgs& args) {
   cv::cvtColor(read_image_bgr(args.image), grey, cv::COLOR_BGR2GRAY);
   const Vec2 center = args.center ? parse_pixel_pair(*args.center, "--center")
                                   : Vec2(0.5 * (grey.cols - 1), 0.5 * (grey.rows - 1));
+  if (args.line_toward_deg) return run_line(args, grey, center);
   args.search.rings = distances_cm.size();
   RingSearch search;
   try {
@@ -108,7 +151,12 @@ void add_omni_rings_command(CLI::App& omni) {
   cmd->add_option("--tolerance-px", args->search.tolerance_px,
                   "How far a ring's peak may lie from where the ring runs")
       ->capture_default_str();
-  cmd->add_option("--plot", args->plot, "Also write a PNG of the rings found and rejected")
+  cmd->add_option("--line-toward-deg", args->line_toward_deg,
+                  "The image holds one straight floor line, not rings: at the one distance of "
+                  "--distances-m, nearest the robot in about this image direction (deg, 90: up)")
+      ->type_name("DEG");
+  cmd->add_option("--plot", args->plot,
+                  "Also write a PNG of the rings (or the line) found, and the rejected directions")
       ->type_name("PNG");
   cmd->callback([args] { run_rings(*args); });
 }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -61,12 +62,42 @@ TEST(OmniRingsCli, BadInputIsOneLineAndLeavesTheOutput) {
            {{"--image", image, "--distances-m", "1,2,3,4,5"}, "shows 3 rings"},
            {{"--image", image, "--distances-m", "1", "--directions", "3"}, "directions"},
            {{"--image", image, "--distances-m", "1", "--center", "900,5"}, "center"},
-           {{"--image", (dir / "missing.png").string(), "--distances-m", "1"}, "missing.png"}}) {
+           {{"--image", (dir / "missing.png").string(), "--distances-m", "1"}, "missing.png"},
+           {{"--image", image, "--distances-m", "1,2", "--line-toward-deg", "90"},
+            "expected one distance"},
+           {{"--image", image, "--distances-m", "1", "--line-toward-deg", "90", "--center",
+             "160,120"},
+            "does not bend like a straight line's image"}}) {
     std::vector<std::string> command = {"omni", "rings", "--out", out};
     command.insert(command.end(), args.begin(), args.end());
     test::expect_one_line_error(test::run_cli(command), problem);
     EXPECT_EQ(read_file(out), "previous content\n");
   }
+}
+
+// MinhoTeam's frame of a straight field line 1 m ahead: one sample per direction the line is
+// seen in, each at 1 m / cos(its angle off the normal), the radius growing with the distance.
+TEST(OmniRingsCli, AStraightLineGivesSamplesAtItsDistanceOverTheCosine) {
+  const auto dir = test::shared_data_dir() / "real/omni/minhoteam/images";
+  if (!std::filesystem::exists(dir / "line_at_1.00m.png")) {
+    GTEST_SKIP() << "no " << dir << " (../shared/data absent)";
+  }
+  const test::TempDir tmp;
+  const std::string out = (tmp / "line.csv").string();
+  const test::CliResult r = test::run_cli(
+      {"omni", "rings", "--image", (dir / "line_at_1.00m.png").string(), "--distances-m", "1",
+       "--line-toward-deg", "90", "--center", "240,240", "--min-radius-px", "70", "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stdout_text.find("samples along a straight line at 100 cm"), std::string::npos)
+      << r.stdout_text;
+  std::vector<PolarSample> samples = read_polar_samples_csv(out);
+  ASSERT_GT(samples.size(), 100u);
+  std::sort(samples.begin(), samples.end(), [](const PolarSample& a, const PolarSample& b) {
+    return a.distance_cm < b.distance_cm;
+  });
+  EXPECT_NEAR(samples.front().distance_cm, 100.0, 0.1);
+  EXPECT_GT(samples.back().distance_cm, 250.0);  // over 66 deg off the normal
+  EXPECT_GT(samples.back().radius_px, samples.front().radius_px + 40.0);
 }
 
 // On the real sets with several directions, ballsight's held-out median is below the paper's

@@ -8,83 +8,24 @@
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/statistics.hpp"
+#include "ballsight/detect/ray_peaks.hpp"
 
 namespace ballsight {
 
 namespace {
 
-constexpr double kStepPx = 0.25;            // along a ray
 constexpr double kFollowWindowDeg = 10.0;   // a ring's course: the median of its neighbours
 constexpr double kMinRelativeHeight = 0.6;  // of the neighbours' peaks: else partly hidden
 
-struct Peak {
-  double radius_px = 0.0;
-  double height = 0.0;  // top-hat grey levels
-};
-
-double bilinear(const cv::Mat1b& grey, const Vec2& p) {
-  const int x0 = static_cast<int>(std::floor(p.x())), y0 = static_cast<int>(std::floor(p.y()));
-  if (x0 < 0 || y0 < 0 || x0 + 1 >= grey.cols || y0 + 1 >= grey.rows) return 0.0;
-  const double fx = p.x() - x0, fy = p.y() - y0;
-  const double top = (1.0 - fx) * grey(y0, x0) + fx * grey(y0, x0 + 1);
-  const double bottom = (1.0 - fx) * grey(y0 + 1, x0) + fx * grey(y0 + 1, x0 + 1);
-  return (1.0 - fy) * top + fy * bottom;
-}
-
-// Sliding minimum (or maximum) over +-half samples.
-std::vector<double> sliding(const std::vector<double>& v, int half, bool minimum) {
-  std::vector<double> out(v.size());
-  const int n = static_cast<int>(v.size());
-  for (int i = 0; i < n; ++i) {
-    double m = v[i];
-    for (int j = std::max(0, i - half); j <= std::min(n - 1, i + half); ++j) {
-      m = minimum ? std::min(m, v[j]) : std::max(m, v[j]);
-    }
-    out[i] = m;
-  }
-  return out;
-}
-
-// The bright peaks along one ray: the top-hat (profile minus its opening) at least
-// `min_contrast`, each peak's centre the centroid above half its height.
-std::vector<Peak> ray_peaks(const cv::Mat1b& grey, const Vec2& center, double theta_deg, double r0,
-                            double r1, const RingSearchOptions& options) {
-  std::vector<double> profile;
-  for (double r = r0; r <= r1; r += kStepPx) {
-    profile.push_back(bilinear(grey, pixel_from_image_polar({theta_deg, r}, center)));
-  }
-  const int half = static_cast<int>(std::lround(options.background_px / kStepPx));
-  const std::vector<double> opening = sliding(sliding(profile, half, true), half, false);
-  std::vector<double> t(profile.size());
-  for (std::size_t i = 0; i < t.size(); ++i) t[i] = profile[i] - opening[i];
-  std::vector<Peak> peaks;
-  const int n = static_cast<int>(t.size());
-  for (int i = 1; i + 1 < n; ++i) {
-    if (t[i] < options.min_contrast || t[i] < t[i - 1] || t[i] <= t[i + 1]) continue;
-    const double level = 0.5 * t[i];
-    int a = i, b = i;
-    while (a > 0 && t[a - 1] >= level) --a;
-    while (b + 1 < n && t[b + 1] >= level) ++b;
-    double weight = 0.0, moment = 0.0;
-    for (int j = a; j <= b; ++j) {
-      weight += t[j] - level;
-      moment += (t[j] - level) * (r0 + j * kStepPx);
-    }
-    if (weight > 0.0) peaks.push_back({moment / weight, t[i]});
-    i = b;
-  }
-  return peaks;
-}
-
 // The rings' radii where the peaks of all directions gather: the first `rings` radii (from the
 // centre out) with peaks within +-tolerance/2 in at least min_support of the directions.
-std::vector<double> ring_seeds(const std::vector<std::vector<Peak>>& peaks, double r0, double r1,
+std::vector<double> ring_seeds(const std::vector<std::vector<RayPeak>>& peaks, double r0, double r1,
                                const RingSearchOptions& options) {
   const int bins = static_cast<int>(std::ceil(r1 - r0)) + 1;
   std::vector<double> support(bins, 0.0);
-  for (const std::vector<Peak>& ray : peaks) {
+  for (const std::vector<RayPeak>& ray : peaks) {
     std::vector<bool> seen(bins, false);
-    for (const Peak& peak : ray) {
+    for (const RayPeak& peak : ray) {
       const double p = peak.radius_px;
       const int lo = std::max(0, static_cast<int>(std::ceil(p - r0 - 0.5 * options.tolerance_px)));
       const int hi =
@@ -101,8 +42,8 @@ std::vector<double> ring_seeds(const std::vector<std::vector<Peak>>& peaks, doub
     const double radius = r0 + b;
     if (!mode || (!seeds.empty() && radius - seeds.back() <= options.tolerance_px)) continue;
     std::vector<double> near;
-    for (const std::vector<Peak>& ray : peaks) {
-      for (const Peak& p : ray) {
+    for (const std::vector<RayPeak>& ray : peaks) {
+      for (const RayPeak& p : ray) {
         if (std::abs(p.radius_px - radius) <= options.tolerance_px) near.push_back(p.radius_px);
       }
     }
@@ -112,10 +53,10 @@ std::vector<double> ring_seeds(const std::vector<std::vector<Peak>>& peaks, doub
 }
 
 // The one peak within `tolerance` of `expected`, or why there is none.
-std::pair<std::optional<Peak>, RingMiss> match(const std::vector<Peak>& peaks, double expected,
-                                               double tolerance) {
-  std::optional<Peak> found;
-  for (const Peak& p : peaks) {
+std::pair<std::optional<RayPeak>, RingMiss> match(const std::vector<RayPeak>& peaks,
+                                                  double expected, double tolerance) {
+  std::optional<RayPeak> found;
+  for (const RayPeak& p : peaks) {
     if (std::abs(p.radius_px - expected) > tolerance) continue;
     if (found) return {std::nullopt, RingMiss::kAmbiguous};
     found = p;
@@ -164,9 +105,10 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
   const double r0 = options.min_radius_px;
   const double r1 = options.max_radius_px ? *options.max_radius_px : inside;
   require(r1 > r0 + 2.0, "image", "leaves no room between the search radii around the centre");
-  std::vector<std::vector<Peak>> peaks;
+  std::vector<std::vector<RayPeak>> peaks;
   for (const double theta : thetas)
-    peaks.push_back(ray_peaks(grey, center, theta, r0, r1, options));
+    peaks.push_back(
+        ray_peaks(grey, center, theta, r0, r1, {options.min_contrast, options.background_px}));
   const std::vector<double> seeds = ring_seeds(peaks, r0, r1, options);
   require(seeds.size() == options.rings, "image",
           "shows " + std::to_string(seeds.size()) + " rings in at least " +
@@ -185,7 +127,7 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
     // First around the ring's radius, then around its course (eccentric rings of a mirror off
     // the image centre), which the neighbours' first matches give; a peak much lower than the
     // neighbours' is a ring partly hidden (at a strut's edge), its centre biased: rejected.
-    std::vector<std::optional<Peak>> first(thetas.size());
+    std::vector<std::optional<RayPeak>> first(thetas.size());
     for (std::size_t d = 0; d < thetas.size(); ++d) {
       first[d] = match(peaks[d], seeds[k], options.tolerance_px).first;
     }
