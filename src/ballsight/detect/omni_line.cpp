@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <opencv2/imgproc.hpp>
 #include <string>
 
@@ -46,12 +45,9 @@ void follow(const std::vector<Ray>& rays, std::size_t start, double radius, int 
   double last = radius;
   double slope = 0.0;  // px per ray
   int gap = 0;
-  const auto end = static_cast<std::ptrdiff_t>(start) +
-                   step * static_cast<std::ptrdiff_t>(std::min(limit, rays.size()));
-  for (auto i = static_cast<std::ptrdiff_t>(start) + step;
-       i != end + step && i >= 0 && i < static_cast<std::ptrdiff_t>(rays.size()) &&
-       gap < options.max_gap;
-       i += step) {
+  for (std::size_t n = 1; n <= limit && gap < options.max_gap; ++n) {
+    const auto i = static_cast<std::ptrdiff_t>(start) + step * static_cast<std::ptrdiff_t>(n);
+    if (i < 0 || i >= static_cast<std::ptrdiff_t>(rays.size())) break;
     const Ray& ray = rays[static_cast<std::size_t>(i)];
     const RayPeak* p = nearest_peak(ray, last + slope * (gap + 1), options.tolerance_px);
     if (!p) {
@@ -163,6 +159,8 @@ LineSearch find_omni_line(const cv::Mat1b& grey, const Vec2& center,
               " deg of the direction given; check the direction, the centre and the contrast");
   const std::vector<LinePoint> points =
       shown_whole(curve_through(rays, start, start_peak, rays.size(), options), options.step_deg);
+  require(static_cast<int>(points.size()) >= kMinVertexPoints, "image",
+          "shows the line too briefly around its nearest point to find its normal");
   const LinePoint& nearest = *std::min_element(
       points.begin(), points.end(),
       [](const LinePoint& a, const LinePoint& b) { return a.radius_px < b.radius_px; });
