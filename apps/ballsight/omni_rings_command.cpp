@@ -130,8 +130,9 @@ void add_omni_rings_command(CLI::App& omni) {
       "Calibration from one spin, no clicking: find the rings that floor lines at known distances "
       "leave in the image of a robot turning on the spot, along every direction, and write "
       "calibration samples for omni fit (directions where a ring is hidden or ambiguous are "
-      "left out)");
-  cmd->add_option("--image", args->image, "The ring image (PNG, JPEG; read as grey)")->required();
+      "left out); or, with --line-toward-deg, the image of one straight floor line");
+  cmd->add_option("--image", args->image, "The ring (or line) image (PNG, JPEG; read as grey)")
+      ->required();
   cmd->add_option("--distances-m", args->distances_m,
                   "The lines' distances from the robot's centre, m, comma-separated, increasing")
       ->delimiter(',')
