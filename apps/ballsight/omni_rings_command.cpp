@@ -6,7 +6,6 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <numbers>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <string>
@@ -47,8 +46,7 @@ std::vector<PolarSample> line_samples(const LineSearch& search, double distance_
   std::vector<PolarSample> samples;
   for (const LinePoint& p : search.points) {
     samples.push_back({wrap_deg_360(p.theta_deg), p.radius_px,
-                       distance_cm / std::cos(p.off_normal_deg * std::numbers::pi / 180.0),
-                       std::nullopt});
+                       distance_cm / std::cos(rad_from_deg(p.off_normal_deg)), std::nullopt});
   }
   return samples;
 }
@@ -66,11 +64,13 @@ struct RingsArgs {
 void run_line(const RingsArgs& args, const cv::Mat1b& grey, const Vec2& center) {
   require(args.distances_m.size() == 1, "--distances-m",
           "expected one distance with --line-toward-deg (the line's, from the robot's centre)");
+  require(std::isfinite(*args.line_toward_deg), "--line-toward-deg", "expected a number");
   LineSearchOptions options;
   options.toward_deg = *args.line_toward_deg;
   options.min_radius_px = args.search.min_radius_px;
   options.tolerance_px = args.search.tolerance_px;
-  options.peaks = {args.search.min_contrast, args.search.background_px};
+  options.peaks = {.min_contrast = args.search.min_contrast,
+                   .background_px = args.search.background_px};
   LineSearch search;
   try {
     search = find_omni_line(grey, center, options);
@@ -141,21 +141,23 @@ void add_omni_rings_command(CLI::App& omni) {
   cmd->add_option("--center", args->center,
                   "Image centre CX,CY: the robot's turning centre in the image (default: the "
                   "image's)");
-  cmd->add_option("--directions", args->search.directions, "Directions searched, evenly spread")
-      ->capture_default_str();
+  CLI::Option* directions =
+      cmd->add_option("--directions", args->search.directions, "Directions searched, evenly spread")
+          ->capture_default_str();
   cmd->add_option("--min-radius-px", args->search.min_radius_px,
                   "Radius where the search starts (inside: the robot)")
       ->capture_default_str();
   cmd->add_option("--min-contrast", args->search.min_contrast,
-                  "Grey levels a ring stands above its background")
+                  "Grey levels a ring (or the line) stands above its background")
       ->capture_default_str();
   cmd->add_option("--tolerance-px", args->search.tolerance_px,
-                  "How far a ring's peak may lie from where the ring runs")
+                  "How far a ring's (or the line's) peak may lie from where it runs")
       ->capture_default_str();
   cmd->add_option("--line-toward-deg", args->line_toward_deg,
                   "The image holds one straight floor line, not rings: at the one distance of "
                   "--distances-m, nearest the robot in about this image direction (deg, 90: up)")
-      ->type_name("DEG");
+      ->type_name("DEG")
+      ->excludes(directions);
   cmd->add_option("--plot", args->plot,
                   "Also write a PNG of the rings (or the line) found, and the rejected directions")
       ->type_name("PNG");

@@ -67,7 +67,9 @@ TEST(OmniRingsCli, BadInputIsOneLineAndLeavesTheOutput) {
             "expected one distance"},
            {{"--image", image, "--distances-m", "1", "--line-toward-deg", "90", "--center",
              "160,120"},
-            "does not bend like a straight line's image"}}) {
+            "does not bend like a straight line's image"},
+           {{"--image", image, "--distances-m", "1", "--line-toward-deg", "nan"},
+            "--line-toward-deg: expected a number"}}) {
     std::vector<std::string> command = {"omni", "rings", "--out", out};
     command.insert(command.end(), args.begin(), args.end());
     test::expect_one_line_error(test::run_cli(command), problem);
@@ -84,9 +86,10 @@ TEST(OmniRingsCli, AStraightLineGivesSamplesAtItsDistanceOverTheCosine) {
   }
   const test::TempDir tmp;
   const std::string out = (tmp / "line.csv").string();
-  const test::CliResult r = test::run_cli(
-      {"omni", "rings", "--image", (dir / "line_at_1.00m.png").string(), "--distances-m", "1",
-       "--line-toward-deg", "90", "--center", "240,240", "--min-radius-px", "70", "--out", out});
+  const test::CliResult r =
+      test::run_cli({"omni", "rings", "--image", (dir / "line_at_1.00m.png").string(),
+                     "--distances-m", "1", "--line-toward-deg", "90", "--center", "240,240",
+                     "--min-radius-px", "70", "--out", out, "--plot", (tmp / "line.png").string()});
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_NE(r.stdout_text.find("samples along a straight line at 100 cm"), std::string::npos)
       << r.stdout_text;
@@ -98,6 +101,7 @@ TEST(OmniRingsCli, AStraightLineGivesSamplesAtItsDistanceOverTheCosine) {
   EXPECT_NEAR(samples.front().distance_cm, 100.0, 0.1);
   EXPECT_GT(samples.back().distance_cm, 250.0);  // over 66 deg off the normal
   EXPECT_GT(samples.back().radius_px, samples.front().radius_px + 40.0);
+  EXPECT_EQ(cv::imread((tmp / "line.png").string()).size(), cv::Size(960, 960));  // drawn at 2x
 }
 
 // On the real sets with several directions, ballsight's held-out median is below the paper's

@@ -84,6 +84,15 @@ TEST(OmniLine, FindsTheNormalAndEveryPointOfADrawnLine) {
   EXPECT_GT(search.points.size(), 125u);
 }
 
+TEST(OmniLine, DirectionsAreImageAnglesWhateverTurnTheyAreGivenIn) {
+  const LineSearch search = find_omni_line(line_image(), kLineImageCenter, toward(95.0 - 720.0));
+  EXPECT_NEAR(search.normal_deg, kNormalDeg, 0.3);
+  for (const LinePoint& p : search.points) {
+    EXPECT_GE(p.theta_deg, 0.0);
+    EXPECT_LT(p.theta_deg, 360.0);
+  }
+}
+
 TEST(OmniLine, NoLineNearTheDirectionGivenIsAnError) {
   try {
     find_omni_line(line_image(), kLineImageCenter, toward(260.0));

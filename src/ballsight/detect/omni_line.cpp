@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "ballsight/core/angle.hpp"
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/statistics.hpp"
@@ -39,12 +40,14 @@ const RayPeak* nearest_peak(const Ray& ray, double expected, double tolerance) {
 }
 
 // The line followed from `radius` on ray `start` in direction `step` (+1 or -1), at most `limit`
-// rays: each ray's peak nearest the course extrapolated from the last two points found.
+// rays: each ray's peak nearest the course extrapolated from the last two points found. Where
+// the line is lost (max_gap rays in a row), the point before is beside what hides it: dropped.
 void follow(const std::vector<Ray>& rays, std::size_t start, double radius, int step,
             std::size_t limit, const LineSearchOptions& options, std::vector<LinePoint>& points) {
   double last = radius;
   double slope = 0.0;  // px per ray
   int gap = 0;
+  const std::size_t before = points.size();
   for (std::size_t n = 1; n <= limit && gap < options.max_gap; ++n) {
     const auto i = static_cast<std::ptrdiff_t>(start) + step * static_cast<std::ptrdiff_t>(n);
     if (i < 0 || i >= static_cast<std::ptrdiff_t>(rays.size())) break;
@@ -59,6 +62,7 @@ void follow(const std::vector<Ray>& rays, std::size_t start, double radius, int 
     gap = 0;
     points.push_back({ray.theta_deg, p->radius_px, 0.0, p->height});
   }
+  if (gap >= options.max_gap && points.size() > before) points.pop_back();
 }
 
 // The points the line shows whole: at least kMinRelativeContrast of the median contrast of
@@ -135,7 +139,7 @@ LineSearch find_omni_line(const cv::Mat1b& grey, const Vec2& center,
   const auto half = static_cast<int>(std::floor(span / options.step_deg));
   std::vector<Ray> rays;
   for (int k = -half; k <= half; ++k) {
-    const double theta = options.toward_deg + k * options.step_deg;
+    const double theta = wrap_deg_360(options.toward_deg) + k * options.step_deg;
     rays.push_back({theta, ray_peaks(grey, center, theta, r0, r1, options.peaks)});
   }
   // The line: of the peaks within the window of `toward`, the one through which the longest
@@ -169,8 +173,7 @@ LineSearch find_omni_line(const cv::Mat1b& grey, const Vec2& center,
   std::vector<const LinePoint*> near;
   for (const LinePoint& p : points)
     if (std::abs(p.theta_deg - nearest.theta_deg) <= kVertexWindowDeg) near.push_back(&p);
-  const bool both_sides = !near.empty() &&
-                          near.front()->theta_deg < nearest.theta_deg - 0.5 * kVertexWindowDeg &&
+  const bool both_sides = near.front()->theta_deg < nearest.theta_deg - 0.5 * kVertexWindowDeg &&
                           near.back()->theta_deg > nearest.theta_deg + 0.5 * kVertexWindowDeg;
   require(static_cast<int>(near.size()) >= kMinVertexPoints && both_sides, "image",
           "shows the line too briefly around its nearest point to find its normal");
@@ -185,15 +188,16 @@ LineSearch find_omni_line(const cv::Mat1b& grey, const Vec2& center,
   const double normal_deg = nearest.theta_deg - c(1) / (2.0 * c(2));
   require(c(2) * kVertexWindowDeg * kVertexWindowDeg >= kMinBendPx &&
               std::abs(normal_deg - nearest.theta_deg) <= kVertexWindowDeg &&
-              std::abs(normal_deg - options.toward_deg) <= options.window_deg,
+              std::abs(wrap_deg_180(normal_deg - options.toward_deg)) <= options.window_deg,
           "image",
           "shows a bright curve near the direction given that does not bend like a straight "
           "line's image (nearest the centre within the window, farther both ways)");
   LineSearch search;
-  search.normal_deg = normal_deg;
+  search.normal_deg = wrap_deg_360(normal_deg);
   search.nearest_radius_px = c(0) - c(1) * c(1) / (4.0 * c(2));
   for (LinePoint p : points) {
-    p.off_normal_deg = p.theta_deg - search.normal_deg;
+    p.off_normal_deg = p.theta_deg - normal_deg;
+    p.theta_deg = wrap_deg_360(p.theta_deg);
     if (std::abs(p.off_normal_deg) <= options.max_off_normal_deg) search.points.push_back(p);
   }
   return search;

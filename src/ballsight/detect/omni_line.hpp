@@ -7,7 +7,7 @@
 // normal is the vertex of a parabola fitted to the radii around the nearest point (for a
 // rotationally symmetric mirror the curve is symmetric about it). A point much fainter than its
 // neighbours, or one beside a stretch where the line is hidden, is the line partly hidden (at a
-// strut's edge), its centre biased: left out.
+// strut's edge), its centre biased: left out; so is the last point before the line is lost.
 
 #include <opencv2/core.hpp>
 #include <optional>
@@ -34,7 +34,7 @@ struct LineSearchOptions {
 };
 
 struct LinePoint {
-  double theta_deg = 0.0;       // image angle (core/conventions.hpp)
+  double theta_deg = 0.0;       // image angle (core/conventions.hpp), [0, 360)
   double radius_px = 0.0;       // where the line crosses it
   double off_normal_deg = 0.0;  // from the line's normal: the point is d / cos of it away
   double contrast = 0.0;        // grey levels above the local background

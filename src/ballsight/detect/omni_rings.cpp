@@ -108,7 +108,8 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
   std::vector<std::vector<RayPeak>> peaks;
   for (const double theta : thetas)
     peaks.push_back(
-        ray_peaks(grey, center, theta, r0, r1, {options.min_contrast, options.background_px}));
+        ray_peaks(grey, center, theta, r0, r1,
+                  {.min_contrast = options.min_contrast, .background_px = options.background_px}));
   const std::vector<double> seeds = ring_seeds(peaks, r0, r1, options);
   require(seeds.size() == options.rings, "image",
           "shows " + std::to_string(seeds.size()) + " rings in at least " +

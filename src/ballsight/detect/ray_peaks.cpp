@@ -39,7 +39,9 @@ std::vector<double> sliding(const std::vector<double>& v, int half, bool minimum
 std::vector<RayPeak> ray_peaks(const cv::Mat1b& grey, const Vec2& center, double theta_deg,
                                double r0, double r1, const RayPeakOptions& options) {
   std::vector<double> profile;
-  for (double r = r0; r <= r1; r += kStepPx) {
+  const auto samples = static_cast<std::size_t>(std::max(0.0, std::floor((r1 - r0) / kStepPx) + 1));
+  for (std::size_t i = 0; i < samples; ++i) {
+    const double r = r0 + static_cast<double>(i) * kStepPx;
     profile.push_back(bilinear(grey, pixel_from_image_polar({theta_deg, r}, center)));
   }
   const int half = static_cast<int>(std::lround(options.background_px / kStepPx));
