@@ -93,6 +93,16 @@ TEST(OmniLine, DirectionsAreImageAnglesWhateverTurnTheyAreGivenIn) {
   }
 }
 
+// The robot's bright rim, a full circle nearer than the line, is no line: the line behind it is
+// found.
+TEST(OmniLine, ANearerRingIsPassedOver) {
+  cv::Mat1b image = line_image();
+  cv::circle(image, {200, 200}, 70, 230, 3, cv::LINE_AA);
+  const LineSearch search = find_omni_line(image, kLineImageCenter, toward(95.0));
+  EXPECT_NEAR(search.normal_deg, kNormalDeg, 0.3);
+  EXPECT_NEAR(search.nearest_radius_px, mirror_radius(kLineCm), 0.3);
+}
+
 TEST(OmniLine, NoLineNearTheDirectionGivenIsAnError) {
   try {
     find_omni_line(line_image(), kLineImageCenter, toward(260.0));

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <string>
 
 #include "ballsight/core/angle.hpp"
@@ -96,6 +97,58 @@ std::vector<LinePoint> curve_through(const std::vector<Ray>& rays, std::size_t s
   return points;
 }
 
+struct Candidate {
+  std::size_t ray = 0;
+  RayPeak peak;
+  std::size_t count = 0;  // points of its curve over +-kVertexWindowDeg
+};
+
+// The line through `peak` on ray `start`: its points and the vertex of its image. Throws
+// InputError when the curve is too short around its nearest point or does not bend like a line.
+LineSearch line_through(const std::vector<Ray>& rays, std::size_t start, const RayPeak& peak,
+                        const LineSearchOptions& options) {
+  const std::vector<LinePoint> points =
+      shown_whole(curve_through(rays, start, peak, rays.size(), options), options.step_deg);
+  require(static_cast<int>(points.size()) >= kMinVertexPoints, "image",
+          "shows the line too briefly around its nearest point to find its normal");
+  const LinePoint& nearest = *std::min_element(
+      points.begin(), points.end(),
+      [](const LinePoint& a, const LinePoint& b) { return a.radius_px < b.radius_px; });
+
+  // The vertex: r = c0 + c1 x + c2 x^2 over the points within the window of the nearest ray.
+  std::vector<const LinePoint*> near;
+  for (const LinePoint& p : points)
+    if (std::abs(p.theta_deg - nearest.theta_deg) <= kVertexWindowDeg) near.push_back(&p);
+  const bool both_sides = near.front()->theta_deg < nearest.theta_deg - 0.5 * kVertexWindowDeg &&
+                          near.back()->theta_deg > nearest.theta_deg + 0.5 * kVertexWindowDeg;
+  require(static_cast<int>(near.size()) >= kMinVertexPoints && both_sides, "image",
+          "shows the line too briefly around its nearest point to find its normal");
+  Eigen::MatrixX3d a(static_cast<Eigen::Index>(near.size()), 3);
+  Eigen::VectorXd b(static_cast<Eigen::Index>(near.size()));
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const double x = near[i]->theta_deg - nearest.theta_deg;
+    a.row(static_cast<Eigen::Index>(i)) << 1.0, x, x * x;
+    b(static_cast<Eigen::Index>(i)) = near[i]->radius_px;
+  }
+  const Eigen::Vector3d c = a.colPivHouseholderQr().solve(b);
+  const double normal_deg = nearest.theta_deg - c(1) / (2.0 * c(2));
+  require(c(2) * kVertexWindowDeg * kVertexWindowDeg >= kMinBendPx &&
+              std::abs(normal_deg - nearest.theta_deg) <= kVertexWindowDeg &&
+              std::abs(wrap_deg_180(normal_deg - options.toward_deg)) <= options.window_deg,
+          "image",
+          "shows a bright curve near the direction given that does not bend like a straight "
+          "line's image (nearest the centre within the window, farther both ways)");
+  LineSearch search;
+  search.normal_deg = wrap_deg_360(normal_deg);
+  search.nearest_radius_px = c(0) - c(1) * c(1) / (4.0 * c(2));
+  for (LinePoint p : points) {
+    p.off_normal_deg = p.theta_deg - normal_deg;
+    p.theta_deg = wrap_deg_360(p.theta_deg);
+    if (std::abs(p.off_normal_deg) <= options.max_off_normal_deg) search.points.push_back(p);
+  }
+  return search;
+}
+
 }  // namespace
 
 void LineSearchOptions::validate() const {
@@ -147,60 +200,29 @@ LineSearch find_omni_line(const cv::Mat1b& grey, const Vec2& center,
   // nowhere.
   const auto window = static_cast<std::size_t>(std::floor(options.window_deg / options.step_deg));
   const auto reach = static_cast<std::size_t>(std::ceil(kVertexWindowDeg / options.step_deg));
-  std::size_t start = rays.size(), best_count = 0;
-  RayPeak start_peak;
+  std::vector<Candidate> candidates;
   for (std::size_t i = static_cast<std::size_t>(half) - window;
        i <= static_cast<std::size_t>(half) + window; ++i) {
-    for (const RayPeak& peak : rays[i].peaks) {
-      const std::size_t count = curve_through(rays, i, peak, reach, options).size();
-      if (count > best_count || (count == best_count && peak.radius_px < start_peak.radius_px)) {
-        start = i, best_count = count, start_peak = peak;
-      }
-    }
+    for (const RayPeak& peak : rays[i].peaks)
+      candidates.push_back({i, peak, curve_through(rays, i, peak, reach, options).size()});
   }
-  require(start < rays.size(), "image",
+  require(!candidates.empty(), "image",
           "shows no bright line within " + std::to_string(static_cast<int>(options.window_deg)) +
               " deg of the direction given; check the direction, the centre and the contrast");
-  const std::vector<LinePoint> points =
-      shown_whole(curve_through(rays, start, start_peak, rays.size(), options), options.step_deg);
-  require(static_cast<int>(points.size()) >= kMinVertexPoints, "image",
-          "shows the line too briefly around its nearest point to find its normal");
-  const LinePoint& nearest = *std::min_element(
-      points.begin(), points.end(),
-      [](const LinePoint& a, const LinePoint& b) { return a.radius_px < b.radius_px; });
-
-  // The vertex: r = c0 + c1 x + c2 x^2 over the points within the window of the nearest ray.
-  std::vector<const LinePoint*> near;
-  for (const LinePoint& p : points)
-    if (std::abs(p.theta_deg - nearest.theta_deg) <= kVertexWindowDeg) near.push_back(&p);
-  const bool both_sides = near.front()->theta_deg < nearest.theta_deg - 0.5 * kVertexWindowDeg &&
-                          near.back()->theta_deg > nearest.theta_deg + 0.5 * kVertexWindowDeg;
-  require(static_cast<int>(near.size()) >= kMinVertexPoints && both_sides, "image",
-          "shows the line too briefly around its nearest point to find its normal");
-  Eigen::MatrixX3d a(static_cast<Eigen::Index>(near.size()), 3);
-  Eigen::VectorXd b(static_cast<Eigen::Index>(near.size()));
-  for (std::size_t i = 0; i < near.size(); ++i) {
-    const double x = near[i]->theta_deg - nearest.theta_deg;
-    a.row(static_cast<Eigen::Index>(i)) << 1.0, x, x * x;
-    b(static_cast<Eigen::Index>(i)) = near[i]->radius_px;
+  // A nearer curve that is no line (the robot's rim, a reflection) gives way to the next.
+  std::stable_sort(
+      candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+        return x.count != y.count ? x.count > y.count : x.peak.radius_px < y.peak.radius_px;
+      });
+  std::optional<InputError> first_error;
+  for (const Candidate& candidate : candidates) {
+    try {
+      return line_through(rays, candidate.ray, candidate.peak, options);
+    } catch (const InputError& e) {
+      if (!first_error) first_error = e;
+    }
   }
-  const Eigen::Vector3d c = a.colPivHouseholderQr().solve(b);
-  const double normal_deg = nearest.theta_deg - c(1) / (2.0 * c(2));
-  require(c(2) * kVertexWindowDeg * kVertexWindowDeg >= kMinBendPx &&
-              std::abs(normal_deg - nearest.theta_deg) <= kVertexWindowDeg &&
-              std::abs(wrap_deg_180(normal_deg - options.toward_deg)) <= options.window_deg,
-          "image",
-          "shows a bright curve near the direction given that does not bend like a straight "
-          "line's image (nearest the centre within the window, farther both ways)");
-  LineSearch search;
-  search.normal_deg = wrap_deg_360(normal_deg);
-  search.nearest_radius_px = c(0) - c(1) * c(1) / (4.0 * c(2));
-  for (LinePoint p : points) {
-    p.off_normal_deg = p.theta_deg - normal_deg;
-    p.theta_deg = wrap_deg_360(p.theta_deg);
-    if (std::abs(p.off_normal_deg) <= options.max_off_normal_deg) search.points.push_back(p);
-  }
-  return search;
+  throw *first_error;
 }
 
 cv::Mat plot_omni_line(const cv::Mat1b& grey, const Vec2& center, const LineSearch& search) {
