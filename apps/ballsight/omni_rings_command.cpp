@@ -69,8 +69,7 @@ void run_line(const RingsArgs& args, const cv::Mat1b& grey, const Vec2& center) 
   options.toward_deg = *args.line_toward_deg;
   options.min_radius_px = args.search.min_radius_px;
   options.tolerance_px = args.search.tolerance_px;
-  options.peaks = {.min_contrast = args.search.min_contrast,
-                   .background_px = args.search.background_px};
+  options.peaks = args.search.peaks();
   LineSearch search;
   try {
     search = find_omni_line(grey, center, options);

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "ballsight/core/angle.hpp"
-#include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/statistics.hpp"
 
@@ -160,32 +159,17 @@ void LineSearchOptions::validate() const {
           "max_off_normal_deg", "expected 15 to 90 (exclusive)");
   require(std::isfinite(step_deg) && step_deg >= 0.1 && step_deg <= 5.0, "step_deg",
           "expected 0.1 to 5");
-  require(std::isfinite(min_radius_px) && min_radius_px >= 0.0, "min_radius_px",
-          "expected a number >= 0");
-  require(!max_radius_px || (std::isfinite(*max_radius_px) && *max_radius_px > min_radius_px + 2),
-          "max_radius_px", "expected a number above min_radius_px + 2");
+  validate_ray_radii(min_radius_px, max_radius_px);
   require(std::isfinite(tolerance_px) && tolerance_px > 0.0 && tolerance_px <= 50.0, "tolerance_px",
           "expected a number in (0, 50]");
   require(max_gap >= 1 && max_gap <= 100, "max_gap", "expected 1 to 100");
-  require(std::isfinite(peaks.min_contrast) && peaks.min_contrast > 0.0, "min_contrast",
-          "expected a positive number");
-  require(std::isfinite(peaks.background_px) && peaks.background_px >= 1.0 &&
-              peaks.background_px <= 50.0,
-          "background_px", "expected 1 to 50");
+  peaks.validate();
 }
 
 LineSearch find_omni_line(const cv::Mat1b& grey, const Vec2& center,
                           const LineSearchOptions& options) {
   options.validate();
-  require(!grey.empty(), "image", "is empty");
-  require(center.x() >= 0.0 && center.y() >= 0.0 && center.x() <= grey.cols - 1 &&
-              center.y() <= grey.rows - 1,
-          "center", "expected a point inside the image");
-  const double inside =
-      std::min({center.x(), center.y(), grey.cols - 1 - center.x(), grey.rows - 1 - center.y()});
-  const double r0 = options.min_radius_px;
-  const double r1 = options.max_radius_px ? *options.max_radius_px : inside;
-  require(r1 > r0 + 2.0, "image", "leaves no room between the search radii around the centre");
+  const auto [r0, r1] = ray_span(grey, center, options.min_radius_px, options.max_radius_px);
 
   // Rays over toward +- (window + max off normal), the window's first and last.
   const double span = options.window_deg + options.max_off_normal_deg;
@@ -226,19 +210,12 @@ LineSearch find_omni_line(const cv::Mat1b& grey, const Vec2& center,
 }
 
 cv::Mat plot_omni_line(const cv::Mat1b& grey, const Vec2& center, const LineSearch& search) {
-  cv::Mat plot;
-  cv::cvtColor(grey, plot, cv::COLOR_GRAY2BGR);
-  const int scale = 2;
-  const auto at = [&](double theta, double r) {
-    const Vec2 p = pixel_from_image_polar({theta, r}, center);
-    return cv::Point(static_cast<int>(std::lround(scale * (p.x() + 0.5))),
-                     static_cast<int>(std::lround(scale * (p.y() + 0.5))));
-  };
-  cv::resize(plot, plot, {}, scale, scale, cv::INTER_NEAREST);
+  cv::Mat plot = ray_plot_canvas(grey);
+  const auto at = [&](double theta, double r) { return ray_plot_point(center, theta, r); };
   cv::line(plot, at(0.0, 0.0), at(search.normal_deg, search.nearest_radius_px), {255, 120, 0}, 1);
   for (const LinePoint& p : search.points)
     cv::circle(plot, at(p.theta_deg, p.radius_px), 2, {0, 220, 0}, cv::FILLED);
-  cv::drawMarker(plot, at(0.0, 0.0), {255, 200, 0}, cv::MARKER_CROSS, 16, 2);
+  mark_ray_plot_center(plot, center);
   return plot;
 }
 

@@ -5,7 +5,6 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
-#include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/statistics.hpp"
 #include "ballsight/detect/ray_peaks.hpp"
@@ -74,14 +73,8 @@ double angular_gap_deg(double a, double b) {
 void RingSearchOptions::validate() const {
   require(rings >= 1 && rings <= 64, "rings", "expected 1 to 64");
   require(directions >= 8 && directions <= 3600, "directions", "expected 8 to 3600");
-  require(std::isfinite(min_radius_px) && min_radius_px >= 0.0, "min_radius_px",
-          "expected a number >= 0");
-  require(!max_radius_px || (std::isfinite(*max_radius_px) && *max_radius_px > min_radius_px + 2),
-          "max_radius_px", "expected a number above min_radius_px + 2");
-  require(std::isfinite(min_contrast) && min_contrast > 0.0, "min_contrast",
-          "expected a positive number");
-  require(std::isfinite(background_px) && background_px >= 1.0 && background_px <= 50.0,
-          "background_px", "expected 1 to 50");
+  validate_ray_radii(min_radius_px, max_radius_px);
+  peaks().validate();
   require(std::isfinite(tolerance_px) && tolerance_px > 0.0 && tolerance_px <= 50.0, "tolerance_px",
           "expected a number in (0, 50]");
   require(std::isfinite(min_support) && min_support > 0.0 && min_support <= 1.0, "min_support",
@@ -92,24 +85,14 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
                            const RingSearchOptions& options,
                            std::span<const double> directions_deg) {
   options.validate();
-  require(!grey.empty(), "image", "is empty");
-  require(center.x() >= 0.0 && center.y() >= 0.0 && center.x() <= grey.cols - 1 &&
-              center.y() <= grey.rows - 1,
-          "center", "expected a point inside the image");
+  const auto [r0, r1] = ray_span(grey, center, options.min_radius_px, options.max_radius_px);
   std::vector<double> thetas(directions_deg.begin(), directions_deg.end());
   if (thetas.empty()) {
     for (int i = 0; i < options.directions; ++i) thetas.push_back(360.0 * i / options.directions);
   }
-  const double inside =
-      std::min({center.x(), center.y(), grey.cols - 1 - center.x(), grey.rows - 1 - center.y()});
-  const double r0 = options.min_radius_px;
-  const double r1 = options.max_radius_px ? *options.max_radius_px : inside;
-  require(r1 > r0 + 2.0, "image", "leaves no room between the search radii around the centre");
   std::vector<std::vector<RayPeak>> peaks;
   for (const double theta : thetas)
-    peaks.push_back(
-        ray_peaks(grey, center, theta, r0, r1,
-                  {.min_contrast = options.min_contrast, .background_px = options.background_px}));
+    peaks.push_back(ray_peaks(grey, center, theta, r0, r1, options.peaks()));
   const std::vector<double> seeds = ring_seeds(peaks, r0, r1, options);
   require(seeds.size() == options.rings, "image",
           "shows " + std::to_string(seeds.size()) + " rings in at least " +
@@ -161,15 +144,8 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
 }
 
 cv::Mat plot_omni_rings(const cv::Mat1b& grey, const Vec2& center, const RingSearch& search) {
-  cv::Mat plot;
-  cv::cvtColor(grey, plot, cv::COLOR_GRAY2BGR);
-  const int scale = 2;  // drawn at twice the size so that neighbouring rings stay apart
-  cv::resize(plot, plot, {}, scale, scale, cv::INTER_NEAREST);
-  const auto at = [&](double theta, double r) {
-    const Vec2 p = pixel_from_image_polar({theta, r}, center);
-    return cv::Point(static_cast<int>(std::lround(scale * (p.x() + 0.5))),
-                     static_cast<int>(std::lround(scale * (p.y() + 0.5))));
-  };
+  cv::Mat plot = ray_plot_canvas(grey);
+  const auto at = [&](double theta, double r) { return ray_plot_point(center, theta, r); };
   for (const RingDirection& d : search.directions) {
     for (std::size_t k = 0; k < d.radius_px.size(); ++k) {
       if (d.radius_px[k]) {
@@ -182,7 +158,7 @@ cv::Mat plot_omni_rings(const cv::Mat1b& grey, const Vec2& center, const RingSea
       }
     }
   }
-  cv::drawMarker(plot, at(0.0, 0.0), {255, 200, 0}, cv::MARKER_CROSS, 16, 2);
+  mark_ray_plot_center(plot, center);
   return plot;
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/detect/ray_peaks.hpp"
 
 namespace ballsight {
 
@@ -26,6 +27,10 @@ struct RingSearchOptions {
   double background_px = 5.0;           // half-width of the top-hat's window (rings are narrower)
   double tolerance_px = 4.0;            // how far a ring's peak may lie from where the ring runs
   double min_support = 0.3;             // fraction of directions a ring must be seen in
+
+  RayPeakOptions peaks() const {
+    return {.min_contrast = min_contrast, .background_px = background_px};
+  }
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 
 #include "ballsight/core/conventions.hpp"
+#include "ballsight/core/error.hpp"
 
 namespace ballsight {
 
 namespace {
 
 constexpr double kStepPx = 0.25;  // along a ray
+constexpr int kPlotScale = 2;
 
 double bilinear(const cv::Mat1b& grey, const Vec2& p) {
   const int x0 = static_cast<int>(std::floor(p.x())), y0 = static_cast<int>(std::floor(p.y()));
@@ -35,6 +38,34 @@ std::vector<double> sliding(const std::vector<double>& v, int half, bool minimum
 }
 
 }  // namespace
+
+void RayPeakOptions::validate() const {
+  require(std::isfinite(min_contrast) && min_contrast > 0.0, "min_contrast",
+          "expected a positive number");
+  require(std::isfinite(background_px) && background_px >= 1.0 && background_px <= 50.0,
+          "background_px", "expected 1 to 50");
+}
+
+void validate_ray_radii(double min_radius_px, std::optional<double> max_radius_px) {
+  require(std::isfinite(min_radius_px) && min_radius_px >= 0.0, "min_radius_px",
+          "expected a number >= 0");
+  require(!max_radius_px || (std::isfinite(*max_radius_px) && *max_radius_px > min_radius_px + 2),
+          "max_radius_px", "expected a number above min_radius_px + 2");
+}
+
+RaySpan ray_span(const cv::Mat1b& grey, const Vec2& center, double min_radius_px,
+                 std::optional<double> max_radius_px) {
+  require(!grey.empty(), "image", "is empty");
+  require(center.x() >= 0.0 && center.y() >= 0.0 && center.x() <= grey.cols - 1 &&
+              center.y() <= grey.rows - 1,
+          "center", "expected a point inside the image");
+  const double inside =
+      std::min({center.x(), center.y(), grey.cols - 1 - center.x(), grey.rows - 1 - center.y()});
+  const RaySpan span{min_radius_px, max_radius_px ? *max_radius_px : inside};
+  require(span.r1 > span.r0 + 2.0, "image",
+          "leaves no room between the search radii around the centre");
+  return span;
+}
 
 std::vector<RayPeak> ray_peaks(const cv::Mat1b& grey, const Vec2& center, double theta_deg,
                                double r0, double r1, const RayPeakOptions& options) {
@@ -65,6 +96,23 @@ std::vector<RayPeak> ray_peaks(const cv::Mat1b& grey, const Vec2& center, double
     i = b;
   }
   return peaks;
+}
+
+cv::Mat ray_plot_canvas(const cv::Mat1b& grey) {
+  cv::Mat plot;
+  cv::cvtColor(grey, plot, cv::COLOR_GRAY2BGR);
+  cv::resize(plot, plot, {}, kPlotScale, kPlotScale, cv::INTER_NEAREST);
+  return plot;
+}
+
+cv::Point ray_plot_point(const Vec2& center, double theta_deg, double radius_px) {
+  const Vec2 p = pixel_from_image_polar({theta_deg, radius_px}, center);
+  return {static_cast<int>(std::lround(kPlotScale * (p.x() + 0.5))),
+          static_cast<int>(std::lround(kPlotScale * (p.y() + 0.5)))};
+}
+
+void mark_ray_plot_center(cv::Mat& plot, const Vec2& center) {
+  cv::drawMarker(plot, ray_plot_point(center, 0.0, 0.0), {255, 200, 0}, cv::MARKER_CROSS, 16, 2);
 }
 
 }  // namespace ballsight
