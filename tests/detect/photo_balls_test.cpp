@@ -103,6 +103,43 @@ TEST(PhotoBalls, IgnoresALineAndFoliageOfABallsColour) {
   EXPECT_TRUE(detector.detect(image).empty());
 }
 
+// The image is searched in horizontal bands in parallel; a blob belongs to the band of its first
+// seed pixel. Balls across the band borders (for 2, 3 and 7 bands), one whose pale top (growth
+// colour only) reaches into the band above its first seed, touching balls and leaves: every band
+// count gives the same balls in the same order as one band.
+TEST(PhotoBalls, TheBandsDoNotChangeTheBalls) {
+  cv::Mat image = court({420, 300});
+  const std::vector<DrawnBall> balls{{Vec2(60, 150), 25},  {Vec2(110, 150), 25},
+                                     {Vec2(200, 100), 12}, {Vec2(300, 200), 40},
+                                     {Vec2(380, 43), 6},   {Vec2(30, 257), 4}};
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  const DrawnBall pale_topped{Vec2(200, 160), 20};
+  draw_ball(image, pale_topped);
+  cv::ellipse(image, {200, 160}, {22, 22}, 0, 180, 360, cv::Scalar(140, 200, 190), -1);
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> x(0, 419), y(0, 299);
+  for (int i = 0; i < 60; ++i) {  // leaves; one beside the pale top would be a seed above it
+    const cv::Point leaf(x(random), y(random));
+    if ((Vec2(leaf.x, leaf.y) - pale_topped.center).norm() > 30.0)
+      cv::circle(image, leaf, 1, {40, 200, 170}, -1);
+  }
+  PhotoBallOptions options;
+  options.bands = 1;
+  const std::vector<PhotoBall> one = PhotoBallDetector(options).detect(image);
+  ASSERT_GE(one.size(), balls.size() + 1);
+  ASSERT_NE(nearest(one, pale_topped), nullptr);
+  for (const int bands : {2, 3, 7}) {
+    options.bands = bands;
+    const std::vector<PhotoBall> split = PhotoBallDetector(options).detect(image);
+    ASSERT_EQ(split.size(), one.size()) << bands << " bands";
+    for (std::size_t i = 0; i < one.size(); ++i) {
+      EXPECT_EQ(split[i].center_px, one[i].center_px) << bands << " bands, ball " << i;
+      EXPECT_EQ(split[i].radius_px, one[i].radius_px) << bands << " bands, ball " << i;
+      EXPECT_EQ(split[i].score, one[i].score) << bands << " bands, ball " << i;
+    }
+  }
+}
+
 TEST(PhotoBalls, RefusesAnImageThatIsNotColour) {
   PhotoBallDetector detector;
   EXPECT_THROW(detector.detect(cv::Mat1b(10, 10)), InputError);
@@ -115,6 +152,9 @@ TEST(PhotoBalls, ValidatesItsOptions) {
   EXPECT_THROW(PhotoBallDetector{options}, InputError);
   options = {};
   options.colours.colours.clear();
+  EXPECT_THROW(PhotoBallDetector{options}, InputError);
+  options = {};
+  options.bands = -1;
   EXPECT_THROW(PhotoBallDetector{options}, InputError);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "ballsight/core/error.hpp"
@@ -16,6 +17,7 @@ void PhotoBallOptions::validate() const {
           "must be at least min_radius_px");
   require(circles.min_score >= 0.0 && circles.min_score <= 1.0, "min_score",
           "must be within [0, 1]");
+  require(bands >= 0, "bands", "must be 0 (one per thread) or more");
 }
 
 namespace {
@@ -133,52 +135,72 @@ PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
 std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   require(!bgr.empty() && bgr.type() == CV_8UC3, "ball detector", "expected an 8-bit BGR image");
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
-  buffers_.reset(static_cast<int>(image.total()));
-  const auto* pixels = image.ptr<cv::Vec3b>(0);
+  const int count =
+      std::clamp(options_.bands > 0 ? options_.bands : cv::getNumThreads(), 1, image.rows);
+  bands_.resize(static_cast<std::size_t>(count));
+  cv::parallel_for_(cv::Range(0, count), [&](const cv::Range& range) {
+    for (int b = range.start; b < range.end; ++b)
+      scan_band(image, b * image.rows / count, (b + 1) * image.rows / count,
+                bands_[static_cast<std::size_t>(b)]);
+  });
   std::vector<PhotoBall> out;
-  const auto count = static_cast<int>(image.total());
-  for (int seed = 0; seed < count; ++seed) {
-    if (buffers_.visited[static_cast<std::size_t>(seed)] ||
-        !(table_.classify(pixels[seed]) & kBallSeedClass))
-      continue;
-    grow_blob(image, table_, kBallGrowClass, seed, buffers_, blob_);
-    find_circles(image, out);
-  }
+  for (const Band& band : bands_) out.insert(out.end(), band.found.begin(), band.found.end());
   std::stable_sort(out.begin(), out.end(),
                    [](const PhotoBall& a, const PhotoBall& b) { return a.score > b.score; });
   return keep_isolated(image, table_, out);
 }
 
-void PhotoBallDetector::find_circles(const cv::Mat& bgr, std::vector<PhotoBall>& out) {
+void PhotoBallDetector::scan_band(const cv::Mat& bgr, int first_row, int end_row,
+                                  Band& band) const {
+  // Blobs grow beyond the band, so the band marks what it grew over the whole image.
+  band.buffers.reset(static_cast<int>(bgr.total()));
+  band.found.clear();
+  const auto* pixels = bgr.ptr<cv::Vec3b>(0);
+  const int begin = first_row * bgr.cols, end = end_row * bgr.cols;
+  const auto is_seed = [&](int index) { return (table_.classify(pixels[index]) & kBallSeedClass); };
+  for (int seed = begin; seed < end; ++seed) {
+    if (band.buffers.visited[static_cast<std::size_t>(seed)] || !is_seed(seed)) continue;
+    grow_blob(bgr, table_, kBallGrowClass, seed, band.buffers, band.blob);
+    // A blob with a seed pixel above the band is an earlier band's.
+    if (band.blob.bbox.y < first_row &&
+        std::any_of(band.blob.pixels.begin(), band.blob.pixels.end(),
+                    [&](int index) { return index < begin && is_seed(index); }))
+      continue;
+    find_circles(bgr, band);
+  }
+}
+
+void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   const double min_r = options_.circles.min_radius_px, max_r = options_.circles.max_radius_px;
   // A ball's blob holds at least a third of its disc; a blob larger than a few of the largest
   // balls is ground, foliage or a wall.
   // A blob of balls fills a good part of its box (one ball 0.79, three in a diagonal row 0.26);
   // foliage and leaf litter do not.
-  const double area = static_cast<double>(blob_.pixels.size());
+  const double area = static_cast<double>(band.blob.pixels.size());
   if (area < std::numbers::pi * min_r * min_r / 3.0 ||
-      area > 6.0 * std::numbers::pi * max_r * max_r || area < kMinBoxFill * blob_.bbox.area())
+      area > 6.0 * std::numbers::pi * max_r * max_r || area < kMinBoxFill * band.blob.bbox.area())
     return;
   // Most of a ball is of a seed colour (kMinSeedShare of its disc); a blob grown mostly through
   // the looser growth colours is shade, foliage or a wall.
   std::size_t seeds = 0;
   const auto* pixels = bgr.ptr<cv::Vec3b>(0);
-  for (int index : blob_.pixels) seeds += (table_.classify(pixels[index]) & kBallSeedClass) != 0;
+  for (int index : band.blob.pixels)
+    seeds += (table_.classify(pixels[index]) & kBallSeedClass) != 0;
   if (static_cast<double>(seeds) < kMinBlobSeedShare * area) return;
   constexpr int kMargin = 3;
   const cv::Rect region =
-      cv::Rect(blob_.bbox.x - kMargin, blob_.bbox.y - kMargin, blob_.bbox.width + 2 * kMargin,
-               blob_.bbox.height + 2 * kMargin) &
+      cv::Rect(band.blob.bbox.x - kMargin, band.blob.bbox.y - kMargin,
+               band.blob.bbox.width + 2 * kMargin, band.blob.bbox.height + 2 * kMargin) &
       cv::Rect(0, 0, bgr.cols, bgr.rows);
   // The blob with a one-pixel frame, so that the flood from the frame reaches every outside
   // pixel; what it does not reach is a hole.
-  patch_.create(region.height + 2, region.width + 2);
-  patch_.setTo(0);
-  for (int index : blob_.pixels)
-    patch_(index / bgr.cols - region.y + 1, index % bgr.cols - region.x + 1) = 255;
-  cv::floodFill(patch_, cv::Point(0, 0), 128);
+  band.patch.create(region.height + 2, region.width + 2);
+  band.patch.setTo(0);
+  for (int index : band.blob.pixels)
+    band.patch(index / bgr.cols - region.y + 1, index % bgr.cols - region.x + 1) = 255;
+  cv::floodFill(band.patch, cv::Point(0, 0), 128);
   BlobMask blob;
-  cv::compare(patch_(cv::Rect(1, 1, region.width, region.height)), 128, blob.mask, cv::CMP_NE);
+  cv::compare(band.patch(cv::Rect(1, 1, region.width, region.height)), 128, blob.mask, cv::CMP_NE);
   blob.origin = Vec2(region.x, region.y);
   blob.image_size = bgr.size();
   BlobCircleOptions geometry = options_.circles;
@@ -188,7 +210,7 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, std::vector<PhotoBall>&
     if (colour.seed_share < kMinSeedShare) continue;
     const double score = circle.score * (1.0 - colour.ring_alike);
     if (score >= options_.circles.min_score)
-      out.push_back({circle.center_px, circle.radius_px, score});
+      band.found.push_back({circle.center_px, circle.radius_px, score});
   }
 }
 

@@ -23,6 +23,10 @@ struct PhotoBall {
 struct PhotoBallOptions {
   BallColours colours = default_ball_colours();
   BlobCircleOptions circles;
+  /// Horizontal bands of the image searched in parallel (cv::parallel_for_); 0: one per OpenCV
+  /// thread. The balls found, and their order, do not depend on it: a blob belongs to the band of
+  /// its first seed pixel (row by row).
+  int bands = 0;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -33,19 +37,26 @@ class PhotoBallDetector {
   explicit PhotoBallDetector(const PhotoBallOptions& options = {});
 
   /// Every ball in an 8-bit BGR image, best score first. Reuses internal buffers: one detector
-  /// per thread.
+  /// per thread (it runs its bands on OpenCV's threads itself).
   std::vector<PhotoBall> detect(const cv::Mat& bgr);
 
   const PhotoBallOptions& options() const { return options_; }
 
  private:
-  void find_circles(const cv::Mat& bgr, std::vector<PhotoBall>& out);
+  // What one band's search works with, and the balls of the blobs it owns (first seed first).
+  struct Band {
+    BlobGrowthBuffers buffers;
+    GrownBlob blob;
+    cv::Mat1b patch;
+    std::vector<PhotoBall> found;
+  };
+
+  void scan_band(const cv::Mat& bgr, int first_row, int end_row, Band& band) const;
+  void find_circles(const cv::Mat& bgr, Band& band) const;
 
   PhotoBallOptions options_;
   ColorClassTable table_;
-  BlobGrowthBuffers buffers_;
-  GrownBlob blob_;
-  cv::Mat1b patch_;
+  std::vector<Band> bands_;
 };
 
 }  // namespace ballsight
