@@ -89,6 +89,47 @@ TEST(BallsightModelSelection, TheCorrectionIsSavedWithTheModel) {
   }
 }
 
+// A compound mirror with a sharp knee at 2 m (0.68 px/cm inside, 0.13 px/cm just outside), seen
+// at 12 directions x `distances` from 50 to 450 cm, radii with 0.1 px noise.
+double knee_radius_px(double distance_cm) {
+  return distance_cm < 200.0 ? 150.0 * std::pow(distance_cm / 200.0, 0.9)
+                             : 150.0 + 10.0 * (1.0 - std::exp(-(distance_cm - 200.0) / 80.0));
+}
+
+std::vector<PolarSample> knee_samples(int distances) {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  std::vector<PolarSample> samples;
+  for (int t = 0; t < 12; ++t) {
+    for (int i = 0; i < distances; ++i) {
+      const double d = 50.0 + 400.0 * i / (distances - 1);
+      samples.push_back({30.0 * t, knee_radius_px(d) + noise(rng), d, std::nullopt});
+    }
+  }
+  return samples;
+}
+
+int radius_segments(const BallsightGroundModel& model) {
+  return model.warp() ? model.warp()->to_json().at("radius_segments").get<int>() : 0;
+}
+
+// With 21 distances the correction may take 12 or 24 segments and follows the knee (1.3 cm
+// median from 1.5 to 3 m; with 6 segments 18 cm); with 5 (rings as the real ring sets have) it
+// keeps to 6: its freedom would only follow the noise.
+TEST(BallsightModelSelection, FollowsASharpKneeWhereTheDistancesAllowIt) {
+  const BallsightGroundModel dense = fit_ballsight_model(knee_samples(21), kImage);
+  EXPECT_GE(radius_segments(dense), 12);
+  std::vector<double> errors;
+  for (double d = 150.0; d <= 300.0; d += 5.0) {
+    for (double t = 0.0; t < 360.0; t += 30.0) {
+      errors.push_back(std::abs(dense.predict(t, knee_radius_px(d)).distance_cm - d));
+    }
+  }
+  EXPECT_LT(summarize_errors(errors).median, 3.0);
+  const BallsightGroundModel sparse = fit_ballsight_model(knee_samples(5), kImage);
+  EXPECT_LE(radius_segments(sparse), 6);
+}
+
 TEST(BallsightModelSelection, CanBeTurnedOff) {
   BallsightFitOptions options;
   options.radial_warp = false;

@@ -130,10 +130,11 @@ RadialWarp fit_radial_warp(std::span<const WarpTarget> targets,
   // Penalties relative to the data's weight per coefficient; a small ridge pulls coefficients
   // no sample reaches to zero (the physical model).
   const double scale = static_cast<double>(targets.size()) / n;
-  const Eigen::MatrixXd penalty =
-      scale * (options.theta_smoothing * difference_penalty(theta_basis, radius_basis, true) +
-               options.radius_smoothing * difference_penalty(theta_basis, radius_basis, false)) +
-      Eigen::MatrixXd::Identity(n, n) * (1e-4 * scale);
+  Eigen::MatrixXd penalty = difference_penalty(theta_basis, radius_basis, true);
+  penalty *= scale * options.theta_smoothing;
+  penalty +=
+      scale * options.radius_smoothing * difference_penalty(theta_basis, radius_basis, false);
+  penalty.diagonal().array() += 1e-4 * scale;
   std::vector<Basis> bases;
   bases.reserve(targets.size());
   for (const WarpTarget& t : targets) {
@@ -141,9 +142,12 @@ RadialWarp fit_radial_warp(std::span<const WarpTarget> targets,
   }
   std::vector<double> weights(targets.size(), 1.0);
   Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(n);
+  Eigen::MatrixXd normal(n, n);
+  Eigen::VectorXd rhs(n);
+  Eigen::LLT<Eigen::MatrixXd> solver(n);  // penalty + ridge: positive definite
   for (int pass = 0; pass < std::max(1, options.reweighting_passes); ++pass) {
-    Eigen::MatrixXd normal = penalty;
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+    normal = penalty;
+    rhs.setZero();
     for (std::size_t i = 0; i < targets.size(); ++i) {
       const Basis& b = bases[i];
       for (int j = 0; j < 16; ++j) {
@@ -153,7 +157,7 @@ RadialWarp fit_radial_warp(std::span<const WarpTarget> targets,
         }
       }
     }
-    coefficients = normal.ldlt().solve(rhs);
+    coefficients = solver.compute(normal).solve(rhs);
     std::vector<double> residuals(targets.size());
     for (std::size_t i = 0; i < targets.size(); ++i) {
       double fitted = 0.0;
