@@ -114,8 +114,8 @@ int radius_segments(const BallsightGroundModel& model) {
 }
 
 // With 21 distances the correction may take 12 or 24 segments and follows the knee (1.3 cm
-// median from 1.5 to 3 m; with 6 segments 18 cm); with 5 (rings as the real ring sets have) it
-// keeps to 6: its freedom would only follow the noise.
+// median from 1.5 to 3 m; with 6 segments 18 cm); with 5 (rings as the real ring sets have) the
+// finer corrections are not candidates.
 TEST(BallsightModelSelection, FollowsASharpKneeWhereTheDistancesAllowIt) {
   const BallsightGroundModel dense = fit_ballsight_model(knee_samples(21), kImage);
   EXPECT_GE(radius_segments(dense), 12);

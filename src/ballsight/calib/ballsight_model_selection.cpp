@@ -21,10 +21,11 @@ namespace {
 
 constexpr double kSmoothingGrid[] = {0.01, 0.1, 1.0, 10.0, 100.0};
 // The correction's segments along the radius: 6 for a smooth correction, 12 and 24 for a mirror
-// whose profile bends sharply (a compound mirror's knee; on the simulated table profile 6 leave
-// the mapping 4.6 cm off on held-out points). A finer correction is a candidate only where the
-// samples hold a distance for every two of its segments: between a few rings (5 on the real ring
-// sets) its freedom only follows the noise of the held-out folds.
+// whose profile bends sharply (a compound mirror's knee; on the simulated table profile, found
+// markers, 6 leave the mapping 7.4 cm off on held-out points). A finer correction is a candidate
+// only where the training part of every distance fold (one distance fewer) still holds a
+// distance for every two of its segments: between a few rings (5 on the real ring sets) its
+// freedom only follows the noise of the held-out folds.
 constexpr int kRadiusSegments[] = {6, 12, 24};
 constexpr std::size_t kMinFoldSamples = 8;
 constexpr std::size_t kMinFoldDistances = 3;
@@ -49,11 +50,12 @@ std::optional<double> radius_reading(const OmniGroundModel& model, double theta_
     if ((db - distance_cm) * (da - distance_cm) <= 0.0) {
       // Illinois false position within the bracket: a few readings instead of 30 halvings.
       double x0 = a, f0 = da - distance_cm, x1 = b, f1 = db - distance_cm, x = b;
-      for (int i = 0; i < 60 && f1 != 0.0 && f0 != f1; ++i) {
+      for (int i = 0; i < 60 && f1 != 0.0; ++i) {  // f0 and f1 keep opposite signs
         const double next = (x0 * f1 - x1 * f0) / (f1 - f0);
         if (std::abs(next - x) < 1e-9) return next;
         x = next;
         const double fx = reads(x) - distance_cm;
+        if (!std::isfinite(fx)) return std::nullopt;
         if (fx * f1 < 0.0) {
           x0 = x1, f0 = f1;
         } else {
@@ -89,7 +91,8 @@ struct Candidate {
 
 std::vector<Candidate> candidates(std::span<const PolarSample> samples) {
   std::vector<Candidate> all{{std::nullopt}};
-  const auto gaps = static_cast<int>(sample_distances(samples).size()) - 1;
+  // Gaps between the distances of a distance fold's training part.
+  const auto gaps = static_cast<int>(sample_distances(samples).size()) - 2;
   for (const int segments : kRadiusSegments) {
     if (segments != kRadiusSegments[0] && segments > 2 * gaps) break;
     for (const double theta : kSmoothingGrid) {

@@ -157,7 +157,10 @@ RadialWarp fit_radial_warp(std::span<const WarpTarget> targets,
         }
       }
     }
-    coefficients = solver.compute(normal).solve(rhs);
+    solver.compute(normal);
+    require(solver.info() == Eigen::Success, "warp fit",
+            "the normal equations are not positive definite (a target is not finite)");
+    coefficients = solver.solve(rhs);
     std::vector<double> residuals(targets.size());
     for (std::size_t i = 0; i < targets.size(); ++i) {
       double fitted = 0.0;

@@ -25,6 +25,7 @@ namespace {
 // A ball is mostly its own colour: at least this share of its inner disc is of a seed colour
 // (the growth colours are for its rim, its shade and its pale top).
 constexpr double kMinSeedShare = 0.3;
+constexpr int kMinBandRows = 64;
 constexpr double kMinBoxFill = 0.15;
 constexpr double kMinBlobSeedShare = 0.15;
 // Ring pixels of the ball's own hue family (within this of its mean hue, saturation >= 0.2):
@@ -135,8 +136,12 @@ PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
 std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   require(!bgr.empty() && bgr.type() == CV_8UC3, "ball detector", "expected an 8-bit BGR image");
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
+  // By default a band per thread, each of at least kMinBandRows rows (a band costs a pass over
+  // its record of grown pixels, and a blob across k bands is grown k times).
   const int count =
-      std::clamp(options_.bands > 0 ? options_.bands : cv::getNumThreads(), 1, image.rows);
+      std::clamp(options_.bands > 0 ? options_.bands
+                                    : std::min(cv::getNumThreads(), image.rows / kMinBandRows),
+                 1, image.rows);
   bands_.resize(static_cast<std::size_t>(count));
   cv::parallel_for_(cv::Range(0, count), [&](const cv::Range& range) {
     for (int b = range.start; b < range.end; ++b)
