@@ -25,13 +25,20 @@ namespace {
 // A ball is mostly its own colour: at least this share of its inner disc is of a seed colour
 // (the growth colours are for its rim, its shade and its pale top).
 constexpr double kMinSeedShare = 0.3;
-constexpr int kMinBandRows = 64;
 constexpr double kMinBoxFill = 0.15;
 constexpr double kMinBlobSeedShare = 0.15;
 // Ring pixels of the ball's own hue family (within this of its mean hue, saturation >= 0.2):
 // foliage, a wall or a court of the ball's colour, not a ball standing out.
 constexpr double kAlikeHueDeg = 40.0;
 constexpr double kAlikeSaturation = 0.2;
+
+// By default a band per thread, each of at least this many rows (a band costs a pass over its
+// record of grown pixels, and a blob across k bands is grown k times).
+constexpr int kMinBandRows = 64;
+
+bool is_ball_seed(const ColorClassTable& table, const cv::Vec3b& pixel) {
+  return (table.classify(pixel) & kBallSeedClass) != 0;
+}
 
 struct ColourSupport {
   double seed_share = 0.0;  // seed-colour pixels in the disc of 0.8 r
@@ -63,7 +70,7 @@ ColourSupport colour_support(const cv::Mat& bgr, const ColorClassTable& table,
       const double d = (Vec2(x, y) - c).norm();
       if (d <= inner) {
         ++disc;
-        if (table.classify(row[x]) & kBallSeedClass) {
+        if (is_ball_seed(table, row[x])) {
           ++seeds;
           const double h = hue_deg(row[x]) * std::numbers::pi / 180.0;
           hue_sum += saturation_of(row[x]) * Vec2(std::cos(h), std::sin(h));
@@ -136,8 +143,6 @@ PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
 std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   require(!bgr.empty() && bgr.type() == CV_8UC3, "ball detector", "expected an 8-bit BGR image");
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
-  // By default a band per thread, each of at least kMinBandRows rows (a band costs a pass over
-  // its record of grown pixels, and a blob across k bands is grown k times).
   const int count =
       std::clamp(options_.bands > 0 ? options_.bands
                                     : std::min(cv::getNumThreads(), image.rows / kMinBandRows),
@@ -162,7 +167,7 @@ void PhotoBallDetector::scan_band(const cv::Mat& bgr, int first_row, int end_row
   band.found.clear();
   const auto* pixels = bgr.ptr<cv::Vec3b>(0);
   const int begin = first_row * bgr.cols, end = end_row * bgr.cols;
-  const auto is_seed = [&](int index) { return (table_.classify(pixels[index]) & kBallSeedClass); };
+  const auto is_seed = [&](int index) { return is_ball_seed(table_, pixels[index]); };
   for (int seed = begin; seed < end; ++seed) {
     if (band.buffers.visited[static_cast<std::size_t>(seed)] || !is_seed(seed)) continue;
     grow_blob(bgr, table_, kBallGrowClass, seed, band.buffers, band.blob);
@@ -189,8 +194,7 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   // the looser growth colours is shade, foliage or a wall.
   std::size_t seeds = 0;
   const auto* pixels = bgr.ptr<cv::Vec3b>(0);
-  for (int index : band.blob.pixels)
-    seeds += (table_.classify(pixels[index]) & kBallSeedClass) != 0;
+  for (int index : band.blob.pixels) seeds += is_ball_seed(table_, pixels[index]);
   if (static_cast<double>(seeds) < kMinBlobSeedShare * area) return;
   constexpr int kMargin = 3;
   const cv::Rect region =
