@@ -78,8 +78,8 @@ void add_detect_balls_command(CLI::App& detect) {
       "radius in pixels, touching balls apart, balls cut by the border with their whole circle");
   cmd->add_option("--image", args->image, "The photo (PNG, JPEG)")->required();
   cmd->add_option("--colours", args->colours,
-                  "A colour model learned with `colours learn` (default: optic yellow and stage "
-                  "orange tennis balls)")
+                  "A colour model learned with `colours learn` (default: optic yellow tennis "
+                  "balls, in light and in shade, and stage orange ones)")
       ->type_name("FILE");
   cmd->add_option("--min-radius-px", args->options.circles.min_radius_px,
                   "Smallest ball radius looked for")

@@ -23,8 +23,8 @@ struct DrawnBall {
 cv::Mat court(cv::Size size, unsigned seed = 1) {
   cv::Mat image(size, CV_8UC3, cv::Scalar(150, 120, 95));
   cv::Mat noise(size, CV_8UC3);
-  cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(4));
   cv::theRNG().state = seed;
+  cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(4));
   cv::add(image, noise, image, cv::noArray(), CV_8UC3);
   return image;
 }
@@ -101,6 +101,42 @@ TEST(PhotoBalls, IgnoresALineAndFoliageOfABallsColour) {
     cv::circle(image, {x(random), y(random)}, 2, cv::Scalar(40, 200, 170), -1);
   PhotoBallDetector detector;
   EXPECT_TRUE(detector.detect(image).empty());
+}
+
+// A round patch of weeds of a ball's colour, standing alone on the court, passes every test of
+// shape and colour; its sunlit leaves and the dark gaps between them make it far rougher than a
+// ball's felt, which stays smooth under strong sensor noise.
+TEST(PhotoBalls, WeedsAreTooRoughForABallAndANoisyBallIsNot) {
+  cv::Mat image = court({300, 150});
+  // Sunlit leaves, shaded leaves and the gaps between them, pixel by pixel.
+  const cv::Scalar leaves[] = {{40, 235, 205}, {25, 140, 115}, {15, 50, 40}};
+  std::mt19937 random(7);
+  std::discrete_distribution<int> leaf({0.45, 0.35, 0.2});
+  for (int y = 63; y <= 87; ++y)
+    for (int x = 63; x <= 87; ++x)
+      if ((Vec2(x, y) - Vec2(75, 75)).norm() <= 12.0)
+        cv::rectangle(image, {x, y}, {x, y}, leaves[leaf(random)]);
+  const DrawnBall ball{Vec2(225, 75), 12};
+  cv::Mat ball_layer = court({300, 150});
+  draw_ball(ball_layer, ball);
+  cv::Mat noise(image.size(), CV_16SC3);
+  cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(10));
+  cv::Mat noisy;
+  cv::add(ball_layer, noise, noisy, cv::noArray(), CV_8UC3);
+  noisy(cv::Rect(150, 0, 150, 150)).copyTo(image(cv::Rect(150, 0, 150, 150)));
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), {ball});
+}
+
+// In a hard shadow the court and the balls get only the sky's light: a quarter of their sunlit
+// brightness. The default colour model finds the balls there (its hue and saturation hold).
+TEST(PhotoBalls, FindsBallsInAHardShadow) {
+  cv::Mat image = court({200, 200});
+  const std::vector<DrawnBall> balls{{Vec2(60, 100), 4}, {Vec2(140, 100), 15}};
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  image *= 0.25;
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), balls);
 }
 
 // The image is searched in horizontal bands in parallel; a blob belongs to the band of its first

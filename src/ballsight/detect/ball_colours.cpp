@@ -62,8 +62,12 @@ void BallColours::validate(const std::string& where) const {
 
 BallColours default_ball_colours() {
   BallColours model;
-  model.colours.push_back({"optic yellow", HueBand{40.0, 95.0, 0.0, 0.35, 70.0},
-                           HueBand{30.0, 110.0, 0.0, 0.22, 30.0}});
+  const HueBand yellow_growth{30.0, 110.0, 0.0, 0.22, 30.0};
+  model.colours.push_back({"optic yellow", HueBand{40.0, 95.0, 0.0, 0.35, 70.0}, yellow_growth});
+  // In a hard shadow the felt, lit by the sky alone, keeps its hue and most of its saturation
+  // while its value falls below the sunlit band; dark foliage is much less saturated.
+  model.colours.push_back(
+      {"optic yellow in shade", HueBand{45.0, 85.0, 0.0, 0.7, 40.0}, yellow_growth});
   model.colours.push_back(
       {"stage orange", HueBand{5.0, 40.0, 0.0, 0.55, 90.0}, HueBand{0.0, 50.0, 0.0, 0.35, 40.0}});
   return model;

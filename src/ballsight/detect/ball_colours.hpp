@@ -30,9 +30,9 @@ struct BallColours {
   void validate(const std::string& where) const;
 };
 
-/// Tennis balls out of the box: optic yellow (hue 40-95 deg, its shade and sunlit top 30-110)
-/// and the orange of stage balls (hue 5-40 deg). Chosen from the colours of balls, not tuned on
-/// any test photo (docs/detect-balls.md).
+/// Tennis balls out of the box: optic yellow (hue 40-95 deg, its shade and sunlit top 30-110),
+/// optic yellow in a hard shadow (darker, as saturated) and the orange of stage balls (hue 5-40
+/// deg). Chosen from the colours of balls, not tuned on any test photo (docs/detect-balls.md).
 BallColours default_ball_colours();
 
 /// Class bits of a ball colour table.

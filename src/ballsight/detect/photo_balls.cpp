@@ -31,6 +31,14 @@ constexpr double kMinBlobSeedShare = 0.15;
 // foliage, a wall or a court of the ball's colour, not a ball standing out.
 constexpr double kAlikeHueDeg = 40.0;
 constexpr double kAlikeSaturation = 0.2;
+// A ball's felt is smooth at a photo's scale: its disc shades slowly, broken only by the thin
+// seam and a shadow's edge, while a patch of leaves or weeds of its colour is all edges and gaps.
+// Roughness: the mean absolute difference between a disc pixel's brightness and the mean of its
+// four neighbours, over the disc's mean brightness. Sensor noise of sigma s grey levels adds
+// about 0.9 s over the brightness (0.04 for s = 5 on a ball of 120). On the real court photos
+// (docs/RESULTS.md), looked at when this bound was set: the balls 0.01-0.15, the weeds behind
+// the fence that passed every other test 0.23-0.36.
+constexpr double kMaxRoughness = 0.2;
 
 // By default a band per thread, each of at least this many rows (a band costs a pass over its
 // record of grown pixels, and a blob across k bands is grown k times).
@@ -40,18 +48,31 @@ bool is_ball_seed(const ColorClassTable& table, const cv::Vec3b& pixel) {
   return (table.classify(pixel) & kBallSeedClass) != 0;
 }
 
-struct ColourSupport {
+struct Appearance {
   double seed_share = 0.0;  // seed-colour pixels in the disc of 0.8 r
   double ring_alike = 0.0;  // ring pixels (r + max(1, 0.2 r) to r + max(3, 0.8 r)) of its hue
+  double roughness = 0.0;   // of the disc of 0.8 r (kMaxRoughness)
 };
+
+double brightness(const cv::Vec3b& p) {
+  return (p[0] + p[1] + p[2]) / 3.0;
+}
+
+// |brightness - mean of the four neighbours| at (x, y), which lies at least a pixel inside.
+double laplacian_residual(const cv::Mat& bgr, int x, int y) {
+  const auto* row = bgr.ptr<cv::Vec3b>(y);
+  const double around = brightness(row[x - 1]) + brightness(row[x + 1]) +
+                        brightness(bgr.ptr<cv::Vec3b>(y - 1)[x]) +
+                        brightness(bgr.ptr<cv::Vec3b>(y + 1)[x]);
+  return std::abs(brightness(row[x]) - 0.25 * around);
+}
 
 double saturation_of(const cv::Vec3b& p) {
   const int hi = std::max({p[0], p[1], p[2]}), lo = std::min({p[0], p[1], p[2]});
   return hi > 0 ? static_cast<double>(hi - lo) / hi : 0.0;
 }
 
-ColourSupport colour_support(const cv::Mat& bgr, const ColorClassTable& table,
-                             const BlobCircle& circle) {
+Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const BlobCircle& circle) {
   const double r = circle.radius_px;
   const double inner = 0.8 * r, ring_in = r + std::max(1.0, 0.2 * r),
                ring_out = r + std::max(3.0, 0.8 * r);
@@ -61,7 +82,8 @@ ColourSupport colour_support(const cv::Mat& bgr, const ColorClassTable& table,
   const int y0 = std::max(0, static_cast<int>(std::floor(c.y() - ring_out)));
   const int x1 = std::min(bgr.cols - 1, static_cast<int>(std::ceil(c.x() + ring_out)));
   const int y1 = std::min(bgr.rows - 1, static_cast<int>(std::ceil(c.y() + ring_out)));
-  int disc = 0, seeds = 0;
+  int disc = 0, seeds = 0, inside = 0;
+  double light = 0.0, residual = 0.0;
   Vec2 hue_sum = Vec2::Zero();
   std::vector<cv::Vec3b> ring;
   for (int y = y0; y <= y1; y += step) {
@@ -70,6 +92,11 @@ ColourSupport colour_support(const cv::Mat& bgr, const ColorClassTable& table,
       const double d = (Vec2(x, y) - c).norm();
       if (d <= inner) {
         ++disc;
+        light += brightness(row[x]);
+        if (x > 0 && y > 0 && x + 1 < bgr.cols && y + 1 < bgr.rows) {
+          ++inside;
+          residual += laplacian_residual(bgr, x, y);
+        }
         if (is_ball_seed(table, row[x])) {
           ++seeds;
           const double h = hue_deg(row[x]) * std::numbers::pi / 180.0;
@@ -80,9 +107,10 @@ ColourSupport colour_support(const cv::Mat& bgr, const ColorClassTable& table,
       }
     }
   }
-  ColourSupport support;
+  Appearance support;
   if (disc == 0 || seeds == 0) return support;
   support.seed_share = static_cast<double>(seeds) / disc;
+  if (inside > 0 && light > 0.0) support.roughness = residual / inside / (light / disc);
   const double mean_hue = std::atan2(hue_sum.y(), hue_sum.x()) * 180.0 / std::numbers::pi;
   int alike = 0;
   for (const cv::Vec3b& p : ring) {
@@ -215,9 +243,9 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   BlobCircleOptions geometry = options_.circles;
   geometry.min_score = 0.0;
   for (const BlobCircle& circle : circles_in_blob(blob, geometry)) {
-    const ColourSupport colour = colour_support(bgr, table_, circle);
-    if (colour.seed_share < kMinSeedShare) continue;
-    const double score = circle.score * (1.0 - colour.ring_alike);
+    const Appearance look = appearance(bgr, table_, circle);
+    if (look.seed_share < kMinSeedShare || look.roughness > kMaxRoughness) continue;
+    const double score = circle.score * (1.0 - look.ring_alike);
     if (score >= options_.circles.min_score)
       band.found.push_back({circle.center_px, circle.radius_px, score});
   }
