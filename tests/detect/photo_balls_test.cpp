@@ -83,6 +83,20 @@ TEST(PhotoBalls, SeparatesTouchingBalls) {
   expect_found(detector.detect(image), balls);
 }
 
+// Far from a court camera the balls of a clump (here a row of four, and a pair) are a few pixels
+// each: every one is found, though each has the others of its colour close around (they are not
+// weeds: the clump narrows between its balls; a painted line does not,
+// IgnoresALineAndFoliageOfABallsColour).
+TEST(PhotoBalls, FindsEveryBallOfAClumpOfSmallBalls) {
+  cv::Mat image = court({200, 120});
+  const std::vector<DrawnBall> balls{{Vec2(40.3, 60.2), 3.5},  {Vec2(47.7, 59.6), 3.5},
+                                     {Vec2(55.0, 61.0), 3.5},  {Vec2(62.4, 60.4), 3.5},
+                                     {Vec2(140.0, 60.0), 5.0}, {Vec2(149.5, 60.5), 5.0}};
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), balls);
+}
+
 TEST(PhotoBalls, GivesTheWholeCircleOfABallCutByTheBorder) {
   cv::Mat image = court({300, 200});
   const DrawnBall ball{Vec2(20, 150), 45};  // a third of it outside the image

@@ -236,7 +236,39 @@ void fill_and_ring(const BlobMask& blob, const std::vector<BlobCircle>& circles,
   ring = around > 0 ? static_cast<double>(around_in) / around : 0.0;
 }
 
+// The blob's width at `at` across the unit direction `across`, probed every half pixel.
+double width_across(const BlobMask& blob, const Vec2& at, const Vec2& across, double reach) {
+  double width = 0.0;
+  for (const double side : {1.0, -1.0})
+    for (double t = 0.5; t <= reach && blob.contains(at + side * t * across); t += 0.5)
+      width += 0.5;
+  return width;
+}
+
 }  // namespace
+
+bool is_clump(const BlobMask& blob, const std::vector<BlobCircle>& circles) {
+  bool touching = false;
+  for (std::size_t i = 0; i < circles.size(); ++i) {
+    for (std::size_t j = i + 1; j < circles.size(); ++j) {
+      const BlobCircle &a = circles[i], &b = circles[j];
+      const Vec2 join = b.center_px - a.center_px;
+      const double d = join.norm();
+      if (d < 1e-9 || d > a.radius_px + b.radius_px + 1.0) continue;
+      touching = true;
+      // The neck lies where the two circles' outlines cross (their radical line).
+      const double from_a = std::clamp(
+          (d * d + a.radius_px * a.radius_px - b.radius_px * b.radius_px) / (2.0 * d), 0.0, d);
+      const Vec2 along = join / d, across(-along.y(), along.x());
+      const double reach = 2.0 * std::max(a.radius_px, b.radius_px);
+      const double neck = width_across(blob, a.center_px + from_a * along, across, reach);
+      const double narrowest = std::min(width_across(blob, a.center_px, across, reach),
+                                        width_across(blob, b.center_px, across, reach));
+      if (neck > kClumpNeck * narrowest) return false;
+    }
+  }
+  return touching;
+}
 
 bool BlobMask::contains(const Vec2& q) const {
   const Vec2 m = q - origin;

@@ -41,4 +41,11 @@ struct BlobMask {
 /// Circles in a blob, in image pixels.
 std::vector<BlobCircle> circles_in_blob(const BlobMask& blob, const BlobCircleOptions& options);
 
+/// Whether the blob's circles are a clump of touching balls: at least two, and between every two
+/// that touch (centres within the sum of the radii and a pixel) the blob narrows to a neck, at
+/// most kClumpNeck of its width through either centre (across the line joining them). A painted
+/// line or an elongated leaf split into a row of circles has no neck.
+bool is_clump(const BlobMask& blob, const std::vector<BlobCircle>& circles);
+inline constexpr double kClumpNeck = 0.75;
+
 }  // namespace ballsight

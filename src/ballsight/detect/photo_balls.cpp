@@ -123,14 +123,15 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Bl
 }
 
 // A small ball (a few pixels: its shape says little) stands apart from everything of a ball
-// colour: weeds, leaves and foliage come in clusters of specks. Its wide ring
+// colour: weeds, leaves and foliage come in fields of specks. Its wide ring
 // (r + max(3, 0.3 r) to r + max(12, 0.6 r)) holds almost no pixel of a growth colour, apart from
-// the balls already kept (best score first).
+// the balls kept already (best score first) and the balls of its own clump.
 constexpr double kSmallRadiusPx = 8.0;
 constexpr double kMaxWideShare = 0.02;
+constexpr double kOtherBallMarginPx = 2.0;
 
 double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const PhotoBall& ball,
-                       const std::vector<PhotoBall>& kept) {
+                       const std::vector<PhotoBall>& others) {
   const double r = ball.radius_px;
   const double ring_in = r + std::max(3.0, 0.3 * r), ring_out = r + std::max(12.0, 0.6 * r);
   const Vec2& c = ball.center_px;
@@ -143,10 +144,10 @@ double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const P
       const Vec2 q(x, y);
       const double d = (q - c).norm();
       if (d < ring_in || d > ring_out) continue;
-      const bool in_kept = std::any_of(kept.begin(), kept.end(), [&q](const PhotoBall& k) {
-        return (q - k.center_px).norm() <= k.radius_px + 2.0;
+      const bool in_other = std::any_of(others.begin(), others.end(), [&q](const PhotoBall& o) {
+        return (q - o.center_px).norm() <= o.radius_px + kOtherBallMarginPx;
       });
-      if (in_kept) continue;
+      if (in_other) continue;
       ++count;
       coloured += (table.classify(row[x]) & kBallGrowClass) != 0;
     }
@@ -154,19 +155,25 @@ double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const P
   return count > 0 ? static_cast<double>(coloured) / count : 0.0;
 }
 
-std::vector<PhotoBall> keep_isolated(const cv::Mat& bgr, const ColorClassTable& table,
-                                     const std::vector<PhotoBall>& balls) {
-  std::vector<PhotoBall> kept;
-  for (const PhotoBall& ball : balls)
-    if (ball.radius_px > kSmallRadiusPx || wide_ring_share(bgr, table, ball, kept) <= kMaxWideShare)
-      kept.push_back(ball);
-  return kept;
-}
-
 }  // namespace
 
 PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
     : options_(options), table_((options.validate(), ball_colour_table(options.colours))) {}
+
+std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
+                                                        const std::vector<Found>& found) const {
+  std::vector<PhotoBall> kept, others;
+  for (const Found& f : found) {
+    if (f.ball.radius_px <= kSmallRadiusPx) {
+      others = kept;
+      for (const Found& mate : found)
+        if (f.clump >= 0 && mate.clump == f.clump) others.push_back(mate.ball);
+      if (wide_ring_share(bgr, table_, f.ball, others) > kMaxWideShare) continue;
+    }
+    kept.push_back(f.ball);
+  }
+  return kept;
+}
 
 std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   require(!bgr.empty() && bgr.type() == CV_8UC3, "ball detector", "expected an 8-bit BGR image");
@@ -181,11 +188,18 @@ std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
       scan_band(image, b * image.rows / count, (b + 1) * image.rows / count,
                 bands_[static_cast<std::size_t>(b)]);
   });
-  std::vector<PhotoBall> out;
-  for (const Band& band : bands_) out.insert(out.end(), band.found.begin(), band.found.end());
-  std::stable_sort(out.begin(), out.end(),
-                   [](const PhotoBall& a, const PhotoBall& b) { return a.score > b.score; });
-  return keep_isolated(image, table_, out);
+  std::vector<Found> found;
+  int clumps = 0;  // of the bands before
+  for (const Band& band : bands_) {
+    for (Found f : band.found) {
+      if (f.clump >= 0) f.clump += clumps;
+      found.push_back(f);
+    }
+    clumps += band.clumps;
+  }
+  std::stable_sort(found.begin(), found.end(),
+                   [](const Found& a, const Found& b) { return a.ball.score > b.ball.score; });
+  return keep_isolated(image, found);
 }
 
 void PhotoBallDetector::scan_band(const cv::Mat& bgr, int first_row, int end_row,
@@ -193,6 +207,7 @@ void PhotoBallDetector::scan_band(const cv::Mat& bgr, int first_row, int end_row
   // Blobs grow beyond the band, so the band marks what it grew over the whole image.
   band.buffers.reset(static_cast<int>(bgr.total()));
   band.found.clear();
+  band.clumps = 0;
   const auto* pixels = bgr.ptr<cv::Vec3b>(0);
   const int begin = first_row * bgr.cols, end = end_row * bgr.cols;
   const auto is_seed = [&](int index) { return is_ball_seed(table_, pixels[index]); };
@@ -242,12 +257,14 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   blob.image_size = bgr.size();
   BlobCircleOptions geometry = options_.circles;
   geometry.min_score = 0.0;
-  for (const BlobCircle& circle : circles_in_blob(blob, geometry)) {
+  const std::vector<BlobCircle> circles = circles_in_blob(blob, geometry);
+  const int clump = is_clump(blob, circles) ? band.clumps++ : -1;
+  for (const BlobCircle& circle : circles) {
     const Appearance look = appearance(bgr, table_, circle);
     if (look.seed_share < kMinSeedShare || look.roughness > kMaxRoughness) continue;
     const double score = circle.score * (1.0 - look.ring_alike);
     if (score >= options_.circles.min_score)
-      band.found.push_back({circle.center_px, circle.radius_px, score});
+      band.found.push_back({{circle.center_px, circle.radius_px, score}, clump});
   }
 }
 

@@ -43,16 +43,25 @@ class PhotoBallDetector {
   const PhotoBallOptions& options() const { return options_; }
 
  private:
-  // What one band's search works with, and the balls of the blobs it owns (first seed first).
+  // A ball, and the clump of touching balls it belongs to (is_clump; -1: none).
+  struct Found {
+    PhotoBall ball;
+    int clump = -1;
+  };
+  // What one band's search works with, and the balls of the blobs it owns (first seed first;
+  // its clumps numbered from 0).
   struct Band {
     BlobGrowthBuffers buffers;
     GrownBlob blob;
     cv::Mat1b patch;
-    std::vector<PhotoBall> found;
+    int clumps = 0;
+    std::vector<Found> found;
   };
 
   void scan_band(const cv::Mat& bgr, int first_row, int end_row, Band& band) const;
   void find_circles(const cv::Mat& bgr, Band& band) const;
+  // The balls found (best score first), less the small ones that do not stand apart.
+  std::vector<PhotoBall> keep_isolated(const cv::Mat& bgr, const std::vector<Found>& found) const;
 
   PhotoBallOptions options_;
   ColorClassTable table_;
