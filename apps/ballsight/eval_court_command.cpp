@@ -46,14 +46,7 @@ void add_eval_court_command(CLI::App& eval) {
       "rendered chessboards and reference balls: recall, precision, duplicates, ball and robot "
       "errors");
   add_seed_option(*cmd, args->options.seed, "Random seed: same seed, same figures");
-  cmd->add_option("--scenes", args->options.scenes, "Number of scenes [1, 1000]")
-      ->capture_default_str();
-  cmd->add_option("--width", args->options.rig.width, "Camera image width, px")
-      ->capture_default_str();
-  cmd->add_option("--height", args->options.rig.height, "Camera image height, px")
-      ->capture_default_str();
-  cmd->add_flag("--distractors", args->options.scenario.distractors,
-                "Fallen leaves and a water bottle of a ball's colour on some scenes");
+  add_court_scene_options(*cmd, args->options.scenes, args->options.rig, args->options.scenario);
   cmd->add_flag("--no-net", args->no_net,
                 "Scenes on a court without a net (the simulator of before the net)");
   cmd->add_flag("--json", args->json,

@@ -38,6 +38,15 @@ CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::
   return command.add_option("--seed", seed, help)->check(digits)->capture_default_str();
 }
 
+void add_court_scene_options(CLI::App& command, int& scenes, sim::CourtRigOptions& rig,
+                             sim::CourtScenarioOptions& scenario) {
+  command.add_option("--scenes", scenes, "Number of scenes [1, 1000]")->capture_default_str();
+  command.add_option("--width", rig.width, "Camera image width, px")->capture_default_str();
+  command.add_option("--height", rig.height, "Camera image height, px")->capture_default_str();
+  command.add_flag("--distractors", scenario.distractors,
+                   "Fallen leaves and a water bottle of a ball's colour on some scenes");
+}
+
 Vec2 parse_pixel_pair(const std::string& text, const std::string& option) {
   const std::vector<double> xy = parse_numbers(text, 2, option, "two numbers X,Y in pixels");
   return {xy[0], xy[1]};

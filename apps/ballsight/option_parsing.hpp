@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/sim/court_rig.hpp"
+#include "ballsight/sim/court_scenario.hpp"
 
 namespace ballsight::app {
 
@@ -25,6 +27,11 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count,
 /// Adds `--seed` to `command`: an integer in [0, 2^64), checked as text (CLI11 alone would wrap
 /// "-5" into a huge seed).
 CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::string& help);
+
+/// Adds the simulated court's `--scenes`, `--width`, `--height` and `--distractors` (eval court,
+/// eval tennis-sim).
+void add_court_scene_options(CLI::App& command, int& scenes, sim::CourtRigOptions& rig,
+                             sim::CourtScenarioOptions& scenario);
 
 /// "X,Y" -> two finite numbers; throws InputError naming `option`.
 Vec2 parse_pixel_pair(const std::string& text, const std::string& option);

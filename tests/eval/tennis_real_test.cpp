@@ -46,7 +46,7 @@ TEST(TennisReal, BallsightBeatsTheReportOnRealPhotos) {
   const BoxMatch& ballsight = result.methods[0].total;
   const BoxMatch& report = result.methods[1].total;
   EXPECT_GE(recall(ballsight), 0.85);
-  EXPECT_GE(precision(ballsight), 0.70);
+  EXPECT_GE(precision(ballsight), 0.90);
   EXPECT_GT(recall(ballsight), recall(report));
   EXPECT_GT(precision(ballsight), 5.0 * precision(report));
   ASSERT_FALSE(ballsight.center_error_ratio.empty());

@@ -71,15 +71,6 @@ cv::Rect2d clipped_box(const PhotoBall& ball, cv::Size image_size) {
 
 using Detector = std::function<std::vector<PhotoBall>(const cv::Mat&)>;
 
-std::vector<PhotoBall> report_hsv(const cv::Mat& bgr) {
-  const SeedDetectorOptions options;
-  std::vector<PhotoBall> balls;
-  for (const PixelDetection& d :
-       detect_seed_colour(bgr, options.ball, options.median_kernel_px, ObjectClass::ball))
-    balls.push_back({d.center_px, d.radius_px, 1.0});
-  return balls;
-}
-
 TennisMethodResult run_method(const std::string& name, const Detector& detect,
                               const std::vector<LabelledPhotoSet>& sets, int timing_runs) {
   TennisMethodResult result{name, {}, {}};
@@ -97,12 +88,7 @@ TennisMethodResult run_method(const std::string& name, const Detector& detect,
       }
       PhotoResult r{set.name, photo.file, match_balls_to_boxes(photo.boxes, balls, image.size()),
                     median(ms)};
-      result.total.labelled += r.match.labelled;
-      result.total.detected += r.match.detected;
-      result.total.matched += r.match.matched;
-      result.total.center_error_ratio.insert(result.total.center_error_ratio.end(),
-                                             r.match.center_error_ratio.begin(),
-                                             r.match.center_error_ratio.end());
+      add_match(result.total, r.match);
       result.photos.push_back(std::move(r));
     }
   }
@@ -158,6 +144,23 @@ BoxMatch match_balls_to_boxes(const std::vector<cv::Rect>& boxes,
   return match;
 }
 
+void add_match(BoxMatch& total, const BoxMatch& part) {
+  total.labelled += part.labelled;
+  total.detected += part.detected;
+  total.matched += part.matched;
+  total.center_error_ratio.insert(total.center_error_ratio.end(), part.center_error_ratio.begin(),
+                                  part.center_error_ratio.end());
+}
+
+std::vector<PhotoBall> report_hsv_balls(const cv::Mat& bgr) {
+  const SeedDetectorOptions options;
+  std::vector<PhotoBall> balls;
+  for (const PixelDetection& d :
+       detect_seed_colour(bgr, options.ball, options.median_kernel_px, ObjectClass::ball))
+    balls.push_back({d.center_px, d.radius_px, 1.0});
+  return balls;
+}
+
 double recall(const BoxMatch& match) {
   return match.labelled > 0 ? static_cast<double>(match.matched) / match.labelled : 1.0;
 }
@@ -178,13 +181,11 @@ TennisRealResult run_tennis_real(const TennisRealOptions& options) {
   result.methods.push_back(run_method(
       "ballsight", [&detector](const cv::Mat& bgr) { return detector.detect(bgr); }, sets,
       options.timing_runs));
-  result.methods.push_back(run_method("report-hsv", report_hsv, sets, options.timing_runs));
+  result.methods.push_back(run_method("report-hsv", report_hsv_balls, sets, options.timing_runs));
   return result;
 }
 
-namespace {
-
-nlohmann::json match_json(const BoxMatch& match) {
+nlohmann::json box_match_json(const BoxMatch& match) {
   return {{"labelled", match.labelled},
           {"detected", match.detected},
           {"matched", match.matched},
@@ -193,22 +194,20 @@ nlohmann::json match_json(const BoxMatch& match) {
           {"median_center_error_ratio", median_or_zero(match.center_error_ratio)}};
 }
 
-}  // namespace
-
 nlohmann::json tennis_real_json(const TennisRealResult& result) {
   nlohmann::json methods = nlohmann::json::array();
   for (const TennisMethodResult& method : result.methods) {
     nlohmann::json photos = nlohmann::json::array();
     std::vector<double> ms;
     for (const PhotoResult& photo : method.photos) {
-      nlohmann::json p = match_json(photo.match);
+      nlohmann::json p = box_match_json(photo.match);
       p["set"] = photo.set;
       p["file"] = photo.file;
       p["milliseconds"] = photo.milliseconds;
       photos.push_back(p);
       ms.push_back(photo.milliseconds);
     }
-    nlohmann::json m = match_json(method.total);
+    nlohmann::json m = box_match_json(method.total);
     m["method"] = method.method;
     m["median_milliseconds"] = median_or_zero(ms);
     m["photos"] = photos;

@@ -73,6 +73,14 @@ TennisRealResult run_tennis_real(const TennisRealOptions& options);
 
 double recall(const BoxMatch& match);
 double precision(const BoxMatch& match);
+/// Adds `part`'s counts and centre errors to `total`.
+void add_match(BoxMatch& total, const BoxMatch& part);
+/// {"labelled", "detected", "matched", "recall", "precision", "median_center_error_ratio"}.
+nlohmann::json box_match_json(const BoxMatch& match);
+
+/// The tennis report's detector (HSV threshold, median filter, contours' centres of mass, radius
+/// from the contour's area), its detections with score 1.
+std::vector<PhotoBall> report_hsv_balls(const cv::Mat& bgr);
 
 nlohmann::json tennis_real_json(const TennisRealResult& result);
 std::string tennis_real_table(const TennisRealResult& result);

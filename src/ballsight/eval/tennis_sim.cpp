@@ -1,0 +1,152 @@
+#include "ballsight/eval/tennis_sim.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/core/text_format.hpp"
+#include "ballsight/sim/court_renderer.hpp"
+#include "ballsight/sim/court_truth.hpp"
+#include "ballsight/sim/seeding.hpp"
+
+namespace ballsight {
+
+namespace {
+
+constexpr std::uint64_t kRigStream = 1;
+constexpr std::uint64_t kSceneStream = 1000;
+constexpr double kOtherSphereMarginPx = 2.0;
+
+struct Labels {
+  std::vector<cv::Rect> boxes;
+  std::vector<PhotoBall> others;  // every other sphere the frame holds (centre, radius)
+};
+
+// Camera `c`'s labels: a box (pixel edges, clipped to the image) around every tennis ball shown
+// at min_radius_px or more.
+Labels frame_labels(const sim::CourtCamera& camera, const std::vector<sim::SceneSphere>& spheres,
+                    const std::vector<sim::SphereTruth>& truth, std::size_t c,
+                    const TennisSimOptions& options) {
+  const cv::Size size(options.rig.width, options.rig.height);
+  const double fx = camera.camera.camera_matrix()(0, 0);
+  Labels labels;
+  for (std::size_t k = 0; k < spheres.size(); ++k) {
+    const sim::SphereViewTruth& view = truth[k].views[c];
+    if (!view.in_image || !view.center_px) continue;
+    const double depth = (camera.camera_from_field * spheres[k].center_in_field).z();
+    const double r = fx * spheres[k].radius_m / depth;
+    const Vec2& p = *view.center_px;
+    if (spheres[k].kind == sim::ObjectKind::tennis_ball && view.visible &&
+        r >= options.min_radius_px) {
+      const cv::Rect box(cv::Point(static_cast<int>(std::floor(p.x() + 0.5 - r)),
+                                   static_cast<int>(std::floor(p.y() + 0.5 - r))),
+                         cv::Point(static_cast<int>(std::ceil(p.x() + 0.5 + r)),
+                                   static_cast<int>(std::ceil(p.y() + 0.5 + r))));
+      labels.boxes.push_back(box & cv::Rect(cv::Point(0, 0), size));
+    } else {
+      labels.others.push_back({p, r, 0.0});
+    }
+  }
+  return labels;
+}
+
+// The detections that lie on no other sphere of the frame (or that lie in a box).
+std::vector<PhotoBall> judged(const std::vector<PhotoBall>& balls, const Labels& labels) {
+  std::vector<PhotoBall> kept;
+  for (const PhotoBall& ball : balls) {
+    const cv::Point2d c(ball.center_px.x() + 0.5, ball.center_px.y() + 0.5);
+    const bool in_box =
+        std::any_of(labels.boxes.begin(), labels.boxes.end(),
+                    [&](const cv::Rect& box) { return cv::Rect2d(box).contains(c); });
+    const bool on_other =
+        std::any_of(labels.others.begin(), labels.others.end(), [&](const PhotoBall& o) {
+          return (ball.center_px - o.center_px).norm() <= o.radius_px + kOtherSphereMarginPx;
+        });
+    if (in_box || !on_other) kept.push_back(ball);
+  }
+  return kept;
+}
+
+}  // namespace
+
+void TennisSimOptions::validate() const {
+  require(scenes >= 1 && scenes <= kMaxScenes, "scenes",
+          "must be within [1, " + std::to_string(kMaxScenes) + "]");
+  require(min_radius_px >= 1.0, "min_radius_px", "must be at least 1 pixel");
+  court.validate();
+  rig.validate();
+  scenario.validate();
+  colours.validate("ball colours");
+}
+
+TennisSimResult run_tennis_sim(const TennisSimOptions& options) {
+  options.validate();
+  const sim::CourtRig rig =
+      sim::make_court_rig(options.court, options.rig, sim::derive_seed(options.seed, kRigStream));
+  std::vector<sim::CourtRenderer> renderers;
+  for (const sim::CourtCamera& camera : rig.cameras) renderers.emplace_back(camera, rig.court);
+  PhotoBallOptions ballsight_options;
+  ballsight_options.colours = options.colours;
+  PhotoBallDetector detector(ballsight_options);
+  TennisSimResult result{{{"ballsight", {}, {}}, {"report-hsv", {}, {}}}};
+  for (int k = 0; k < options.scenes; ++k) {
+    const std::uint64_t scene_seed =
+        sim::derive_seed(options.seed, kSceneStream + static_cast<std::uint64_t>(k));
+    const sim::CourtScene scene = sim::make_court_scene(rig.court, options.scenario, scene_seed);
+    const std::string condition(sim::light_condition_name(scene.lighting.condition));
+    std::vector<sim::CourtRender> renders;
+    for (std::size_t c = 0; c < renderers.size(); ++c)
+      renders.push_back(renderers[c].render(scene, sim::derive_seed(scene_seed, c)));
+    const std::vector<sim::SphereTruth> truth = sim::court_scene_truth(rig, scene, renders);
+    const std::vector<sim::SceneSphere> spheres = scene.spheres();
+    for (std::size_t c = 0; c < renders.size(); ++c) {
+      const Labels labels = frame_labels(rig.cameras[c], spheres, truth, c, options);
+      const cv::Mat& frame = renders[c].bgr;
+      for (TennisSimMethod& method : result.methods) {
+        const std::vector<PhotoBall> balls =
+            method.method == "ballsight" ? detector.detect(frame) : report_hsv_balls(frame);
+        const BoxMatch match =
+            match_balls_to_boxes(labels.boxes, judged(balls, labels), frame.size());
+        add_match(method.conditions[condition], match);
+        add_match(method.total, match);
+      }
+    }
+  }
+  return result;
+}
+
+nlohmann::json tennis_sim_json(const TennisSimResult& result) {
+  nlohmann::json methods = nlohmann::json::array();
+  for (const TennisSimMethod& method : result.methods) {
+    nlohmann::json m = box_match_json(method.total);
+    m["method"] = method.method;
+    for (const auto& [condition, match] : method.conditions)
+      m["conditions"][condition] = box_match_json(match);
+    methods.push_back(m);
+  }
+  return {{"methods", methods}};
+}
+
+std::string tennis_sim_table(const TennisSimResult& result) {
+  std::ostringstream out;
+  out << std::left << std::setw(11) << "method" << std::setw(13) << "light" << std::right
+      << std::setw(7) << "balls" << std::setw(7) << "found" << std::setw(7) << "match"
+      << std::setw(8) << "recall" << std::setw(10) << "precision"
+      << "\n";
+  const auto row = [&out](const std::string& method, const std::string& light,
+                          const BoxMatch& match) {
+    out << std::left << std::setw(11) << method << std::setw(13) << light << std::right
+        << std::setw(7) << match.labelled << std::setw(7) << match.detected << std::setw(7)
+        << match.matched << std::setw(8) << fixed(recall(match), 3) << std::setw(10)
+        << fixed(precision(match), 3) << "\n";
+  };
+  for (const TennisSimMethod& method : result.methods) {
+    for (const auto& [condition, match] : method.conditions) row(method.method, condition, match);
+    row(method.method, "all", method.total);
+  }
+  return out.str();
+}
+
+}  // namespace ballsight

@@ -1,0 +1,52 @@
+#pragma once
+// `eval tennis-sim`: the camera-free ball detectors of `eval tennis-real` (ballsight's, the
+// tennis report's HSV one) on the court simulator's camera frames, labelled from its truth like
+// the real photos: a box around every tennis ball the frame shows (half of it or more unhidden)
+// at `min_radius_px` or more. A detection on any other sphere of the frame (a smaller or hidden
+// ball, a reference ball, a robot marker) is neither right nor wrong: it is left out before the
+// matching. Figures per light condition of the scenes (sun, hard shadow, overcast).
+
+#include <cstdint>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ballsight/detect/ball_colours.hpp"
+#include "ballsight/eval/tennis_real.hpp"
+#include "ballsight/sim/court_rig.hpp"
+#include "ballsight/sim/court_scenario.hpp"
+#include "ballsight/sim/tennis_court.hpp"
+
+namespace ballsight {
+
+struct TennisSimOptions {
+  std::uint64_t seed = 1;
+  int scenes = 10;
+  sim::TennisCourtSpec court;
+  sim::CourtRigOptions rig;  // the simulator's 1280 x 720 unless told otherwise
+  sim::CourtScenarioOptions scenario;
+  double min_radius_px = 2.0;                    // smaller balls are neither labelled nor wrong
+  BallColours colours = default_ball_colours();  // ballsight's colour model
+
+  static constexpr int kMaxScenes = 1000;
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+struct TennisSimMethod {
+  std::string method;                          // "ballsight", "report-hsv"
+  std::map<std::string, BoxMatch> conditions;  // by sim::light_condition_name
+  BoxMatch total;
+};
+
+struct TennisSimResult {
+  std::vector<TennisSimMethod> methods;  // ballsight, then the report's HSV detector
+};
+
+TennisSimResult run_tennis_sim(const TennisSimOptions& options);
+
+nlohmann::json tennis_sim_json(const TennisSimResult& result);
+std::string tennis_sim_table(const TennisSimResult& result);
+
+}  // namespace ballsight
