@@ -143,20 +143,27 @@ TEST(PhotoBalls, WeedsAreTooRoughForABallAndANoisyBallIsNot) {
 }
 
 // In a hard shadow the court and the balls get only the sky's light: a quarter of their sunlit
-// brightness. The default colour model finds the balls there (its hue and saturation hold).
+// brightness, and the camera's noise stays. The default colour model finds the balls there (their
+// hue and saturation hold), and their felt is still smooth enough.
 TEST(PhotoBalls, FindsBallsInAHardShadow) {
   cv::Mat image = court({200, 200});
   const std::vector<DrawnBall> balls{{Vec2(60, 100), 4}, {Vec2(140, 100), 15}};
   for (const DrawnBall& b : balls) draw_ball(image, b);
   image *= 0.25;
+  cv::Mat noise(image.size(), CV_16SC3);
+  cv::theRNG().state = 11;
+  cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(4));
+  cv::add(image, noise, image, cv::noArray(), CV_8UC3);
   PhotoBallDetector detector;
   expect_found(detector.detect(image), balls);
 }
 
 // The image is searched in horizontal bands in parallel; a blob belongs to the band of its first
 // seed pixel. Balls across the band borders (for 2, 3 and 7 bands), one whose pale top (growth
-// colour only) reaches into the band above its first seed, touching balls and leaves: every band
-// count gives the same balls in the same order as one band.
+// colour only) reaches into the band above its first seed, touching balls, leaves, and two
+// clumps of small balls close together, each the first clump of its band with 7 bands (their
+// clumps are told apart; each has the other in its wide ring): every band count gives the same
+// balls in the same order as one band.
 TEST(PhotoBalls, TheBandsDoNotChangeTheBalls) {
   cv::Mat image = court({420, 300});
   const std::vector<DrawnBall> balls{{Vec2(60, 150), 25},  {Vec2(110, 150), 25},
@@ -166,6 +173,8 @@ TEST(PhotoBalls, TheBandsDoNotChangeTheBalls) {
   const DrawnBall pale_topped{Vec2(200, 160), 20};
   draw_ball(image, pale_topped);
   cv::ellipse(image, {200, 160}, {22, 22}, 0, 180, 360, cv::Scalar(140, 200, 190), -1);
+  for (const double row : {37.0, 49.0})  // in bands 0 and 1 of 7
+    for (const double column : {250.0, 257.4}) draw_ball(image, {Vec2(column, row), 3.5});
   std::mt19937 random(5);
   std::uniform_int_distribution<int> x(0, 419), y(0, 299);
   for (int i = 0; i < 60; ++i) {  // leaves; one beside the pale top would be a seed above it

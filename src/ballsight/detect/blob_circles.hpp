@@ -41,11 +41,15 @@ struct BlobMask {
 /// Circles in a blob, in image pixels.
 std::vector<BlobCircle> circles_in_blob(const BlobMask& blob, const BlobCircleOptions& options);
 
-/// Whether the blob's circles are a clump of touching balls: at least two, and between every two
-/// that touch (centres within the sum of the radii and a pixel) the blob narrows to a neck, at
-/// most kClumpNeck of its width through either centre (across the line joining them). A painted
-/// line or an elongated leaf split into a row of circles has no neck.
-bool is_clump(const BlobMask& blob, const std::vector<BlobCircle>& circles);
+/// The narrowest a clump's blob may be between two touching balls: this share of its width
+/// through either centre (two touching discs: 0 to 0.6).
 inline constexpr double kClumpNeck = 0.75;
+
+/// Whether the blob's circles are a clump of touching balls: between every two that touch
+/// (centres within the sum of the radii and a pixel; at least two do) the blob narrows to a neck
+/// of at most kClumpNeck of its width through either centre, across the line joining them, where
+/// their outlines cross. A painted line or an elongated leaf split into a row of circles has no
+/// neck.
+bool is_clump(const BlobMask& blob, const std::vector<BlobCircle>& circles);
 
 }  // namespace ballsight

@@ -34,8 +34,9 @@ constexpr double kAlikeSaturation = 0.2;
 // A ball's felt is smooth at a photo's scale: its disc shades slowly, broken only by the thin
 // seam and a shadow's edge, while a patch of leaves or weeds of its colour is all edges and gaps.
 // Roughness: the mean absolute difference between a disc pixel's brightness and the mean of its
-// four neighbours, over the disc's mean brightness. Sensor noise of sigma s grey levels adds
-// about 0.9 s over the brightness (0.04 for s = 5 on a ball of 120). On the real court photos
+// four neighbours, over the disc's mean brightness. Noise of sigma s grey levels in the
+// brightness (the mean of B, G and R) adds about 0.9 s over the brightness (0.04 for s = 5 on a
+// ball of 120). On the real court photos
 // (docs/RESULTS.md), looked at when this bound was set: the balls 0.01-0.15, the weeds behind
 // the fence that passed every other test 0.23-0.36.
 constexpr double kMaxRoughness = 0.2;
@@ -107,19 +108,19 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Bl
       }
     }
   }
-  Appearance support;
-  if (disc == 0 || seeds == 0) return support;
-  support.seed_share = static_cast<double>(seeds) / disc;
-  if (inside > 0 && light > 0.0) support.roughness = residual / inside / (light / disc);
+  Appearance look;
+  if (disc == 0 || seeds == 0) return look;
+  look.seed_share = static_cast<double>(seeds) / disc;
+  if (inside > 0 && light > 0.0) look.roughness = residual / inside / (light / disc);
   const double mean_hue = std::atan2(hue_sum.y(), hue_sum.x()) * 180.0 / std::numbers::pi;
   int alike = 0;
   for (const cv::Vec3b& p : ring) {
     const double d = std::abs(std::remainder(hue_deg(p) - mean_hue, 360.0));
     alike += saturation_of(p) >= kAlikeSaturation && d <= kAlikeHueDeg;
   }
-  support.ring_alike =
+  look.ring_alike =
       ring.empty() ? 0.0 : static_cast<double>(alike) / static_cast<double>(ring.size());
-  return support;
+  return look;
 }
 
 // A small ball (a few pixels: its shape says little) stands apart from everything of a ball
@@ -167,7 +168,7 @@ std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
     if (f.ball.radius_px <= kSmallRadiusPx) {
       others = kept;
       for (const Found& mate : found)
-        if (f.clump >= 0 && mate.clump == f.clump) others.push_back(mate.ball);
+        if (f.clump >= 0 && mate.clump == f.clump && &mate != &f) others.push_back(mate.ball);
       if (wide_ring_share(bgr, table_, f.ball, others) > kMaxWideShare) continue;
     }
     kept.push_back(f.ball);
@@ -257,15 +258,17 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   blob.image_size = bgr.size();
   BlobCircleOptions geometry = options_.circles;
   geometry.min_score = 0.0;
-  const std::vector<BlobCircle> circles = circles_in_blob(blob, geometry);
-  const int clump = is_clump(blob, circles) ? band.clumps++ : -1;
-  for (const BlobCircle& circle : circles) {
+  std::vector<BlobCircle> balls;
+  for (BlobCircle circle : circles_in_blob(blob, geometry)) {
     const Appearance look = appearance(bgr, table_, circle);
     if (look.seed_share < kMinSeedShare || look.roughness > kMaxRoughness) continue;
-    const double score = circle.score * (1.0 - look.ring_alike);
-    if (score >= options_.circles.min_score)
-      band.found.push_back({{circle.center_px, circle.radius_px, score}, clump});
+    circle.score *= 1.0 - look.ring_alike;
+    if (circle.score >= options_.circles.min_score) balls.push_back(circle);
   }
+  // Whether the blob's balls are a clump is judged by them alone, not by the circles dropped.
+  const int clump = is_clump(blob, balls) ? band.clumps++ : -1;
+  for (const BlobCircle& ball : balls)
+    band.found.push_back({{ball.center_px, ball.radius_px, ball.score}, clump});
 }
 
 }  // namespace ballsight

@@ -10,6 +10,7 @@
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_truth.hpp"
 #include "ballsight/sim/seeding.hpp"
+#include "ballsight/sim/silhouette.hpp"
 
 namespace ballsight {
 
@@ -18,35 +19,43 @@ namespace {
 constexpr std::uint64_t kRigStream = 1;
 constexpr std::uint64_t kSceneStream = 1000;
 constexpr double kOtherSphereMarginPx = 2.0;
+constexpr int kOutlineSamples = 32;
 
 struct Labels {
   std::vector<cv::Rect> boxes;
   std::vector<PhotoBall> others;  // every other sphere the frame holds (centre, radius)
 };
 
-// Camera `c`'s labels: a box (pixel edges, clipped to the image) around every tennis ball shown
-// at min_radius_px or more.
+// Camera `c`'s labels: a box (pixel edges, clipped to the image) around the outline of every
+// tennis ball shown (its centre in the image, half of it or more unhidden) at min_radius_px or
+// more (half the outline's larger extent); every other sphere with its centre in the image or
+// near it (a ball cut by the border is found by its visible part) in `others`.
 Labels frame_labels(const sim::CourtCamera& camera, const std::vector<sim::SceneSphere>& spheres,
                     const std::vector<sim::SphereTruth>& truth, std::size_t c,
                     const TennisSimOptions& options) {
-  const cv::Size size(options.rig.width, options.rig.height);
-  const double fx = camera.camera.camera_matrix()(0, 0);
+  const cv::Rect image(0, 0, options.rig.width, options.rig.height);
   Labels labels;
   for (std::size_t k = 0; k < spheres.size(); ++k) {
     const sim::SphereViewTruth& view = truth[k].views[c];
-    if (!view.in_image || !view.center_px) continue;
-    const double depth = (camera.camera_from_field * spheres[k].center_in_field).z();
-    const double r = fx * spheres[k].radius_m / depth;
-    const Vec2& p = *view.center_px;
+    const auto rim = sim::sphere_outline_pixels(
+        camera.camera, camera.camera_from_field * spheres[k].center_in_field, spheres[k].radius_m,
+        kOutlineSamples);
+    if (!view.center_px || !rim) continue;
+    double x0 = rim->front().x(), y0 = rim->front().y(), x1 = x0, y1 = y0;
+    for (const Vec2& q : *rim) {
+      x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y());
+      x1 = std::max(x1, q.x()), y1 = std::max(y1, q.y());
+    }
+    const double r = 0.5 * std::max(x1 - x0, y1 - y0);
     if (spheres[k].kind == sim::ObjectKind::tennis_ball && view.visible &&
         r >= options.min_radius_px) {
-      const cv::Rect box(cv::Point(static_cast<int>(std::floor(p.x() + 0.5 - r)),
-                                   static_cast<int>(std::floor(p.y() + 0.5 - r))),
-                         cv::Point(static_cast<int>(std::ceil(p.x() + 0.5 + r)),
-                                   static_cast<int>(std::ceil(p.y() + 0.5 + r))));
-      labels.boxes.push_back(box & cv::Rect(cv::Point(0, 0), size));
+      labels.boxes.push_back(cv::Rect(cv::Point(static_cast<int>(std::floor(x0 + 0.5)),
+                                                static_cast<int>(std::floor(y0 + 0.5))),
+                                      cv::Point(static_cast<int>(std::ceil(x1 + 0.5)),
+                                                static_cast<int>(std::ceil(y1 + 0.5)))) &
+                             image);
     } else {
-      labels.others.push_back({p, r, 0.0});
+      labels.others.push_back({*view.center_px, r, 0.0});
     }
   }
   return labels;

@@ -1,10 +1,11 @@
 #pragma once
 // `eval tennis-sim`: the camera-free ball detectors of `eval tennis-real` (ballsight's, the
 // tennis report's HSV one) on the court simulator's camera frames, labelled from its truth like
-// the real photos: a box around every tennis ball the frame shows (half of it or more unhidden)
-// at `min_radius_px` or more. A detection on any other sphere of the frame (a smaller or hidden
-// ball, a reference ball, a robot marker) is neither right nor wrong: it is left out before the
-// matching. Figures per light condition of the scenes (sun, hard shadow, overcast).
+// the real photos: a box around the outline of every tennis ball the frame shows (its centre in
+// the image, half of it or more unhidden) at `min_radius_px` or more. A detection on any other
+// sphere (a smaller or hidden ball, one whose centre lies outside the image, a reference ball, a
+// robot marker) is neither right nor wrong: it is left out before the matching. Figures per light
+// condition of the scenes (sun, hard shadow, overcast).
 
 #include <cstdint>
 #include <map>
