@@ -51,7 +51,7 @@ bool is_ball_seed(const ColorClassTable& table, const cv::Vec3b& pixel) {
 struct Appearance {
   double seed_share = 0.0;  // seed-colour pixels in the disc of 0.8 r
   double ring_alike = 0.0;  // ring pixels (r + max(1, 0.2 r) to r + max(3, 0.8 r)) of its hue
-  double roughness = 0.0;   // of the disc of 0.8 r (kMaxRoughness)
+  double roughness = 0.0;   // of the disc of min(0.8 r, r - 1) (kMaxRoughness)
 };
 
 double brightness(const cv::Vec3b& p) {
@@ -76,6 +76,8 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Bl
   const double r = circle.radius_px;
   const double inner = 0.8 * r, ring_in = r + std::max(1.0, 0.2 * r),
                ring_out = r + std::max(3.0, 0.8 * r);
+  // Roughness only where the four neighbours lie on the ball too (a small ball's rim is an edge).
+  const double smooth = std::min(inner, r - 1.0);
   const int step = std::max(1, static_cast<int>(r / 12.0));
   const Vec2& c = circle.center_px;
   const int x0 = std::max(0, static_cast<int>(std::floor(c.x() - ring_out)));
@@ -93,7 +95,7 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Bl
       if (d <= inner) {
         ++disc;
         light += brightness(row[x]);
-        if (x > 0 && y > 0 && x + 1 < bgr.cols && y + 1 < bgr.rows) {
+        if (d <= smooth && x > 0 && y > 0 && x + 1 < bgr.cols && y + 1 < bgr.rows) {
           ++inside;
           residual += laplacian_residual(bgr, x, y);
         }
