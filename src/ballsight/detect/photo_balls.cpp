@@ -37,7 +37,7 @@ constexpr double kAlikeSaturation = 0.2;
 // four neighbours, over the disc's mean brightness. Noise of sigma s grey levels in the
 // brightness (the mean of B, G and R) adds about 0.9 s over the brightness (0.04 for s = 5 on a
 // ball of 120). On the real court photos (docs/RESULTS.md), looked at when this bound was set:
-// the balls 0.01-0.15, the weeds behind the fence that passed every other test 0.23-0.36.
+// the balls 0.01-0.12, the weeds behind the fence that passed every other test 0.23-0.40.
 constexpr double kMaxRoughness = 0.2;
 
 // By default a band per thread, each of at least this many rows (a band costs a pass over its
