@@ -3,7 +3,9 @@
 // robot. Pixels are classified by the ball colour model (one table read each), blobs grown from
 // the seed colour through the growth colour, their holes (seams, logos, highlights) filled, and
 // each blob's balls found as circles (blob_circles.hpp): touching balls apart, balls cut by the
-// image border with their whole circle.
+// image border with their whole circle. A circle is kept when it is mostly of a seed colour,
+// smooth (a ball's felt, not a patch of weeds) and stands out from its ring; a small one also
+// when nothing of a ball's colour lies around it but its own clump (docs/detect-balls.md).
 
 #include <opencv2/core.hpp>
 #include <vector>
