@@ -5,9 +5,7 @@
 #include <string>
 
 #include "ballsight/detect/court_detector.hpp"
-#include "ballsight/eval/court_eval.hpp"
-#include "ballsight/sim/court_renderer.hpp"
-#include "ballsight/sim/seeding.hpp"
+#include "ballsight/eval/court_eval_scenes.hpp"
 #include "ballsight/world/court_world.hpp"
 
 namespace ballsight {
@@ -30,16 +28,15 @@ TEST(CourtScenes, NoBallHasTwoEstimates) {
   for (const Case& c : {Case{2, 14}, Case{3, 16}, Case{7, 5}, Case{3, 3}}) {
     SCOPED_TRACE("eval court --seed " + std::to_string(c.seed) + ", scene " +
                  std::to_string(c.scene));
-    const sim::CourtRig rig = sim::make_court_rig({}, {}, court_eval_rig_seed(c.seed));
-    const std::uint64_t scene_seed = court_eval_scene_seed(c.seed, c.scene);
-    const sim::CourtScene scene = sim::make_court_scene(rig.court, {}, scene_seed);
+    const CourtEvalScenes scenes({}, {}, c.seed);
+    const RenderedCourtScene rendered = scenes.render({}, c.scene);
+    const sim::CourtScene& scene = rendered.scene;
     std::vector<FieldCamera> cameras;
     std::vector<std::optional<std::vector<PixelDetection>>> detections;
-    for (size_t k = 0; k < rig.cameras.size(); ++k) {
-      cameras.push_back({rig.cameras[k].camera, rig.cameras[k].camera_from_field});
-      const sim::CourtRender render = sim::CourtRenderer(rig.cameras[k], rig.court)
-                                          .render(scene, sim::derive_seed(scene_seed, k));
-      detections.emplace_back(CourtDetector(cameras.back()).detect(render.bgr));
+    for (size_t k = 0; k < rendered.renders.size(); ++k) {
+      const sim::CourtCamera& camera = scenes.rig().cameras[k];
+      cameras.push_back({camera.camera, camera.camera_from_field});
+      detections.emplace_back(CourtDetector(cameras.back()).detect(rendered.renders[k].bgr));
     }
     const WorldModel model = build_world_model(cameras, detections, {});
     std::vector<Vec2> truth;

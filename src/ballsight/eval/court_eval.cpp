@@ -12,12 +12,10 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
+#include "ballsight/eval/court_eval_scenes.hpp"
 #include "ballsight/eval/court_plots.hpp"
 #include "ballsight/eval/wall_clock.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
-#include "ballsight/sim/court_renderer.hpp"
-#include "ballsight/sim/court_truth.hpp"
-#include "ballsight/sim/seeding.hpp"
 
 namespace ballsight {
 
@@ -34,9 +32,6 @@ void CourtEvalOptions::validate() const {
 }
 
 namespace {
-
-// Independent random streams of one evaluation seed.
-enum Stream : std::uint64_t { kRigStream, kCalibrationStream, kSceneStream = 1000 };
 
 std::vector<TruthBall> truth_balls(const std::vector<sim::SphereTruth>& truth) {
   std::vector<TruthBall> balls;
@@ -104,25 +99,17 @@ void write_pictures(const CourtEvalOptions& options, const sim::CourtRig& rig, i
 
 }  // namespace
 
-std::uint64_t court_eval_rig_seed(std::uint64_t seed) {
-  return sim::derive_seed(seed, kRigStream);
-}
-
-std::uint64_t court_eval_scene_seed(std::uint64_t seed, int scene) {
-  return sim::derive_seed(seed, kSceneStream + static_cast<std::uint64_t>(scene));
-}
-
 CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
   options.validate();
   CourtEvalReport report;
   report.options = options;
-  const sim::CourtRig rig =
-      sim::make_court_rig(options.court, options.rig, court_eval_rig_seed(options.seed));
+  const CourtEvalScenes scenes(options.court, options.rig, options.seed);
+  const sim::CourtRig& rig = scenes.rig();
 
   // Each method calibrates its cameras from the same rendered images.
   const CalibrationImages calibration_images =
       render_calibration_images(rig, options.chessboard_views, options.scenario.noise_sigma,
-                                sim::derive_seed(options.seed, kCalibrationStream));
+                                court_eval_calibration_seed(options.seed));
   const Site site = simulated_site(rig);
   // A method that cannot calibrate (too few reference balls found, say) is reported as such.
   std::vector<std::unique_ptr<CourtPipeline>> pipelines;
@@ -144,18 +131,10 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
     }
   }
 
-  std::vector<sim::CourtRenderer> renderers;
-  for (const sim::CourtCamera& camera : rig.cameras) renderers.emplace_back(camera, rig.court);
   for (int k = 0; k < options.scenes; ++k) {
-    const std::uint64_t scene_seed = court_eval_scene_seed(options.seed, k);
-    const sim::CourtScene scene = sim::make_court_scene(rig.court, options.scenario, scene_seed);
-    std::vector<sim::CourtRender> renders;
+    const auto [scene, renders, truth] = scenes.render(options.scenario, k);
     std::vector<cv::Mat> frames;
-    for (size_t c = 0; c < renderers.size(); ++c) {
-      renders.push_back(renderers[c].render(scene, sim::derive_seed(scene_seed, c)));
-      frames.push_back(renders.back().bgr);
-    }
-    const std::vector<sim::SphereTruth> truth = sim::court_scene_truth(rig, scene, renders);
+    for (const sim::CourtRender& render : renders) frames.push_back(render.bgr);
     const std::vector<TruthBall> balls = truth_balls(truth);
     std::vector<FrameSetResult> results;
     std::vector<BallMistake> ballsight_mistakes;

@@ -53,12 +53,8 @@ struct CourtEvalReport {
   std::vector<std::string> pictures;  // files written into plot_dir
 };
 
+/// On the scenes of CourtEvalScenes (court_eval_scenes.hpp) with options.seed.
 CourtEvalReport run_court_eval(const CourtEvalOptions& options);
-
-/// The seeds `run_court_eval` derives from its seed for the rig and for scene `scene` (0-based),
-/// so that one of its scenes can be rendered again on its own.
-std::uint64_t court_eval_rig_seed(std::uint64_t seed);
-std::uint64_t court_eval_scene_seed(std::uint64_t seed, int scene);
 
 /// {"methods": {"seed": {...}, "ballsight": {...}}, ...}: recall, precision, duplicates,
 /// ball_error_mean_cm, ball_error_p95_cm, robot_position_error_cm, robot_heading_error_deg and

@@ -7,17 +7,13 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/text_format.hpp"
-#include "ballsight/sim/court_renderer.hpp"
-#include "ballsight/sim/court_truth.hpp"
-#include "ballsight/sim/seeding.hpp"
+#include "ballsight/eval/court_eval_scenes.hpp"
 #include "ballsight/sim/silhouette.hpp"
 
 namespace ballsight {
 
 namespace {
 
-constexpr std::uint64_t kRigStream = 1;
-constexpr std::uint64_t kSceneStream = 1000;
 constexpr double kOtherSphereMarginPx = 2.0;
 constexpr int kOutlineSamples = 32;
 
@@ -92,26 +88,17 @@ void TennisSimOptions::validate() const {
 
 TennisSimResult run_tennis_sim(const TennisSimOptions& options) {
   options.validate();
-  const sim::CourtRig rig =
-      sim::make_court_rig(options.court, options.rig, sim::derive_seed(options.seed, kRigStream));
-  std::vector<sim::CourtRenderer> renderers;
-  for (const sim::CourtCamera& camera : rig.cameras) renderers.emplace_back(camera, rig.court);
+  const CourtEvalScenes scenes(options.court, options.rig, options.seed);
   PhotoBallOptions ballsight_options;
   ballsight_options.colours = options.colours;
   PhotoBallDetector detector(ballsight_options);
   TennisSimResult result{{{"ballsight", {}, {}}, {"report-hsv", {}, {}}}};
   for (int k = 0; k < options.scenes; ++k) {
-    const std::uint64_t scene_seed =
-        sim::derive_seed(options.seed, kSceneStream + static_cast<std::uint64_t>(k));
-    const sim::CourtScene scene = sim::make_court_scene(rig.court, options.scenario, scene_seed);
+    const auto [scene, renders, truth] = scenes.render(options.scenario, k);
     const std::string condition(sim::light_condition_name(scene.lighting.condition));
-    std::vector<sim::CourtRender> renders;
-    for (std::size_t c = 0; c < renderers.size(); ++c)
-      renders.push_back(renderers[c].render(scene, sim::derive_seed(scene_seed, c)));
-    const std::vector<sim::SphereTruth> truth = sim::court_scene_truth(rig, scene, renders);
     const std::vector<sim::SceneSphere> spheres = scene.spheres();
     for (std::size_t c = 0; c < renders.size(); ++c) {
-      const Labels labels = frame_labels(rig.cameras[c], spheres, truth, c, options);
+      const Labels labels = frame_labels(scenes.rig().cameras[c], spheres, truth, c, options);
       const cv::Mat& frame = renders[c].bgr;
       for (TennisSimMethod& method : result.methods) {
         const std::vector<PhotoBall> balls =
