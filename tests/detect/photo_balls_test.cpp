@@ -61,26 +61,26 @@ void expect_found(const std::vector<PhotoBall>& found, const std::vector<DrawnBa
   }
 }
 
+// The balls drawn on a court of `size` are found.
+void expect_found_when_drawn(cv::Size size, const std::vector<DrawnBall>& balls) {
+  cv::Mat image = court(size);
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), balls);
+}
+
 TEST(PhotoBalls, FindsSingleBallsFromTwoTo150Pixels) {
   for (const double r : {2.0, 3.0, 5.0, 10.0, 30.0, 80.0, 150.0}) {
     const auto side = static_cast<int>(2 * r + 60);
-    cv::Mat image = court({side, side});
-    const DrawnBall ball{Vec2(side / 2.0 + 0.3, side / 2.0 - 0.2), r};
-    draw_ball(image, ball);
-    PhotoBallDetector detector;
-    expect_found(detector.detect(image), {ball});
+    expect_found_when_drawn({side, side}, {{Vec2(side / 2.0 + 0.3, side / 2.0 - 0.2), r}});
   }
 }
 
 TEST(PhotoBalls, SeparatesTouchingBalls) {
-  cv::Mat image = court({400, 200});
-  const std::vector<DrawnBall> balls{{Vec2(100, 100), 30},
-                                     {Vec2(160, 100), 30},
-                                     {Vec2(300, 120), 40},
-                                     {Vec2(300 + 40 + 15, 120 - 10), 15}};
-  for (const DrawnBall& b : balls) draw_ball(image, b);
-  PhotoBallDetector detector;
-  expect_found(detector.detect(image), balls);
+  expect_found_when_drawn({400, 200}, {{Vec2(100, 100), 30},
+                                       {Vec2(160, 100), 30},
+                                       {Vec2(300, 120), 40},
+                                       {Vec2(300 + 40 + 15, 120 - 10), 15}});
 }
 
 // Far from a court camera the balls of a clump (here a row of four, and a pair) are a few pixels
@@ -88,21 +88,23 @@ TEST(PhotoBalls, SeparatesTouchingBalls) {
 // weeds: the clump narrows between its balls; a painted line does not,
 // IgnoresALineAndFoliageOfABallsColour).
 TEST(PhotoBalls, FindsEveryBallOfAClumpOfSmallBalls) {
-  cv::Mat image = court({200, 120});
   const std::vector<DrawnBall> balls{{Vec2(40.3, 60.2), 3.5},  {Vec2(47.7, 59.6), 3.5},
                                      {Vec2(55.0, 61.0), 3.5},  {Vec2(62.4, 60.4), 3.5},
                                      {Vec2(140.0, 60.0), 5.0}, {Vec2(149.5, 60.5), 5.0}};
-  for (const DrawnBall& b : balls) draw_ball(image, b);
-  PhotoBallDetector detector;
-  expect_found(detector.detect(image), balls);
+  expect_found_when_drawn({200, 120}, balls);
+}
+
+// Balls lie in groups: small balls apart from each other but a few radii away each hold the
+// others in the wide ring their isolation is judged by; a ball found beside them is no weed.
+TEST(PhotoBalls, FindsSmallBallsLyingAFewRadiiApart) {
+  const std::vector<DrawnBall> balls{{Vec2(40.3, 60.2), 3.5},  {Vec2(52.1, 57.4), 3.5},
+                                     {Vec2(47.6, 70.8), 3.5},  {Vec2(140.0, 60.0), 2.5},
+                                     {Vec2(148.2, 64.5), 2.5}, {Vec2(150.0, 52.0), 5.0}};
+  expect_found_when_drawn({200, 120}, balls);
 }
 
 TEST(PhotoBalls, GivesTheWholeCircleOfABallCutByTheBorder) {
-  cv::Mat image = court({300, 200});
-  const DrawnBall ball{Vec2(20, 150), 45};  // a third of it outside the image
-  draw_ball(image, ball);
-  PhotoBallDetector detector;
-  expect_found(detector.detect(image), {ball});
+  expect_found_when_drawn({300, 200}, {{Vec2(20, 150), 45}});  // a third outside the image
 }
 
 TEST(PhotoBalls, IgnoresALineAndFoliageOfABallsColour) {

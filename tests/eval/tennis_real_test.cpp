@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "shared_data.hpp"
 
 namespace ballsight {
@@ -21,6 +23,26 @@ TEST(TennisReal, EachBoxMatchesOnceAndTheBestDetectionFirst) {
   EXPECT_NEAR(match.center_error_ratio[0], 0.0, 1e-9);
   EXPECT_DOUBLE_EQ(recall(match), 0.5);
   EXPECT_DOUBLE_EQ(precision(match), 1.0 / 3.0);
+}
+
+TEST(TennisReal, RecallByRadiusCountsEachBoxInItsRange) {
+  // Two photos: boxes of radius 2.5, 10 and 10 px (the second found), and one of 40 px (found).
+  BoxMatch total;
+  add_match(total, match_balls_to_boxes({{0, 0, 5, 4}, {50, 0, 20, 20}, {100, 0, 20, 18}},
+                                        {{Vec2(59.5, 9.5), 10.0, 0.9}}, {400, 400}));
+  add_match(total,
+            match_balls_to_boxes({{0, 50, 80, 60}}, {{Vec2(39.5, 79.5), 40.0, 0.9}}, {400, 400}));
+  const std::vector<RadiusRecall> ranges = recall_by_radius(total, {2.0, 5.0, 20.0});
+  ASSERT_EQ(ranges.size(), 3u);
+  EXPECT_EQ(ranges[0].labelled, 1);  // [2, 5)
+  EXPECT_EQ(ranges[0].matched, 0);
+  EXPECT_EQ(ranges[1].labelled, 2);  // [5, 20)
+  EXPECT_EQ(ranges[1].matched, 1);
+  EXPECT_DOUBLE_EQ(recall(ranges[1]), 0.5);
+  EXPECT_EQ(ranges[2].labelled, 1);  // [20, infinity)
+  EXPECT_EQ(ranges[2].matched, 1);
+  EXPECT_TRUE(std::isinf(ranges[2].max_radius_px));
+  EXPECT_EQ(recall_by_radius_json(ranges)[2]["radius_px"][1], nullptr);
 }
 
 TEST(TennisReal, ABallCutByTheBorderIsComparedByItsVisiblePart) {

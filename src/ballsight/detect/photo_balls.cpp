@@ -5,6 +5,7 @@
 #include <numbers>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
+#include <utility>
 
 #include "ballsight/core/error.hpp"
 
@@ -126,16 +127,23 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Bl
 
 // A small ball (a few pixels: its shape says little) stands apart from everything of a ball
 // colour: weeds, leaves and foliage come in fields of specks. Its wide ring
-// (r + max(3, 0.3 r) to r + max(12, 0.6 r)) holds almost no pixel of a growth colour, apart from
-// the balls kept already (best score first) and the balls of its own clump.
+// (r + max(3, 0.3 r) to r + max(12, 0.6 r)) holds almost no pixel of a growth colour apart from
+// other balls: those found in other blobs (balls lie in groups; two small balls a few radii
+// apart each hold the other in their rings), those kept already (best score first) and those of
+// its own clump. The circles a blob that is no clump is split into (a painted line, a leaf) do
+// not excuse each other.
 constexpr double kSmallRadiusPx = 8.0;
 constexpr double kMaxWideShare = 0.02;
 constexpr double kOtherBallMarginPx = 2.0;
 
+// The inner and outer radius of a ball's wide ring.
+std::pair<double, double> wide_ring(double r) {
+  return {r + std::max(3.0, 0.3 * r), r + std::max(12.0, 0.6 * r)};
+}
+
 double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const PhotoBall& ball,
                        const std::vector<PhotoBall>& others) {
-  const double r = ball.radius_px;
-  const double ring_in = r + std::max(3.0, 0.3 * r), ring_out = r + std::max(12.0, 0.6 * r);
+  const auto [ring_in, ring_out] = wide_ring(ball.radius_px);
   const Vec2& c = ball.center_px;
   int count = 0, coloured = 0;
   for (int y = std::max(0, static_cast<int>(std::floor(c.y() - ring_out)));
@@ -164,17 +172,25 @@ PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
 
 std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
                                                         const std::vector<Found>& found) const {
-  std::vector<PhotoBall> kept, others;
-  for (const Found& f : found) {
+  std::vector<bool> kept(found.size(), false);
+  std::vector<PhotoBall> balls, others;
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    const Found& f = found[k];
     if (f.ball.radius_px <= kSmallRadiusPx) {
-      others = kept;
-      for (const Found& mate : found)
-        if (f.clump >= 0 && mate.clump == f.clump && &mate != &f) others.push_back(mate.ball);
+      const double reach = wide_ring(f.ball.radius_px).second;
+      others.clear();
+      for (std::size_t j = 0; j < found.size(); ++j) {
+        const PhotoBall& o = found[j].ball;
+        if (j != k && (kept[j] || found[j].blob != f.blob || f.clump) &&
+            (o.center_px - f.ball.center_px).norm() <= reach + o.radius_px + kOtherBallMarginPx)
+          others.push_back(o);
+      }
       if (wide_ring_share(bgr, table_, f.ball, others) > kMaxWideShare) continue;
     }
-    kept.push_back(f.ball);
+    kept[k] = true;
+    balls.push_back(f.ball);
   }
-  return kept;
+  return balls;
 }
 
 std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
@@ -191,13 +207,13 @@ std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
                 bands_[static_cast<std::size_t>(b)]);
   });
   std::vector<Found> found;
-  int clumps = 0;  // of the bands before
+  int blobs = 0;  // of the bands before
   for (const Band& band : bands_) {
     for (Found f : band.found) {
-      if (f.clump >= 0) f.clump += clumps;
+      f.blob += blobs;
       found.push_back(f);
     }
-    clumps += band.clumps;
+    blobs += band.blobs;
   }
   std::stable_sort(found.begin(), found.end(),
                    [](const Found& a, const Found& b) { return a.ball.score > b.ball.score; });
@@ -209,7 +225,7 @@ void PhotoBallDetector::scan_band(const cv::Mat& bgr, int first_row, int end_row
   // Blobs grow beyond the band, so the band marks what it grew over the whole image.
   band.buffers.reset(static_cast<int>(bgr.total()));
   band.found.clear();
-  band.clumps = 0;
+  band.blobs = 0;
   const auto* pixels = bgr.ptr<cv::Vec3b>(0);
   const int begin = first_row * bgr.cols, end = end_row * bgr.cols;
   const auto is_seed = [&](int index) { return is_ball_seed(table_, pixels[index]); };
@@ -266,10 +282,12 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
     circle.score *= 1.0 - look.ring_alike;
     if (circle.score >= options_.circles.min_score) balls.push_back(circle);
   }
+  if (balls.empty()) return;
   // Whether the blob's balls are a clump is judged by them alone, not by the circles dropped.
-  const int clump = is_clump(blob, balls) ? band.clumps++ : -1;
+  const bool clump = is_clump(blob, balls);
   for (const BlobCircle& ball : balls)
-    band.found.push_back({{ball.center_px, ball.radius_px, ball.score}, clump});
+    band.found.push_back({{ball.center_px, ball.radius_px, ball.score}, band.blobs, clump});
+  ++band.blobs;
 }
 
 }  // namespace ballsight

@@ -45,18 +45,20 @@ class PhotoBallDetector {
   const PhotoBallOptions& options() const { return options_; }
 
  private:
-  // A ball, and the clump of touching balls it belongs to (is_clump; -1: none).
+  // A ball, the blob it was found in, and whether that blob's balls are a clump of touching
+  // balls (is_clump).
   struct Found {
     PhotoBall ball;
-    int clump = -1;
+    int blob = 0;
+    bool clump = false;
   };
   // What one band's search works with, and the balls of the blobs it owns (first seed first;
-  // its clumps numbered from 0).
+  // the blobs that hold a ball numbered from 0).
   struct Band {
     BlobGrowthBuffers buffers;
     GrownBlob blob;
     cv::Mat1b patch;
-    int clumps = 0;
+    int blobs = 0;
     std::vector<Found> found;
   };
 

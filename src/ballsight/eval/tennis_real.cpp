@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -120,6 +122,8 @@ BoxMatch match_balls_to_boxes(const std::vector<cv::Rect>& boxes,
   match.labelled = static_cast<int>(boxes.size());
   match.detected = static_cast<int>(balls.size());
   std::vector<bool> taken(boxes.size(), false);
+  for (const cv::Rect& box : boxes)
+    match.box_radius_px.push_back(0.5 * std::max(box.width, box.height));
   for (const PhotoBall& ball : balls) {
     std::size_t best = boxes.size();
     double best_distance = 0.0;
@@ -138,9 +142,9 @@ BoxMatch match_balls_to_boxes(const std::vector<cv::Rect>& boxes,
     taken[best] = true;
     ++match.matched;
     const cv::Rect2d box(boxes[best]);
-    match.center_error_ratio.push_back((c - box_center(box)).norm() /
-                                       (0.5 * std::max(box.width, box.height)));
+    match.center_error_ratio.push_back((c - box_center(box)).norm() / match.box_radius_px[best]);
   }
+  match.box_matched = taken;
   return match;
 }
 
@@ -150,6 +154,27 @@ void add_match(BoxMatch& total, const BoxMatch& part) {
   total.matched += part.matched;
   total.center_error_ratio.insert(total.center_error_ratio.end(), part.center_error_ratio.begin(),
                                   part.center_error_ratio.end());
+  total.box_radius_px.insert(total.box_radius_px.end(), part.box_radius_px.begin(),
+                             part.box_radius_px.end());
+  total.box_matched.insert(total.box_matched.end(), part.box_matched.begin(),
+                           part.box_matched.end());
+}
+
+std::vector<RadiusRecall> recall_by_radius(const BoxMatch& match,
+                                           const std::vector<double>& edges) {
+  std::vector<RadiusRecall> ranges;
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    ranges.push_back({edges[k],
+                      k + 1 < edges.size() ? edges[k + 1] : std::numeric_limits<double>::infinity(),
+                      0, 0});
+  for (std::size_t b = 0; b < match.box_radius_px.size(); ++b)
+    for (RadiusRecall& range : ranges)
+      if (match.box_radius_px[b] >= range.min_radius_px &&
+          match.box_radius_px[b] < range.max_radius_px) {
+        ++range.labelled;
+        range.matched += match.box_matched[b];
+      }
+  return ranges;
 }
 
 std::vector<PhotoBall> report_hsv_balls(const cv::Mat& bgr) {
@@ -163,6 +188,10 @@ std::vector<PhotoBall> report_hsv_balls(const cv::Mat& bgr) {
 
 double recall(const BoxMatch& match) {
   return match.labelled > 0 ? static_cast<double>(match.matched) / match.labelled : 1.0;
+}
+
+double recall(const RadiusRecall& range) {
+  return range.labelled > 0 ? static_cast<double>(range.matched) / range.labelled : 1.0;
 }
 
 double precision(const BoxMatch& match) {
@@ -192,6 +221,21 @@ nlohmann::json box_match_json(const BoxMatch& match) {
           {"recall", recall(match)},
           {"precision", precision(match)},
           {"median_center_error_ratio", median_or_zero(match.center_error_ratio)}};
+}
+
+nlohmann::json recall_by_radius_json(const std::vector<RadiusRecall>& ranges) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const RadiusRecall& range : ranges) {
+    const nlohmann::json upper = std::isfinite(range.max_radius_px)
+                                     ? nlohmann::json(range.max_radius_px)
+                                     : nlohmann::json(nullptr);
+    list.push_back(
+        {{"radius_px", {range.min_radius_px, upper}},
+         {"labelled", range.labelled},
+         {"matched", range.matched},
+         {"recall", range.labelled > 0 ? nlohmann::json(recall(range)) : nlohmann::json()}});
+  }
+  return list;
 }
 
 nlohmann::json tennis_real_json(const TennisRealResult& result) {

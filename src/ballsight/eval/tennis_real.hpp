@@ -37,7 +37,20 @@ struct BoxMatch {
   int detected = 0;
   int matched = 0;
   std::vector<double> center_error_ratio;  // per matched box: centre error / ball radius
+  std::vector<double> box_radius_px;       // per labelled box: half its longer side
+  std::vector<bool> box_matched;           // per labelled box
 };
+
+/// The boxes of radius [min, max) px and how many of them were matched.
+struct RadiusRecall {
+  double min_radius_px = 0.0;
+  double max_radius_px = 0.0;
+  int labelled = 0;
+  int matched = 0;
+};
+
+/// The boxes in each radius range of `edges` (ascending; the last range is open).
+std::vector<RadiusRecall> recall_by_radius(const BoxMatch& match, const std::vector<double>& edges);
 
 /// Matches `balls` (best first) to `boxes` in an image of `image_size`.
 BoxMatch match_balls_to_boxes(const std::vector<cv::Rect>& boxes,
@@ -72,11 +85,15 @@ struct TennisRealResult {
 TennisRealResult run_tennis_real(const TennisRealOptions& options);
 
 double recall(const BoxMatch& match);
+double recall(const RadiusRecall& range);
 double precision(const BoxMatch& match);
 /// Adds `part`'s counts and centre errors to `total`.
 void add_match(BoxMatch& total, const BoxMatch& part);
 /// {"labelled", "detected", "matched", "recall", "precision", "median_center_error_ratio"}.
+/// (recall_by_radius_json gives the boxes' recall by size.)
 nlohmann::json box_match_json(const BoxMatch& match);
+/// [{"radius_px": [min, max or null], "labelled", "matched", "recall"}, ...]
+nlohmann::json recall_by_radius_json(const std::vector<RadiusRecall>& ranges);
 
 /// The tennis report's detector (HSV threshold, median filter, contours' centres of mass, radius
 /// from the contour's area), its detections with score 1.

@@ -14,6 +14,9 @@ namespace ballsight {
 
 namespace {
 
+// The ranges of ball radius (px) the figures are broken down by.
+const std::vector<double> kRadiusEdges{2.0, 3.0, 4.0, 5.0, 7.0, 10.0, 20.0};
+
 constexpr double kOtherSphereMarginPx = 2.0;
 constexpr int kOutlineSamples = 32;
 
@@ -118,6 +121,7 @@ nlohmann::json tennis_sim_json(const TennisSimResult& result) {
   for (const TennisSimMethod& method : result.methods) {
     nlohmann::json m = box_match_json(method.total);
     m["method"] = method.method;
+    m["recall_by_radius"] = recall_by_radius_json(recall_by_radius(method.total, kRadiusEdges));
     for (const auto& [condition, match] : method.conditions)
       m["conditions"][condition] = box_match_json(match);
     methods.push_back(m);
@@ -141,6 +145,21 @@ std::string tennis_sim_table(const TennisSimResult& result) {
   for (const TennisSimMethod& method : result.methods) {
     for (const auto& [condition, match] : method.conditions) row(method.method, condition, match);
     row(method.method, "all", method.total);
+  }
+  out << "\nrecall by ball radius, px (balls)\n" << std::left << std::setw(11) << "method";
+  for (const RadiusRecall& range : recall_by_radius({}, kRadiusEdges))
+    out << std::right << std::setw(13)
+        << fixed(range.min_radius_px, 0) +
+               (std::isfinite(range.max_radius_px) ? "-" + fixed(range.max_radius_px, 0) : "+");
+  out << "\n";
+  for (const TennisSimMethod& method : result.methods) {
+    out << std::left << std::setw(11) << method.method << std::right;
+    for (const RadiusRecall& range : recall_by_radius(method.total, kRadiusEdges))
+      out << std::setw(13)
+          << (range.labelled > 0
+                  ? fixed(recall(range), 3) + " (" + std::to_string(range.labelled) + ")"
+                  : "-");
+    out << "\n";
   }
   return out.str();
 }
