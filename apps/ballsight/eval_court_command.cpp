@@ -46,7 +46,8 @@ void add_eval_court_command(CLI::App& eval) {
       "rendered chessboards and reference balls: recall, precision, duplicates, ball and robot "
       "errors");
   add_seed_option(*cmd, args->options.seed, "Random seed: same seed, same figures");
-  add_court_scene_options(*cmd, args->options.scenes, args->options.rig, args->options.scenario);
+  add_court_scene_options(*cmd, args->options.scenes, args->options.rig, args->options.court,
+                          args->options.scenario);
   cmd->add_flag("--no-net", args->no_net,
                 "Scenes on a court without a net (the simulator of before the net)");
   cmd->add_flag("--json", args->json,

@@ -27,7 +27,8 @@ void add_eval_tennis_sim_command(CLI::App& eval) {
       "labelled from its truth (every tennis ball shown at --min-radius-px or more): recall and "
       "precision per light condition (sun, hard shadow, overcast)");
   add_seed_option(*cmd, args->options.seed, "Random seed: same seed, same figures");
-  add_court_scene_options(*cmd, args->options.scenes, args->options.rig, args->options.scenario);
+  add_court_scene_options(*cmd, args->options.scenes, args->options.rig, args->options.court,
+                          args->options.scenario);
   cmd->add_option("--min-radius-px", args->options.min_radius_px,
                   "Balls shown smaller are neither labelled nor counted against a detector")
       ->capture_default_str();

@@ -38,13 +38,39 @@ CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::
   return command.add_option("--seed", seed, help)->check(digits)->capture_default_str();
 }
 
+std::optional<sim::LightCondition> parse_light(const std::string& name) {
+  if (name == "random") return std::nullopt;
+  if (const auto light = sim::light_condition_named(name)) return light;
+  throw InputError("--light: unknown light '" + name +
+                   "'; expected random, sun, hard_shadow, overcast or indoor");
+}
+
+void add_court_look_options(CLI::App& command, sim::TennisCourtSpec& court,
+                            sim::CourtScenarioOptions& scenario) {
+  command.add_option_function<std::string>(
+      "--light", [&scenario](const std::string& name) { scenario.light = parse_light(name); },
+      "sun, hard_shadow, overcast, indoor (a hall's warm lamps), or random: one of the first "
+      "three per scene (default)");
+  command.add_option_function<std::string>(
+      "--surface",
+      [&court](const std::string& name) {
+        const auto surface = sim::court_surface_named(name);
+        if (!surface)
+          throw InputError("--surface: unknown surface '" + name +
+                           "'; expected green, blue, red, concrete or wood");
+        sim::set_court_surface(court, *surface);
+      },
+      "The court's surface: green (default), blue, red, concrete or wood");
+}
+
 void add_court_scene_options(CLI::App& command, int& scenes, sim::CourtRigOptions& rig,
-                             sim::CourtScenarioOptions& scenario) {
+                             sim::TennisCourtSpec& court, sim::CourtScenarioOptions& scenario) {
   command.add_option("--scenes", scenes, "Number of scenes [1, 1000]")->capture_default_str();
   command.add_option("--width", rig.width, "Camera image width, px")->capture_default_str();
   command.add_option("--height", rig.height, "Camera image height, px")->capture_default_str();
   command.add_flag("--distractors", scenario.distractors,
                    "Fallen leaves and a water bottle of a ball's colour on some scenes");
+  add_court_look_options(command, court, scenario);
 }
 
 Vec2 parse_pixel_pair(const std::string& text, const std::string& option) {

@@ -5,12 +5,14 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
+#include "ballsight/sim/tennis_court.hpp"
 
 namespace ballsight::app {
 
@@ -28,10 +30,18 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count,
 /// "-5" into a huge seed).
 CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed, const std::string& help);
 
-/// Adds the simulated court's `--scenes`, `--width`, `--height` and `--distractors` (eval court,
-/// eval tennis-sim).
+/// `--light NAME`: random (nullopt) or a sim::LightCondition; throws InputError otherwise.
+std::optional<sim::LightCondition> parse_light(const std::string& name);
+
+/// Adds `--light` (sim::CourtScenarioOptions::light) and `--surface` (sim::CourtSurface) to
+/// `command`; `court` and `scenario` must outlive it.
+void add_court_look_options(CLI::App& command, sim::TennisCourtSpec& court,
+                            sim::CourtScenarioOptions& scenario);
+
+/// Adds the simulated court's `--scenes`, `--width`, `--height` and `--distractors`, and the
+/// court look options above (eval court, eval tennis-sim).
 void add_court_scene_options(CLI::App& command, int& scenes, sim::CourtRigOptions& rig,
-                             sim::CourtScenarioOptions& scenario);
+                             sim::TennisCourtSpec& court, sim::CourtScenarioOptions& scenario);
 
 /// "X,Y" -> two finite numbers; throws InputError naming `option`.
 Vec2 parse_pixel_pair(const std::string& text, const std::string& option);

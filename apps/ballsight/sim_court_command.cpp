@@ -19,25 +19,16 @@ struct SimCourtArgs {
   sim::CourtDatasetOptions dataset;
   std::optional<int> balls;
   std::optional<double> brightness;
-  std::string light = "random";
   bool no_shadow = false;
   bool no_wear = false;
   bool distractors = false;
   bool no_net = false;
 };
 
-std::optional<sim::LightCondition> parse_light(const std::string& name) {
-  if (name == "random") return std::nullopt;
-  if (const auto light = sim::light_condition_named(name)) return light;
-  throw InputError("--light: unknown light '" + name +
-                   "'; expected random, sun, hard_shadow or overcast");
-}
-
 void run_sim_court(const SimCourtArgs& args) {
   sim::CourtDatasetOptions options = args.dataset;
   options.scenario.ball_count = args.balls;
   options.scenario.brightness_gain = args.brightness;
-  options.scenario.light = parse_light(args.light);
   options.scenario.shadow = !args.no_shadow;
   if (args.no_wear) options.scenario.worn_share_max = 0.0;
   options.scenario.distractors = args.distractors;
@@ -72,9 +63,7 @@ void add_sim_court_command(CLI::App& sim) {
       ->capture_default_str();
   cmd->add_option("--brightness", args->brightness,
                   "Brightness gain (0, 4] (default: random 0.8-1.2 per scene)");
-  cmd->add_option("--light", args->light,
-                  "sun, hard_shadow, overcast, or random: one of them per scene")
-      ->capture_default_str();
+  add_court_look_options(*cmd, args->dataset.court, args->dataset.scenario);
   cmd->add_flag("--no-shadow", args->no_shadow, "No shadow band across the court");
   cmd->add_flag("--no-wear", args->no_wear, "No worn (paler) balls");
   cmd->add_flag("--distractors", args->distractors,

@@ -204,6 +204,41 @@ TEST(CourtScenario, LightWearAndDistractorsFollowTheOptions) {
   EXPECT_FALSE(light_condition_named("dusk"));
 }
 
+// Indoor light is asked for, never drawn: a hall's lamps light from above, leave no shadow band,
+// and a white balance set for daylight leaves their warmth as a red-up, blue-down cast.
+TEST(CourtScenario, IndoorLightIsTopLitWarmAndOnlyWhenAsked) {
+  CourtScenarioOptions options;
+  options.light = LightCondition::indoor;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const CourtScene scene = make_court_scene({}, options, seed);
+    EXPECT_EQ(scene.lighting.condition, LightCondition::indoor);
+    EXPECT_FALSE(scene.lighting.shadow);
+    EXPECT_NEAR(scene.lighting.to_sun.z(), 1.0, 1e-12);
+    EXPECT_LT(scene.effects.channel_gain[0], 1.0);  // blue
+    EXPECT_GT(scene.effects.channel_gain[2], 1.0);  // red
+    EXPECT_LT(scene.effects.brightness_gain, 0.85 + 1e-12);
+    // Random scenes draw no cast.
+    EXPECT_EQ(make_court_scene({}, {}, seed).effects.channel_gain, cv::Vec3d(1.0, 1.0, 1.0));
+  }
+  EXPECT_EQ(light_condition_named("indoor"), LightCondition::indoor);
+}
+
+TEST(CourtScenario, SurfacesPaintTheCourtAndKeepTheLines) {
+  for (const CourtSurface surface : {CourtSurface::green, CourtSurface::blue, CourtSurface::red,
+                                     CourtSurface::concrete, CourtSurface::wood}) {
+    TennisCourtSpec court;
+    court.court_bgr = {1, 2, 3};
+    set_court_surface(court, surface);
+    EXPECT_EQ(court_surface_named(court_surface_name(surface)), surface);
+    EXPECT_NE(court.court_bgr, court.surround_bgr);
+    EXPECT_EQ(court.line_bgr, TennisCourtSpec().line_bgr);
+  }
+  TennisCourtSpec green;
+  set_court_surface(green, CourtSurface::green);
+  EXPECT_EQ(green.court_bgr, TennisCourtSpec().court_bgr);
+  EXPECT_FALSE(court_surface_named("grass"));
+}
+
 TEST(CourtScenario, EveryCameraSeesSixWellSpreadReferenceBalls) {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     SCOPED_TRACE("seed " + std::to_string(seed));

@@ -4,6 +4,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "ballsight/core/error.hpp"
+
 namespace ballsight::sim {
 namespace {
 
@@ -37,6 +39,17 @@ TEST(ImageEffects, QuantileNoiseIsTheSameGaussianAsOpenCvs) {
 TEST(ImageEffects, QuantileNoiseFollowsItsSeed) {
   EXPECT_EQ(cv::norm(noisy(true, 7), noisy(true, 7), cv::NORM_INF), 0.0);
   EXPECT_GT(cv::norm(noisy(true, 7), noisy(true, 8), cv::NORM_L1), 0.0);
+}
+
+TEST(ImageEffects, AColourCastScalesEachChannelOnTopOfTheBrightness) {
+  cv::Mat image(4, 4, CV_8UC3, cv::Scalar(100, 100, 100));
+  ImageEffects effects;
+  effects.brightness_gain = 0.8;
+  effects.channel_gain = {0.5, 1.0, 1.5};
+  apply_image_effects(image, effects, 1);
+  EXPECT_EQ(image.at<cv::Vec3b>(2, 1), cv::Vec3b(40, 80, 120));
+  effects.channel_gain = {1.0, 0.0, 1.0};
+  EXPECT_THROW(apply_image_effects(image, effects, 1), InputError);
 }
 
 }  // namespace

@@ -81,23 +81,24 @@ SceneSphere tennis_ball(int id, const Vec2& xy) {
 // Sun: 35-70 deg high, 40-50 % sky light, a soft-edged band (trees). Hard shadow: 20-40 deg
 // high, 25-35 % sky light, a wide band with an edge of a few cm (a building). Overcast: the light
 // comes from the whole sky (modelled as a weak sun at the zenith over 60-75 % sky light), no
-// band; the scene is darker (the brightness gain is drawn lower, make_court_scene).
+// band; the scene is darker (the brightness gain is drawn lower, make_court_scene). Indoor: a
+// hall's many ceiling lamps, modelled like overcast (its colour cast: make_court_scene).
 Lighting random_lighting(std::mt19937_64& rng, const TennisCourtSpec& court, bool shadow,
                          LightCondition condition) {
   Lighting lighting;
   lighting.condition = condition;
   const bool hard = condition == LightCondition::hard_shadow;
+  const bool top_lit = condition == LightCondition::overcast || condition == LightCondition::indoor;
   const double elevation =
-      condition == LightCondition::overcast
-          ? kPi / 2.0
-          : rad_from_deg(hard ? uniform(rng, 20.0, 40.0) : uniform(rng, 35.0, 70.0));
+      top_lit ? kPi / 2.0
+              : rad_from_deg(hard ? uniform(rng, 20.0, 40.0) : uniform(rng, 35.0, 70.0));
   const double azimuth = uniform(rng, -kPi, kPi);
   lighting.to_sun = Vec3(std::cos(elevation) * std::cos(azimuth),
                          std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-  lighting.ambient = condition == LightCondition::overcast ? uniform(rng, 0.60, 0.75)
-                     : hard                                ? uniform(rng, 0.25, 0.35)
-                                                           : uniform(rng, 0.40, 0.50);
-  if (shadow && condition != LightCondition::overcast) {
+  lighting.ambient = top_lit ? uniform(rng, 0.60, 0.75)
+                     : hard  ? uniform(rng, 0.25, 0.35)
+                             : uniform(rng, 0.40, 0.50);
+  if (shadow && !top_lit) {
     const Vec2 point = uniform_in(rng, court.court_rect(), 1.0);
     const double direction = uniform(rng, 0.0, kPi);
     lighting.shadow = ShadowBand{point, Vec2(std::cos(direction), std::sin(direction)),
@@ -251,7 +252,11 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
   scene.lighting = random_lighting(rng, court, options.shadow, light);
   scene.effects.brightness_gain = options.brightness_gain             ? *options.brightness_gain
                                   : light == LightCondition::overcast ? uniform(rng, 0.65, 0.9)
+                                  : light == LightCondition::indoor   ? uniform(rng, 0.6, 0.85)
                                                                       : uniform(rng, 0.8, 1.2);
+  // Lamps of 3000-4000 K under a white balance set for daylight: red up, blue down.
+  if (light == LightCondition::indoor)
+    scene.effects.channel_gain = {uniform(rng, 0.78, 0.92), 1.0, uniform(rng, 1.03, 1.15)};
   const double worn_share = uniform(rng, 0.0, options.worn_share_max);
   for (SceneSphere& ball : scene.balls)
     if (ball.kind == ObjectKind::tennis_ball && uniform(rng, 0.0, 1.0) < worn_share)

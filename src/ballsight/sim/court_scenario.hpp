@@ -2,8 +2,8 @@
 // Seeded generation of court scenes for testing the court pipeline: 20-60 tennis balls, some in
 // tight clusters of touching balls and some right next to the robot (so that the robot hides them
 // from some cameras), reference balls at line intersections, a random robot pose, a random sun,
-// a shadow band across the court (sun, hard shadow or overcast light), worn balls, a brightness
-// change, fallen leaves, a water bottle and sensor noise.
+// a shadow band across the court (sun, hard shadow or overcast light; indoor light when asked),
+// worn balls, a brightness change, fallen leaves, a water bottle and sensor noise.
 
 #include <cstdint>
 #include <optional>
@@ -20,7 +20,9 @@ struct CourtScenarioOptions {
   std::optional<double> brightness_gain;  // nullopt: uniform in [0.8, 1.2]
   bool shadow = true;                     // a shadow band across the court (sun, hard_shadow)
   double cluster_share = 0.25;            // of the balls, those in clusters of 2-4 touching
-  std::optional<LightCondition> light;    // nullopt: each scene draws one, equally likely
+  /// nullopt: each scene draws sun, hard_shadow or overcast, equally likely (indoor only when
+  /// asked: the scenes of a seed stay as they were).
+  std::optional<LightCondition> light;
   /// Of a scene's balls, up to this share (drawn per scene) are worn: their felt paled towards
   /// grey by 25-55 %.
   double worn_share_max = 0.4;

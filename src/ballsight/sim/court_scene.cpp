@@ -20,10 +20,11 @@ SceneSphere marker(const RobotBox& robot, ObjectKind kind, double forward_m, con
           robot.marker_radius_m, bgr};
 }
 
-constexpr EnumNames<LightCondition, 3> kLightConditions{
+constexpr EnumNames<LightCondition, 4> kLightConditions{
     {{LightCondition::sun, "sun"},
      {LightCondition::hard_shadow, "hard_shadow"},
-     {LightCondition::overcast, "overcast"}}};
+     {LightCondition::overcast, "overcast"},
+     {LightCondition::indoor, "indoor"}}};
 
 }  // namespace
 

@@ -63,12 +63,13 @@ struct ShadowBand {
   double soft_edge_m = 0.3;  // width of the penumbra on each side
 };
 
-/// The weather of a scene: sun with a soft-edged shadow band (the shade of trees), low sun with
-/// a hard-edged one and little sky light (the shade of a building), or overcast (light from the
-/// whole sky: top-lit, no shadow, darker).
-enum class LightCondition { sun, hard_shadow, overcast };
+/// The light of a scene: sun with a soft-edged shadow band (the shade of trees), low sun with
+/// a hard-edged one and little sky light (the shade of a building), overcast (light from the
+/// whole sky: top-lit, no shadow, darker), or indoor (a hall's ceiling lamps: top-lit, no
+/// shadow, darker still, and warm: the camera's white balance leaves a yellow-red cast).
+enum class LightCondition { sun, hard_shadow, overcast, indoor };
 
-/// "sun", "hard_shadow", "overcast".
+/// "sun", "hard_shadow", "overcast", "indoor".
 std::string_view light_condition_name(LightCondition condition);
 /// The condition of that name, or nullopt.
 std::optional<LightCondition> light_condition_named(std::string_view name);

@@ -43,7 +43,8 @@ Json lighting_json(const Lighting& l, const ImageEffects& e) {
           {"shadow_band", shadow},
           {"brightness_gain", e.brightness_gain},
           {"blur_sigma_px", e.blur_sigma_px},
-          {"noise_sigma", e.noise_sigma}};
+          {"noise_sigma", e.noise_sigma},
+          {"channel_gain_bgr", {e.channel_gain[0], e.channel_gain[1], e.channel_gain[2]}}};
 }
 
 Json leaves_json(const std::vector<FloorLeaf>& leaves) {

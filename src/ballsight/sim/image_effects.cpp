@@ -65,11 +65,19 @@ void ImageEffects::validate() const {
           "sigma must be in [0, 10] px");
   require(std::isfinite(noise_sigma) && noise_sigma >= 0.0 && noise_sigma <= 64.0, "noise",
           "sigma must be in [0, 64] grey levels");
+  for (int c = 0; c < 3; ++c)
+    require(std::isfinite(channel_gain[c]) && channel_gain[c] > 0.0 && channel_gain[c] <= 2.0,
+            "channel_gain", "each channel's gain must be in (0, 2]");
 }
 
 void apply_image_effects(cv::Mat& bgr, const ImageEffects& effects, std::uint64_t seed) {
   effects.validate();
-  if (effects.brightness_gain != 1.0) bgr.convertTo(bgr, -1, effects.brightness_gain);
+  if (effects.channel_gain != cv::Vec3d(1.0, 1.0, 1.0)) {
+    const cv::Vec3d gain = effects.brightness_gain * effects.channel_gain;
+    cv::multiply(bgr, cv::Scalar(gain[0], gain[1], gain[2]), bgr);
+  } else if (effects.brightness_gain != 1.0) {
+    bgr.convertTo(bgr, -1, effects.brightness_gain);
+  }
   if (effects.blur_sigma_px > 0.0) {
     cv::GaussianBlur(bgr, bgr, cv::Size(), effects.blur_sigma_px);
   }

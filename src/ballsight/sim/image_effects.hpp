@@ -1,5 +1,5 @@
 #pragma once
-// Camera effects applied to a rendered frame: brightness gain, blur and sensor noise.
+// Camera effects applied to a rendered frame: brightness gain, colour cast, blur and sensor noise.
 
 #include <cstdint>
 #include <opencv2/core.hpp>
@@ -14,6 +14,9 @@ struct ImageEffects {
   /// SplitMix stream): the same rounded Gaussian, three times as fast as OpenCV's generator that
   /// the recorded results used (false). The closed loop renders 40 views a simulated second.
   bool quantile_noise = false;
+  /// A colour cast: each channel's gain (B, G, R) on top of brightness_gain, as a white balance
+  /// left slightly off by a light that is not daylight leaves it.
+  cv::Vec3d channel_gain{1.0, 1.0, 1.0};
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ballsight/core/enum_names.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight::sim {
@@ -29,7 +30,42 @@ cv::Vec3f to_float(const cv::Vec3b& c) {
   return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
 }
 
+constexpr EnumNames<CourtSurface, 5> kSurfaces{{{CourtSurface::green, "green"},
+                                                {CourtSurface::blue, "blue"},
+                                                {CourtSurface::red, "red"},
+                                                {CourtSurface::concrete, "concrete"},
+                                                {CourtSurface::wood, "wood"}}};
+
 }  // namespace
+
+std::string_view court_surface_name(CourtSurface surface) {
+  return enum_name(kSurfaces, surface);
+}
+
+std::optional<CourtSurface> court_surface_named(std::string_view name) {
+  return enum_named(kSurfaces, name);
+}
+
+void set_court_surface(TennisCourtSpec& court, CourtSurface surface) {
+  const TennisCourtSpec plain;
+  switch (surface) {
+    case CourtSurface::green:
+      court.court_bgr = plain.court_bgr, court.surround_bgr = plain.surround_bgr;
+      return;
+    case CourtSurface::blue:
+      court.court_bgr = {150, 100, 45}, court.surround_bgr = plain.surround_bgr;
+      return;
+    case CourtSurface::red:
+      court.court_bgr = {55, 65, 160}, court.surround_bgr = plain.surround_bgr;
+      return;
+    case CourtSurface::concrete:
+      court.court_bgr = {140, 144, 146}, court.surround_bgr = {118, 122, 125};
+      return;
+    case CourtSurface::wood:  // light oak, a darker stained wood around it
+      court.court_bgr = {100, 150, 195}, court.surround_bgr = {60, 95, 135};
+      return;
+  }
+}
 
 void TennisCourtSpec::validate() const {
   require(positive(length_m), "court.length_m", "must be positive");

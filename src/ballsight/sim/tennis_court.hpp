@@ -8,6 +8,8 @@
 // Rules of Tennis, Appendix: "The Court").
 
 #include <opencv2/core.hpp>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
@@ -66,6 +68,19 @@ struct TennisCourtSpec {
   /// line and centre marks.
   std::vector<GroundRect> line_rects() const;
 };
+
+/// The surfaces the simulator paints a court with: a green or blue acrylic hard court (green
+/// run-off), a red one (red acrylic, the colour of clay), bare concrete, and an indoor hall's
+/// wooden floor (a darker wood around it).
+enum class CourtSurface { green, blue, red, concrete, wood };
+
+/// "green", "blue", "red", "concrete", "wood".
+std::string_view court_surface_name(CourtSurface surface);
+/// The surface of that name, or nullopt.
+std::optional<CourtSurface> court_surface_named(std::string_view name);
+/// Paints the court and its run-off with `surface` (albedo; the lines stay white). Green is the
+/// simulator's default court.
+void set_court_surface(TennisCourtSpec& court, CourtSurface surface);
 
 /// Albedo of the floor at `p_in_field`, box-filtered over a footprint of half-sizes
 /// `half_footprint_m` (x, y) so that lines and edges are anti-aliased. Zero footprint samples.
