@@ -19,9 +19,9 @@ struct DrawnBall {
   double radius;
 };
 
-// A blue-grey hard court with pixel noise.
-cv::Mat court(cv::Size size, unsigned seed = 1) {
-  cv::Mat image(size, CV_8UC3, cv::Scalar(150, 120, 95));
+// A blue-grey hard court (or a floor of colour `bgr`) with pixel noise.
+cv::Mat court(cv::Size size, unsigned seed = 1, const cv::Scalar& bgr = cv::Scalar(150, 120, 95)) {
+  cv::Mat image(size, CV_8UC3, bgr);
   cv::Mat noise(size, CV_8UC3);
   cv::theRNG().state = seed;
   cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(4));
@@ -61,9 +61,10 @@ void expect_found(const std::vector<PhotoBall>& found, const std::vector<DrawnBa
   }
 }
 
-// The balls drawn on a court of `size` are found.
-void expect_found_when_drawn(cv::Size size, const std::vector<DrawnBall>& balls) {
-  cv::Mat image = court(size);
+// The balls drawn on a court of `size` (and colour `floor`) are found.
+void expect_found_when_drawn(cv::Size size, const std::vector<DrawnBall>& balls,
+                             const cv::Scalar& floor = {150, 120, 95}) {
+  cv::Mat image = court(size, 1, floor);
   for (const DrawnBall& b : balls) draw_ball(image, b);
   PhotoBallDetector detector;
   expect_found(detector.detect(image), balls);
@@ -101,6 +102,24 @@ TEST(PhotoBalls, FindsSmallBallsLyingAFewRadiiApart) {
                                      {Vec2(47.6, 70.8), 3.5},  {Vec2(140.0, 60.0), 2.5},
                                      {Vec2(148.2, 64.5), 2.5}, {Vec2(150.0, 52.0), 5.0}};
   expect_found_when_drawn({200, 120}, balls);
+}
+
+// A floor of a ball's colours: a wooden hall floor (hue 33 deg, in the yellow's and the orange's
+// growth bands) and a red court (the orange's seed colour) grow into one blob with every ball on
+// it. The floor's colours are no ball colours in that photo, and the balls on it are found.
+TEST(PhotoBalls, FindsBallsOnAFloorOfABallsColour) {
+  const std::vector<DrawnBall> balls{{Vec2(60.3, 60.2), 3.5},
+                                     {Vec2(100.2, 190.7), 6},
+                                     {Vec2(160, 110), 12},
+                                     {Vec2(250.5, 170.5), 30}};
+  for (const cv::Scalar& floor : {cv::Scalar(100, 150, 195), cv::Scalar(55, 65, 160)}) {
+    SCOPED_TRACE("floor BGR " + std::to_string(floor[0]) + ", " + std::to_string(floor[1]) + ", " +
+                 std::to_string(floor[2]));
+    cv::Mat image = court({320, 240}, 1, floor);
+    for (const DrawnBall& b : balls) draw_ball(image, b);
+    PhotoBallDetector detector;
+    expect_found(detector.detect(image), balls);
+  }
 }
 
 TEST(PhotoBalls, GivesTheWholeCircleOfABallCutByTheBorder) {

@@ -39,9 +39,13 @@ class ColorClassTable {
   static ColorClassTable from_classifier(
       const std::function<ColorClassMask(const cv::Vec3b& bgr)>& classify);
 
-  ColorClassMask classify(const cv::Vec3b& bgr) const {
-    return table_[index(bgr[0], bgr[1], bgr[2])];
+  ColorClassMask classify(const cv::Vec3b& bgr) const { return table_[index(bgr)]; }
+  /// Takes the classes `classes` away from the cell of index `cell` (see index()).
+  void remove_classes(std::size_t cell, ColorClassMask classes) {
+    table_[cell] = static_cast<ColorClassMask>(table_[cell] & ~classes);
   }
+  static constexpr std::size_t kTableSize = std::size_t{1} << (3 * kBits);
+  static std::size_t index(const cv::Vec3b& bgr) { return index(bgr[0], bgr[1], bgr[2]); }
   static std::size_t index(std::uint8_t b, std::uint8_t g, std::uint8_t r) {
     return (static_cast<std::size_t>(b >> kShift) << (2 * kBits)) |
            (static_cast<std::size_t>(g >> kShift) << kBits) | static_cast<std::size_t>(r >> kShift);

@@ -11,7 +11,7 @@ namespace ballsight {
 
 namespace {
 
-struct Ray {
+struct BearingRay {
   double bearing_deg = 0.0;
   std::vector<int> layout;      // layout indices, nearest first
   std::vector<int> detections;  // detection indices, smallest radius first
@@ -26,17 +26,17 @@ const T& at(const std::vector<T>& v, int i) {
   return v[static_cast<size_t>(i)];
 }
 
-std::vector<Ray> rays_of_layout(const std::vector<Vec2>& layout) {
-  std::vector<Ray> rays;
+std::vector<BearingRay> rays_of_layout(const std::vector<Vec2>& layout) {
+  std::vector<BearingRay> rays;
   for (int i = 0; i < static_cast<int>(layout.size()); ++i) {
     const double bearing = polar_from_cartesian(at(layout, i)).theta_deg;
-    auto ray = std::find_if(rays.begin(), rays.end(), [&](const Ray& r) {
+    auto ray = std::find_if(rays.begin(), rays.end(), [&](const BearingRay& r) {
       return angle_between_deg(r.bearing_deg, bearing) < 0.5;
     });
-    if (ray == rays.end()) ray = rays.insert(rays.end(), Ray{bearing, {}, {}});
+    if (ray == rays.end()) ray = rays.insert(rays.end(), BearingRay{bearing, {}, {}});
     ray->layout.push_back(i);
   }
-  for (Ray& ray : rays) {
+  for (BearingRay& ray : rays) {
     std::sort(ray.layout.begin(), ray.layout.end(),
               [&](int a, int b) { return at(layout, a).norm() < at(layout, b).norm(); });
   }
@@ -79,18 +79,18 @@ double radius_tolerance(const std::vector<double>& expected, size_t k,
 // Rays with exactly one detection per marker whose radii agree with their neighbours' (the
 // median of the nearest such rays): a missing marker plus a clutter blob also gives the right
 // count, but its radii are shifted against the neighbours.
-std::vector<const Ray*> consistent_complete_rays(const std::vector<Ray>& rays,
-                                                 const std::vector<Polar>& polar,
-                                                 const MarkerMatchOptions& options) {
-  std::vector<const Ray*> candidates;
-  for (const Ray& ray : rays)
+std::vector<const BearingRay*> consistent_complete_rays(const std::vector<BearingRay>& rays,
+                                                        const std::vector<Polar>& polar,
+                                                        const MarkerMatchOptions& options) {
+  std::vector<const BearingRay*> candidates;
+  for (const BearingRay& ray : rays)
     if (ray.detections.size() == ray.layout.size()) candidates.push_back(&ray);
-  std::vector<const Ray*> complete;
-  for (const Ray* ray : candidates) {
-    std::vector<const Ray*> neighbours;
-    for (const Ray* other : candidates)
+  std::vector<const BearingRay*> complete;
+  for (const BearingRay* ray : candidates) {
+    std::vector<const BearingRay*> neighbours;
+    for (const BearingRay* other : candidates)
       if (other != ray && other->layout.size() == ray->layout.size()) neighbours.push_back(other);
-    std::sort(neighbours.begin(), neighbours.end(), [&](const Ray* a, const Ray* b) {
+    std::sort(neighbours.begin(), neighbours.end(), [&](const BearingRay* a, const BearingRay* b) {
       return angle_between_deg(a->bearing_deg, ray->bearing_deg) <
              angle_between_deg(b->bearing_deg, ray->bearing_deg);
     });
@@ -102,7 +102,7 @@ std::vector<const Ray*> consistent_complete_rays(const std::vector<Ray>& rays,
     std::vector<double> expected;
     for (size_t k = 0; k < ray->layout.size(); ++k) {
       std::vector<double> radii;
-      for (const Ray* n : neighbours) radii.push_back(at(polar, n->detections[k]).radius);
+      for (const BearingRay* n : neighbours) radii.push_back(at(polar, n->detections[k]).radius);
       std::sort(radii.begin(), radii.end());
       expected.push_back(0.5 * (radii[(radii.size() - 1) / 2] + radii[radii.size() / 2]));
     }
@@ -121,7 +121,7 @@ std::vector<const Ray*> consistent_complete_rays(const std::vector<Ray>& rays,
 std::vector<MarkerMatch> match_markers_to_layout(const std::vector<Vec2>& marker_pixels,
                                                  const std::vector<Vec2>& layout_in_robot,
                                                  const MarkerMatchOptions& options) {
-  std::vector<Ray> rays = rays_of_layout(layout_in_robot);
+  std::vector<BearingRay> rays = rays_of_layout(layout_in_robot);
   const Vec2 center = refined_center(marker_pixels, rays.size(), options.image_center);
   std::vector<Polar> polar;
   for (const Vec2& p : marker_pixels) polar.push_back(image_polar_from_pixel(p, center));
@@ -129,8 +129,8 @@ std::vector<MarkerMatch> match_markers_to_layout(const std::vector<Vec2>& marker
   // Each detection joins the ray nearest in bearing, if near enough.
   for (int d = 0; d < static_cast<int>(polar.size()); ++d) {
     const double bearing = robot_bearing_deg_from_image_theta_deg(at(polar, d).theta_deg);
-    Ray* best = nullptr;
-    for (Ray& ray : rays) {
+    BearingRay* best = nullptr;
+    for (BearingRay& ray : rays) {
       if (angle_between_deg(ray.bearing_deg, bearing) <= options.angle_tolerance_deg &&
           (!best || angle_between_deg(ray.bearing_deg, bearing) <
                         angle_between_deg(best->bearing_deg, bearing)))
@@ -139,14 +139,14 @@ std::vector<MarkerMatch> match_markers_to_layout(const std::vector<Vec2>& marker
     if (best) best->detections.push_back(d);
   }
 
-  for (Ray& ray : rays) {
+  for (BearingRay& ray : rays) {
     std::sort(ray.detections.begin(), ray.detections.end(),
               [&](int a, int b) { return at(polar, a).radius < at(polar, b).radius; });
   }
-  const std::vector<const Ray*> complete = consistent_complete_rays(rays, polar, options);
+  const std::vector<const BearingRay*> complete = consistent_complete_rays(rays, polar, options);
   std::vector<MarkerMatch> matches;
   // Complete rays: assign in order of radius.
-  for (const Ray* ray : complete) {
+  for (const BearingRay* ray : complete) {
     for (size_t k = 0; k < ray->layout.size(); ++k)
       matches.push_back({ray->layout[k], at(marker_pixels, ray->detections[k])});
   }
@@ -154,10 +154,10 @@ std::vector<MarkerMatch> match_markers_to_layout(const std::vector<Vec2>& marker
   // nearest complete ray shows at the same position (a tilt bends the profile by direction, so a
   // neighbour predicts better than a global profile), within a tolerance below half the gap to
   // the neighbouring markers.
-  for (const Ray& ray : rays) {
+  for (const BearingRay& ray : rays) {
     if (std::find(complete.begin(), complete.end(), &ray) != complete.end()) continue;
-    const Ray* reference = nullptr;
-    for (const Ray* c : complete) {
+    const BearingRay* reference = nullptr;
+    for (const BearingRay* c : complete) {
       if (c->layout.size() != ray.layout.size()) continue;
       if (!reference || angle_between_deg(c->bearing_deg, ray.bearing_deg) <
                             angle_between_deg(reference->bearing_deg, ray.bearing_deg))

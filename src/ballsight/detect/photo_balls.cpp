@@ -41,6 +41,20 @@ constexpr double kAlikeSaturation = 0.2;
 // the balls 0.01-0.12, the weeds behind the fence that passed every other test 0.23-0.40.
 constexpr double kMaxRoughness = 0.2;
 
+// The floor: a blob of a ball's colours that is no ball. A court, a wooden floor or a wall of a
+// growth colour (or of the seed colour of one of the model's balls: a red court is stage orange)
+// grows into one blob that swallows the balls on it; so does a floor whose colours a warm lamp
+// has pushed into a growth band. A blob is floor when it covers kFloorMinShare of the image or
+// more, is smooth (kFloorMaxRoughness: the simulator's floors 0.008-0.012, the real photos'
+// foliage, which is no floor, 0.07-0.31), and is either rejected before its circles are sought
+// or covered by its balls for less than kFloorMaxExplained. Its colours (floor_colours.hpp) are
+// then no ball colour in this image, and the image is searched again (up to kMaxFloorPasses
+// times).
+constexpr double kFloorMinShare = 0.02;
+constexpr double kFloorMaxRoughness = 0.05;
+constexpr double kFloorMaxExplained = 0.5;
+constexpr int kMaxFloorPasses = 2;
+
 // By default a band per thread, each of at least this many rows (a band costs a pass over its
 // record of grown pixels, and a blob across k bands is grown k times).
 constexpr int kMinBandRows = 64;
@@ -53,6 +67,7 @@ struct Appearance {
   double seed_share = 0.0;  // seed-colour pixels in the disc of 0.8 r
   double ring_alike = 0.0;  // ring pixels (r + max(1, 0.2 r) to r + max(3, 0.8 r)) of its hue
   double roughness = 0.0;   // of the disc of min(0.8 r, r - 1) (kMaxRoughness)
+  double hue_deg = 0.0;     // the mean hue of its seed pixels (weighed by saturation)
 };
 
 double brightness(const cv::Vec3b& p) {
@@ -68,12 +83,33 @@ double laplacian_residual(const cv::Mat& bgr, int x, int y) {
   return std::abs(brightness(row[x]) - 0.25 * around);
 }
 
+// The roughness of a blob (as a ball's, kMaxRoughness) over about kRoughnessSamples of its
+// pixels that lie a pixel inside the image.
+double blob_roughness(const cv::Mat& bgr, const std::vector<int>& pixels) {
+  constexpr std::size_t kRoughnessSamples = 4096;
+  const std::size_t step = std::max<std::size_t>(1, pixels.size() / kRoughnessSamples);
+  double light = 0.0, residual = 0.0;
+  int count = 0;
+  for (std::size_t k = 0; k < pixels.size(); k += step) {
+    const int x = pixels[k] % bgr.cols, y = pixels[k] / bgr.cols;
+    if (x < 1 || y < 1 || x + 1 >= bgr.cols || y + 1 >= bgr.rows) continue;
+    light += brightness(bgr.ptr<cv::Vec3b>(y)[x]);
+    residual += laplacian_residual(bgr, x, y);
+    ++count;
+  }
+  return count > 0 && light > 0.0 ? residual / light : 0.0;
+}
+
 double saturation_of(const cv::Vec3b& p) {
   const int hi = std::max({p[0], p[1], p[2]}), lo = std::min({p[0], p[1], p[2]});
   return hi > 0 ? static_cast<double>(hi - lo) / hi : 0.0;
 }
 
-Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const BlobCircle& circle) {
+// `table` classifies the image's pixels (the floor's colours taken out), `base` is the colour
+// model's own table: a ring pixel of a colour taken out is floor, which a ball stands out from
+// whatever its hue.
+Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const ColorClassTable& base,
+                      const BlobCircle& circle) {
   const double r = circle.radius_px;
   const double inner = 0.8 * r, ring_in = r + std::max(1.0, 0.2 * r),
                ring_out = r + std::max(3.0, 0.8 * r);
@@ -115,10 +151,13 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Bl
   look.seed_share = static_cast<double>(seeds) / disc;
   if (inside > 0 && light > 0.0) look.roughness = residual / inside / (light / disc);
   const double mean_hue = std::atan2(hue_sum.y(), hue_sum.x()) * 180.0 / std::numbers::pi;
+  look.hue_deg = mean_hue;
   int alike = 0;
   for (const cv::Vec3b& p : ring) {
     const double d = std::abs(std::remainder(hue_deg(p) - mean_hue, 360.0));
-    alike += saturation_of(p) >= kAlikeSaturation && d <= kAlikeHueDeg;
+    const bool floor =
+        (base.classify(p) & kBallGrowClass) != 0 && (table.classify(p) & kBallGrowClass) == 0;
+    alike += saturation_of(p) >= kAlikeSaturation && d <= kAlikeHueDeg && !floor;
   }
   look.ring_alike =
       ring.empty() ? 0.0 : static_cast<double>(alike) / static_cast<double>(ring.size());
@@ -142,7 +181,7 @@ std::pair<double, double> wide_ring(double r) {
 }
 
 double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const PhotoBall& ball,
-                       const std::vector<PhotoBall>& others) {
+                       double hue, const std::vector<PhotoBall>& others) {
   const auto [ring_in, ring_out] = wide_ring(ball.radius_px);
   const Vec2& c = ball.center_px;
   int count = 0, coloured = 0;
@@ -159,7 +198,10 @@ double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const P
       });
       if (in_other) continue;
       ++count;
-      coloured += (table.classify(row[x]) & kBallGrowClass) != 0;
+      const ColorClassMask classes = table.classify(row[x]);
+      coloured += (classes & kBallSeedClass) != 0 ||
+                  ((classes & kBallGrowClass) != 0 &&
+                   std::abs(std::remainder(hue_deg(row[x]) - hue, 360.0)) <= kAlikeHueDeg);
     }
   }
   return count > 0 ? static_cast<double>(coloured) / count : 0.0;
@@ -168,7 +210,9 @@ double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const P
 }  // namespace
 
 PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
-    : options_(options), table_((options.validate(), ball_colour_table(options.colours))) {}
+    : options_(options),
+      table_((options.validate(), ball_colour_table(options.colours))),
+      floor_table_(table_) {}
 
 std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
                                                         const std::vector<Found>& found) const {
@@ -185,7 +229,8 @@ std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
             (o.center_px - f.ball.center_px).norm() <= reach + o.radius_px + kOtherBallMarginPx)
           others.push_back(o);
       }
-      if (wide_ring_share(bgr, table_, f.ball, others) > kMaxWideShare) continue;
+      const double w = wide_ring_share(bgr, active(), f.ball, f.hue_deg, others);
+      if (w > kMaxWideShare) continue;
     }
     kept[k] = true;
     balls.push_back(f.ball);
@@ -196,16 +241,9 @@ std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
 std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   require(!bgr.empty() && bgr.type() == CV_8UC3, "ball detector", "expected an 8-bit BGR image");
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
-  const int count =
-      std::clamp(options_.bands > 0 ? options_.bands
-                                    : std::min(cv::getNumThreads(), image.rows / kMinBandRows),
-                 1, image.rows);
-  bands_.resize(static_cast<std::size_t>(count));
-  cv::parallel_for_(cv::Range(0, count), [&](const cv::Range& range) {
-    for (int b = range.start; b < range.end; ++b)
-      scan_band(image, b * image.rows / count, (b + 1) * image.rows / count,
-                bands_[static_cast<std::size_t>(b)]);
-  });
+  floor_excluded_ = false;
+  search(image);
+  for (int pass = 0; pass < kMaxFloorPasses && exclude_floor_colours(image); ++pass) search(image);
   std::vector<Found> found;
   int blobs = 0;  // of the bands before
   for (const Band& band : bands_) {
@@ -220,18 +258,46 @@ std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   return keep_isolated(image, found);
 }
 
+void PhotoBallDetector::search(const cv::Mat& bgr) {
+  const int count = std::clamp(
+      options_.bands > 0 ? options_.bands : std::min(cv::getNumThreads(), bgr.rows / kMinBandRows),
+      1, bgr.rows);
+  bands_.resize(static_cast<std::size_t>(count));
+  cv::parallel_for_(cv::Range(0, count), [&](const cv::Range& range) {
+    for (int b = range.start; b < range.end; ++b)
+      scan_band(bgr, b * bgr.rows / count, (b + 1) * bgr.rows / count,
+                bands_[static_cast<std::size_t>(b)]);
+  });
+}
+
+bool PhotoBallDetector::exclude_floor_colours(const cv::Mat& bgr) {
+  std::vector<const std::vector<int>*> parts;
+  for (const Band& band : bands_)
+    if (!band.floor.empty()) parts.push_back(&band.floor);
+  if (parts.empty()) return false;
+  const std::vector<std::size_t> cells = floor_colours_.cells(bgr, parts);
+  if (cells.empty()) return false;
+  if (!floor_excluded_) floor_table_ = table_;
+  for (const std::size_t cell : cells)
+    floor_table_.remove_classes(cell, kBallSeedClass | kBallGrowClass);
+  floor_excluded_ = true;
+  return true;
+}
+
 void PhotoBallDetector::scan_band(const cv::Mat& bgr, int first_row, int end_row,
                                   Band& band) const {
   // Blobs grow beyond the band, so the band marks what it grew over the whole image.
   band.buffers.reset(static_cast<int>(bgr.total()));
   band.found.clear();
+  band.floor.clear();
   band.blobs = 0;
   const auto* pixels = bgr.ptr<cv::Vec3b>(0);
   const int begin = first_row * bgr.cols, end = end_row * bgr.cols;
-  const auto is_seed = [&](int index) { return is_ball_seed(table_, pixels[index]); };
+  const ColorClassTable& table = active();
+  const auto is_seed = [&](int index) { return is_ball_seed(table, pixels[index]); };
   for (int seed = begin; seed < end; ++seed) {
     if (band.buffers.visited[static_cast<std::size_t>(seed)] || !is_seed(seed)) continue;
-    grow_blob(bgr, table_, kBallGrowClass, seed, band.buffers, band.blob);
+    grow_blob(bgr, table, kBallGrowClass, seed, band.buffers, band.blob);
     // A blob with a seed pixel above the band is an earlier band's.
     if (band.blob.bbox.y < first_row &&
         std::any_of(band.blob.pixels.begin(), band.blob.pixels.end(),
@@ -248,15 +314,21 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   // A blob of balls fills a good part of its box (one ball 0.79, three in a diagonal row 0.26);
   // foliage and leaf litter do not.
   const double area = static_cast<double>(band.blob.pixels.size());
-  if (area < std::numbers::pi * min_r * min_r / 3.0 ||
-      area > 6.0 * std::numbers::pi * max_r * max_r || area < kMinBoxFill * band.blob.bbox.area())
-    return;
+  const auto floor = [&] {
+    if (area >= kFloorMinShare * static_cast<double>(bgr.total()) &&
+        blob_roughness(bgr, band.blob.pixels) <= kFloorMaxRoughness)
+      band.floor.insert(band.floor.end(), band.blob.pixels.begin(), band.blob.pixels.end());
+  };
+  if (area < std::numbers::pi * min_r * min_r / 3.0) return;
+  if (area > 6.0 * std::numbers::pi * max_r * max_r || area < kMinBoxFill * band.blob.bbox.area())
+    return floor();
   // Most of a ball is of a seed colour (kMinSeedShare of its disc); a blob grown mostly through
   // the looser growth colours is shade, foliage or a wall.
+  const ColorClassTable& table = active();
   std::size_t seeds = 0;
   const auto* pixels = bgr.ptr<cv::Vec3b>(0);
-  for (int index : band.blob.pixels) seeds += is_ball_seed(table_, pixels[index]);
-  if (static_cast<double>(seeds) < kMinBlobSeedShare * area) return;
+  for (int index : band.blob.pixels) seeds += is_ball_seed(table, pixels[index]);
+  if (static_cast<double>(seeds) < kMinBlobSeedShare * area) return floor();
   constexpr int kMargin = 3;
   const cv::Rect region =
       cv::Rect(band.blob.bbox.x - kMargin, band.blob.bbox.y - kMargin,
@@ -276,17 +348,25 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   BlobCircleOptions geometry = options_.circles;
   geometry.min_score = 0.0;
   std::vector<BlobCircle> balls;
+  std::vector<double> hues;
   for (BlobCircle circle : circles_in_blob(blob, geometry)) {
-    const Appearance look = appearance(bgr, table_, circle);
+    const Appearance look = appearance(bgr, table, table_, circle);
     if (look.seed_share < kMinSeedShare || look.roughness > kMaxRoughness) continue;
     circle.score *= 1.0 - look.ring_alike;
-    if (circle.score >= options_.circles.min_score) balls.push_back(circle);
+    if (circle.score < options_.circles.min_score) continue;
+    balls.push_back(circle);
+    hues.push_back(look.hue_deg);
   }
+  double explained = 0.0;
+  for (const BlobCircle& ball : balls)
+    explained += std::numbers::pi * ball.radius_px * ball.radius_px;
+  if (explained < kFloorMaxExplained * area) floor();
   if (balls.empty()) return;
   // Whether the blob's balls are a clump is judged by them alone, not by the circles dropped.
   const bool clump = is_clump(blob, balls);
-  for (const BlobCircle& ball : balls)
-    band.found.push_back({{ball.center_px, ball.radius_px, ball.score}, band.blobs, clump});
+  for (std::size_t k = 0; k < balls.size(); ++k)
+    band.found.push_back(
+        {{balls[k].center_px, balls[k].radius_px, balls[k].score}, hues[k], band.blobs, clump});
   ++band.blobs;
 }
 

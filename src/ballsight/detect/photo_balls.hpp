@@ -13,6 +13,7 @@
 #include "ballsight/detect/ball_colours.hpp"
 #include "ballsight/detect/blob_circles.hpp"
 #include "ballsight/detect/blob_growth.hpp"
+#include "ballsight/detect/floor_colours.hpp"
 
 namespace ballsight {
 
@@ -49,6 +50,7 @@ class PhotoBallDetector {
   // balls (is_clump).
   struct Found {
     PhotoBall ball;
+    double hue_deg = 0.0;  // of its seed pixels
     int blob = 0;
     bool clump = false;
   };
@@ -60,15 +62,26 @@ class PhotoBallDetector {
     cv::Mat1b patch;
     int blobs = 0;
     std::vector<Found> found;
+    std::vector<int> floor;  // the pixels of the floor blobs it grew (find_circles)
   };
 
+  // One search of the whole image with the table active(): the balls of every band, and the
+  // floor blobs' pixels.
+  void search(const cv::Mat& bgr);
   void scan_band(const cv::Mat& bgr, int first_row, int end_row, Band& band) const;
   void find_circles(const cv::Mat& bgr, Band& band) const;
+  // Takes the colours that make up the floor blobs out of the ball classes (into floor_table_,
+  // then active); false when there is none to take.
+  bool exclude_floor_colours(const cv::Mat& bgr);
   // The balls found (best score first), less the small ones that do not stand apart.
   std::vector<PhotoBall> keep_isolated(const cv::Mat& bgr, const std::vector<Found>& found) const;
 
   PhotoBallOptions options_;
   ColorClassTable table_;
+  ColorClassTable floor_table_;  // table_ less this image's floor colours
+  bool floor_excluded_ = false;  // whether the search uses floor_table_
+  const ColorClassTable& active() const { return floor_excluded_ ? floor_table_ : table_; }
+  FloorColours floor_colours_;
   std::vector<Band> bands_;
 };
 
