@@ -25,7 +25,8 @@ void add_eval_tennis_sim_command(CLI::App& eval) {
       "tennis-sim",
       "The detectors of tennis-real on the court simulator's four camera frames per scene, "
       "labelled from its truth (every tennis ball shown at --min-radius-px or more): recall and "
-      "precision per light condition (sun, hard shadow, overcast)");
+      "precision per light condition (sun, hard shadow, overcast, indoor) and recall by ball "
+      "radius");
   add_seed_option(*cmd, args->options.seed, "Random seed: same seed, same figures");
   add_court_scene_options(*cmd, args->options.scenes, args->options.rig, args->options.court,
                           args->options.scenario);

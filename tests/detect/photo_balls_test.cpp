@@ -8,6 +8,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <string>
 
 #include "ballsight/core/error.hpp"
 
@@ -185,39 +186,64 @@ TEST(PhotoBalls, FindsBallsInAHardShadow) {
 // clumps of small balls close together, each the first clump of its band with 7 bands (their
 // clumps are told apart; each has the other in its wide ring): every band count gives the same
 // balls in the same order as one band.
-TEST(PhotoBalls, TheBandsDoNotChangeTheBalls) {
-  cv::Mat image = court({420, 300});
-  const std::vector<DrawnBall> balls{{Vec2(60, 150), 25},  {Vec2(110, 150), 25},
-                                     {Vec2(200, 100), 12}, {Vec2(300, 200), 40},
-                                     {Vec2(380, 43), 6},   {Vec2(30, 257), 4}};
-  for (const DrawnBall& b : balls) draw_ball(image, b);
-  const DrawnBall pale_topped{Vec2(200, 160), 20};
-  draw_ball(image, pale_topped);
-  cv::ellipse(image, {200, 160}, {22, 22}, 0, 180, 360, cv::Scalar(140, 200, 190), -1);
-  for (const double row : {37.0, 49.0})  // in bands 0 and 1 of 7
-    for (const double column : {250.0, 257.4}) draw_ball(image, {Vec2(column, row), 3.5});
-  std::mt19937 random(5);
-  std::uniform_int_distribution<int> x(0, 419), y(0, 299);
-  for (int i = 0; i < 60; ++i) {  // leaves; one beside the pale top would be a seed above it
-    const cv::Point leaf(x(random), y(random));
-    if ((Vec2(leaf.x, leaf.y) - pale_topped.center).norm() > 30.0)
-      cv::circle(image, leaf, 1, {40, 200, 170}, -1);
+void expect_same_balls(const std::vector<PhotoBall>& found, const std::vector<PhotoBall>& expected,
+                       const std::string& what) {
+  ASSERT_EQ(found.size(), expected.size()) << what;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(found[i].center_px, expected[i].center_px) << what << ", ball " << i;
+    EXPECT_EQ(found[i].radius_px, expected[i].radius_px) << what << ", ball " << i;
+    EXPECT_EQ(found[i].score, expected[i].score) << what << ", ball " << i;
   }
-  PhotoBallOptions options;
-  options.bands = 1;
-  const std::vector<PhotoBall> one = PhotoBallDetector(options).detect(image);
-  ASSERT_GE(one.size(), balls.size() + 1);
-  ASSERT_NE(nearest(one, pale_topped), nullptr);
-  for (const int bands : {2, 3, 7}) {
-    options.bands = bands;
-    const std::vector<PhotoBall> split = PhotoBallDetector(options).detect(image);
-    ASSERT_EQ(split.size(), one.size()) << bands << " bands";
-    for (std::size_t i = 0; i < one.size(); ++i) {
-      EXPECT_EQ(split[i].center_px, one[i].center_px) << bands << " bands, ball " << i;
-      EXPECT_EQ(split[i].radius_px, one[i].radius_px) << bands << " bands, ball " << i;
-      EXPECT_EQ(split[i].score, one[i].score) << bands << " bands, ball " << i;
+}
+
+// On the blue court, and on a wooden floor (searched a second time without the floor's colours).
+TEST(PhotoBalls, TheBandsDoNotChangeTheBalls) {
+  for (const cv::Scalar& floor : {cv::Scalar(150, 120, 95), cv::Scalar(100, 150, 195)}) {
+    cv::Mat image = court({420, 300}, 1, floor);
+    const std::vector<DrawnBall> balls{{Vec2(60, 150), 25},  {Vec2(110, 150), 25},
+                                       {Vec2(200, 100), 12}, {Vec2(300, 200), 40},
+                                       {Vec2(380, 43), 6},   {Vec2(30, 257), 4}};
+    for (const DrawnBall& b : balls) draw_ball(image, b);
+    const DrawnBall pale_topped{Vec2(200, 160), 20};
+    draw_ball(image, pale_topped);
+    cv::ellipse(image, {200, 160}, {22, 22}, 0, 180, 360, cv::Scalar(140, 200, 190), -1);
+    for (const double row : {37.0, 49.0})  // in bands 0 and 1 of 7
+      for (const double column : {250.0, 257.4}) draw_ball(image, {Vec2(column, row), 3.5});
+    std::mt19937 random(5);
+    std::uniform_int_distribution<int> x(0, 419), y(0, 299);
+    for (int i = 0; i < 60; ++i) {  // leaves; one beside the pale top would be a seed above it
+      const cv::Point leaf(x(random), y(random));
+      if ((Vec2(leaf.x, leaf.y) - pale_topped.center).norm() > 30.0)
+        cv::circle(image, leaf, 1, {40, 200, 170}, -1);
+    }
+    PhotoBallOptions options;
+    options.bands = 1;
+    const std::vector<PhotoBall> one = PhotoBallDetector(options).detect(image);
+    ASSERT_GE(one.size(), balls.size() + 1);
+    ASSERT_NE(nearest(one, pale_topped), nullptr);
+    for (const int bands : {2, 3, 7}) {
+      options.bands = bands;
+      expect_same_balls(PhotoBallDetector(options).detect(image), one,
+                        std::to_string(bands) + " bands on floor " + std::to_string(floor[2]));
     }
   }
+}
+
+// A detector that took a photo's floor colours out forgets them for the next photo: there, an
+// orange ball whose shaded half is of the wood's colour is found whole.
+TEST(PhotoBalls, TheFloorOfOnePhotoIsNotTheNext) {
+  const cv::Scalar wood_bgr(100, 150, 195);
+  cv::Mat wood = court({320, 240}, 1, wood_bgr);
+  draw_ball(wood, {Vec2(160, 120), 12});
+  cv::Mat blue = court({320, 240});
+  cv::circle(blue, {100, 120}, 14, wood_bgr, -1, cv::LINE_AA);
+  cv::circle(blue, {100, 116}, 10, cv::Scalar(60, 140, 235), -1, cv::LINE_AA);
+  PhotoBallDetector fresh, used;
+  ASSERT_EQ(used.detect(wood).size(), 1u);
+  const std::vector<PhotoBall> expected = fresh.detect(blue);
+  ASSERT_EQ(expected.size(), 1u);
+  EXPECT_NEAR(expected[0].radius_px, 14.0, 1.5);
+  expect_same_balls(used.detect(blue), expected, "after the wooden floor");
 }
 
 TEST(PhotoBalls, RefusesAnImageThatIsNotColour) {

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
+#include "ballsight/core/error.hpp"
 #include "shared_data.hpp"
 
 namespace ballsight {
@@ -32,7 +34,8 @@ TEST(TennisReal, RecallByRadiusCountsEachBoxInItsRange) {
                                         {{Vec2(59.5, 9.5), 10.0, 0.9}}, {400, 400}));
   add_match(total,
             match_balls_to_boxes({{0, 50, 80, 60}}, {{Vec2(39.5, 79.5), 40.0, 0.9}}, {400, 400}));
-  const std::vector<RadiusRecall> ranges = recall_by_radius(total, {2.0, 5.0, 20.0});
+  const std::array<double, 3> edges{2.0, 5.0, 20.0};
+  const std::vector<RadiusRecall> ranges = recall_by_radius(total, edges);
   ASSERT_EQ(ranges.size(), 3u);
   EXPECT_EQ(ranges[0].labelled, 1);  // [2, 5)
   EXPECT_EQ(ranges[0].matched, 0);
@@ -43,6 +46,8 @@ TEST(TennisReal, RecallByRadiusCountsEachBoxInItsRange) {
   EXPECT_EQ(ranges[2].matched, 1);
   EXPECT_TRUE(std::isinf(ranges[2].max_radius_px));
   EXPECT_EQ(recall_by_radius_json(ranges)[2]["radius_px"][1], nullptr);
+  const std::array<double, 3> unordered{2.0, 20.0, 5.0};
+  EXPECT_THROW(recall_by_radius(total, unordered), InputError);
 }
 
 TEST(TennisReal, ABallCutByTheBorderIsComparedByItsVisiblePart) {

@@ -45,10 +45,20 @@ class ColorClassTable {
     table_[cell] = static_cast<ColorClassMask>(table_[cell] & ~classes);
   }
   static constexpr std::size_t kTableSize = std::size_t{1} << (3 * kBits);
+  static constexpr int kCellsPerChannel = 1 << kBits;
+  /// The cell of quantised channels (each in [0, kCellsPerChannel)), and back.
+  static std::size_t cell(int b, int g, int r) {
+    return (static_cast<std::size_t>(b) << (2 * kBits)) | (static_cast<std::size_t>(g) << kBits) |
+           static_cast<std::size_t>(r);
+  }
+  static cv::Vec3i cell_channels(std::size_t cell) {
+    const auto mask = static_cast<std::size_t>(kCellsPerChannel - 1);
+    return {static_cast<int>(cell >> (2 * kBits)), static_cast<int>((cell >> kBits) & mask),
+            static_cast<int>(cell & mask)};
+  }
   static std::size_t index(const cv::Vec3b& bgr) { return index(bgr[0], bgr[1], bgr[2]); }
   static std::size_t index(std::uint8_t b, std::uint8_t g, std::uint8_t r) {
-    return (static_cast<std::size_t>(b >> kShift) << (2 * kBits)) |
-           (static_cast<std::size_t>(g >> kShift) << kBits) | static_cast<std::size_t>(r >> kShift);
+    return cell(b >> kShift, g >> kShift, r >> kShift);
   }
 
  private:

@@ -166,11 +166,12 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Co
 
 // A small ball (a few pixels: its shape says little) stands apart from everything of a ball
 // colour: weeds, leaves and foliage come in fields of specks. Its wide ring
-// (r + max(3, 0.3 r) to r + max(12, 0.6 r)) holds almost no pixel of a growth colour apart from
-// other balls: those found in other blobs (balls lie in groups; two small balls a few radii
-// apart each hold the other in their rings), those kept already (best score first) and those of
-// its own clump. The circles a blob that is no clump is split into (a painted line, a leaf) do
-// not excuse each other.
+// (r + max(3, 0.3 r) to r + max(12, 0.6 r)) holds almost no pixel of a ball colour (a seed
+// colour, or a growth colour of the ball's own hue family, kAlikeHueDeg) apart from other balls:
+// those found in other blobs (balls lie in groups; two small balls a few radii apart each hold
+// the other in their rings), those kept already (best score first) and those of its own clump.
+// The circles a blob that is no clump is split into (a painted line, a leaf) do not excuse each
+// other.
 constexpr double kSmallRadiusPx = 8.0;
 constexpr double kMaxWideShare = 0.02;
 constexpr double kOtherBallMarginPx = 2.0;
@@ -181,7 +182,7 @@ std::pair<double, double> wide_ring(double r) {
 }
 
 double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const PhotoBall& ball,
-                       double hue, const std::vector<PhotoBall>& others) {
+                       double hue_deg_of_ball, const std::vector<PhotoBall>& others) {
   const auto [ring_in, ring_out] = wide_ring(ball.radius_px);
   const Vec2& c = ball.center_px;
   int count = 0, coloured = 0;
@@ -199,9 +200,10 @@ double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const P
       if (in_other) continue;
       ++count;
       const ColorClassMask classes = table.classify(row[x]);
-      coloured += (classes & kBallSeedClass) != 0 ||
-                  ((classes & kBallGrowClass) != 0 &&
-                   std::abs(std::remainder(hue_deg(row[x]) - hue, 360.0)) <= kAlikeHueDeg);
+      coloured +=
+          (classes & kBallSeedClass) != 0 ||
+          ((classes & kBallGrowClass) != 0 &&
+           std::abs(std::remainder(hue_deg(row[x]) - hue_deg_of_ball, 360.0)) <= kAlikeHueDeg);
     }
   }
   return count > 0 ? static_cast<double>(coloured) / count : 0.0;
@@ -210,9 +212,7 @@ double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const P
 }  // namespace
 
 PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
-    : options_(options),
-      table_((options.validate(), ball_colour_table(options.colours))),
-      floor_table_(table_) {}
+    : options_(options), table_((options.validate(), ball_colour_table(options.colours))) {}
 
 std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
                                                         const std::vector<Found>& found) const {
@@ -221,16 +221,15 @@ std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
   for (std::size_t k = 0; k < found.size(); ++k) {
     const Found& f = found[k];
     if (f.ball.radius_px <= kSmallRadiusPx) {
-      const double reach = wide_ring(f.ball.radius_px).second;
+      const double reach_px = wide_ring(f.ball.radius_px).second;
       others.clear();
       for (std::size_t j = 0; j < found.size(); ++j) {
         const PhotoBall& o = found[j].ball;
         if (j != k && (kept[j] || found[j].blob != f.blob || f.clump) &&
-            (o.center_px - f.ball.center_px).norm() <= reach + o.radius_px + kOtherBallMarginPx)
+            (o.center_px - f.ball.center_px).norm() <= reach_px + o.radius_px + kOtherBallMarginPx)
           others.push_back(o);
       }
-      const double w = wide_ring_share(bgr, active(), f.ball, f.hue_deg, others);
-      if (w > kMaxWideShare) continue;
+      if (wide_ring_share(bgr, active(), f.ball, f.hue_deg, others) > kMaxWideShare) continue;
     }
     kept[k] = true;
     balls.push_back(f.ball);
@@ -279,7 +278,7 @@ bool PhotoBallDetector::exclude_floor_colours(const cv::Mat& bgr) {
   if (cells.empty()) return false;
   if (!floor_excluded_) floor_table_ = table_;
   for (const std::size_t cell : cells)
-    floor_table_.remove_classes(cell, kBallSeedClass | kBallGrowClass);
+    floor_table_->remove_classes(cell, kBallSeedClass | kBallGrowClass);
   floor_excluded_ = true;
   return true;
 }

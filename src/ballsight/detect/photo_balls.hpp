@@ -8,6 +8,7 @@
 // when nothing of a ball's colour lies around it but its own clump (docs/detect-balls.md).
 
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "ballsight/detect/ball_colours.hpp"
@@ -75,12 +76,13 @@ class PhotoBallDetector {
   bool exclude_floor_colours(const cv::Mat& bgr);
   // The balls found (best score first), less the small ones that do not stand apart.
   std::vector<PhotoBall> keep_isolated(const cv::Mat& bgr, const std::vector<Found>& found) const;
+  // The table the search classifies with: the colour model's, or that less the floor's colours.
+  const ColorClassTable& active() const { return floor_excluded_ ? *floor_table_ : table_; }
 
   PhotoBallOptions options_;
   ColorClassTable table_;
-  ColorClassTable floor_table_;  // table_ less this image's floor colours
-  bool floor_excluded_ = false;  // whether the search uses floor_table_
-  const ColorClassTable& active() const { return floor_excluded_ ? floor_table_ : table_; }
+  std::optional<ColorClassTable> floor_table_;  // table_ less this image's floor colours
+  bool floor_excluded_ = false;                 // whether the search uses floor_table_
   FloorColours floor_colours_;
   std::vector<Band> bands_;
 };

@@ -160,8 +160,9 @@ void add_match(BoxMatch& total, const BoxMatch& part) {
                            part.box_matched.end());
 }
 
-std::vector<RadiusRecall> recall_by_radius(const BoxMatch& match,
-                                           const std::vector<double>& edges) {
+std::vector<RadiusRecall> recall_by_radius(const BoxMatch& match, std::span<const double> edges) {
+  require(std::adjacent_find(edges.begin(), edges.end(), std::greater_equal<>()) == edges.end(),
+          "radius ranges", "edges must be strictly ascending");
   std::vector<RadiusRecall> ranges;
   for (std::size_t k = 0; k < edges.size(); ++k)
     ranges.push_back({edges[k],

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,9 @@ struct RadiusRecall {
   int matched = 0;
 };
 
-/// The boxes in each radius range of `edges` (ascending; the last range is open).
-std::vector<RadiusRecall> recall_by_radius(const BoxMatch& match, const std::vector<double>& edges);
+/// The boxes in each radius range of `edges` (strictly ascending, else InputError; the last range
+/// is open, and boxes below the first edge are in no range).
+std::vector<RadiusRecall> recall_by_radius(const BoxMatch& match, std::span<const double> edges);
 
 /// Matches `balls` (best first) to `boxes` in an image of `image_size`.
 BoxMatch match_balls_to_boxes(const std::vector<cv::Rect>& boxes,

@@ -1,6 +1,7 @@
 #include "ballsight/eval/tennis_sim.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -14,8 +15,9 @@ namespace ballsight {
 
 namespace {
 
-// The ranges of ball radius (px) the figures are broken down by.
-const std::vector<double> kRadiusEdges{2.0, 3.0, 4.0, 5.0, 7.0, 10.0, 20.0};
+// The ranges of ball radius (px) the figures are broken down by (from 0: a box cut by the image
+// border may be smaller than min_radius_px).
+constexpr std::array<double, 8> kRadiusEdges{0.0, 2.0, 3.0, 4.0, 5.0, 7.0, 10.0, 20.0};
 
 constexpr double kOtherSphereMarginPx = 2.0;
 constexpr int kOutlineSamples = 32;

@@ -5,8 +5,8 @@
 // the image, half of it or more unhidden) at `min_radius_px` or more. A detection on any other
 // sphere (a smaller or hidden ball, one whose centre lies outside the image, a reference ball, a
 // robot marker) is neither right nor wrong: it is left out before the matching. Figures per light
-// condition of the scenes (sun, hard shadow, overcast). A seed gives the scenes of `eval court`
-// with that seed (court_eval_scenes.hpp).
+// condition of the scenes (sun, hard shadow, overcast, indoor) and by the balls' radius. A seed
+// gives the scenes of `eval court` with that seed (court_eval_scenes.hpp).
 
 #include <cstdint>
 #include <map>
