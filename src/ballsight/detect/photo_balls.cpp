@@ -100,6 +100,11 @@ double blob_roughness(const cv::Mat& bgr, const std::vector<int>& pixels) {
   return count > 0 && light > 0.0 ? residual / light : 0.0;
 }
 
+// Whether `p` is of the hue family of a ball of hue `ball_hue_deg` (kAlikeHueDeg).
+bool of_hue_family(const cv::Vec3b& p, double ball_hue_deg) {
+  return std::abs(std::remainder(hue_deg(p) - ball_hue_deg, 360.0)) <= kAlikeHueDeg;
+}
+
 double saturation_of(const cv::Vec3b& p) {
   const int hi = std::max({p[0], p[1], p[2]}), lo = std::min({p[0], p[1], p[2]});
   return hi > 0 ? static_cast<double>(hi - lo) / hi : 0.0;
@@ -154,10 +159,9 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Co
   look.hue_deg = mean_hue;
   int alike = 0;
   for (const cv::Vec3b& p : ring) {
-    const double d = std::abs(std::remainder(hue_deg(p) - mean_hue, 360.0));
     const bool floor =
         (base.classify(p) & kBallGrowClass) != 0 && (table.classify(p) & kBallGrowClass) == 0;
-    alike += saturation_of(p) >= kAlikeSaturation && d <= kAlikeHueDeg && !floor;
+    alike += saturation_of(p) >= kAlikeSaturation && of_hue_family(p, mean_hue) && !floor;
   }
   look.ring_alike =
       ring.empty() ? 0.0 : static_cast<double>(alike) / static_cast<double>(ring.size());
@@ -200,10 +204,8 @@ double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const P
       if (in_other) continue;
       ++count;
       const ColorClassMask classes = table.classify(row[x]);
-      coloured +=
-          (classes & kBallSeedClass) != 0 ||
-          ((classes & kBallGrowClass) != 0 &&
-           std::abs(std::remainder(hue_deg(row[x]) - hue_deg_of_ball, 360.0)) <= kAlikeHueDeg);
+      coloured += (classes & kBallSeedClass) != 0 ||
+                  ((classes & kBallGrowClass) != 0 && of_hue_family(row[x], hue_deg_of_ball));
     }
   }
   return count > 0 ? static_cast<double>(coloured) / count : 0.0;
