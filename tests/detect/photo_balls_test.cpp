@@ -51,13 +51,16 @@ const PhotoBall* nearest(const std::vector<PhotoBall>& found, const DrawnBall& b
   return best;
 }
 
-void expect_found(const std::vector<PhotoBall>& found, const std::vector<DrawnBall>& balls) {
+// Radii within 15 % and `radius_slack_px`.
+void expect_found(const std::vector<PhotoBall>& found, const std::vector<DrawnBall>& balls,
+                  double radius_slack_px = 0.6) {
   EXPECT_EQ(found.size(), balls.size());
   for (const DrawnBall& ball : balls) {
     const PhotoBall* b = nearest(found, ball);
     ASSERT_NE(b, nullptr) << "ball at (" << ball.center.transpose() << ") r " << ball.radius;
     EXPECT_LE((b->center_px - ball.center).norm(), 0.15 * ball.radius + 0.3) << "r " << ball.radius;
-    EXPECT_NEAR(b->radius_px, ball.radius, 0.15 * ball.radius + 0.6) << "r " << ball.radius;
+    EXPECT_NEAR(b->radius_px, ball.radius, 0.15 * ball.radius + radius_slack_px)
+        << "r " << ball.radius;
     EXPECT_GT(b->score, 0.5);
   }
 }
@@ -121,6 +124,56 @@ TEST(PhotoBalls, FindsBallsOnAFloorOfABallsColour) {
     PhotoBallDetector detector;
     expect_found(detector.detect(image), balls);
   }
+}
+
+// A wooden floor with a patch in a shadow (a post's, say) of under 2 % of the photo: once the
+// floor's colours are taken out, the patch's darker wood still grows into one blob with the balls
+// lying in it; it is floor too, and its balls are found.
+TEST(PhotoBalls, FindsBallsInAShadowOnAFloorOfABallsColour) {
+  cv::Mat image = court({640, 480}, 1, cv::Scalar(100, 150, 195));
+  const cv::Rect shadow(300, 200, 120, 40);
+  const std::vector<DrawnBall> balls{{Vec2(330.3, 214.2), 3.0}, {Vec2(390.6, 223.7), 3.5},
+                                     {Vec2(40.5, 40.5), 4.0}};
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  cv::Mat shaded = image(shadow);
+  shaded *= 0.5;
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), balls);
+}
+
+// A concrete floor under a hall's warm lamps (hue 45 deg, saturation 0.19): the camera's noise
+// pushes about one pixel in five across the yellow's growth band, into the wide ring of every
+// small ball. Those pixels are the smooth floor the balls lie on, not a field of leaves. (A
+// ball's antialiased rim, half ball and half floor, is of a growth colour here: its blob and
+// radius take in a pixel more than on a blue court.)
+TEST(PhotoBalls, FindsSmallBallsOnASmoothFloorOfTheirHueFamily) {
+  const std::vector<DrawnBall> balls{{Vec2(60.3, 60.2), 2.5},
+                                     {Vec2(150.2, 90.7), 3.0},
+                                     {Vec2(250.5, 170.5), 3.5},
+                                     {Vec2(100.5, 180.5), 6.0}};
+  cv::Mat image = court({320, 240}, 1, cv::Scalar(113, 133, 140));
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), balls, 1.2);
+}
+
+// A small leaf of a ball's colour in leaf litter (dull yellow-green leaves of a growth colour,
+// dark gaps between them) on the court: the litter around it is rough, so the leaf does not
+// stand apart and is no ball, while a ball of its size on the bare court beside it is one.
+TEST(PhotoBalls, IgnoresASmallLeafInLeafLitter) {
+  cv::Mat image = court({300, 150});
+  std::mt19937 random(9);
+  std::uniform_int_distribution<int> x(20, 130), y(20, 130);
+  for (int i = 0; i < 400; ++i) {
+    const cv::Point at(x(random), y(random));
+    if ((Vec2(at.x, at.y) - Vec2(75, 75)).norm() > 5.0)
+      cv::circle(image, at, 1, i % 3 == 0 ? cv::Scalar(30, 45, 50) : cv::Scalar(85, 125, 120), -1);
+  }
+  draw_ball(image, {Vec2(75, 75), 2.5});  // the leaf
+  const DrawnBall ball{Vec2(225, 75), 2.5};
+  draw_ball(image, ball);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), {ball});
 }
 
 TEST(PhotoBalls, GivesTheWholeCircleOfABallCutByTheBorder) {

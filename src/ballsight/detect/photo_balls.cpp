@@ -49,11 +49,14 @@ constexpr double kMaxRoughness = 0.2;
 // foliage, which is no floor, 0.07-0.31), and is either rejected before its circles are sought
 // or covered by its balls for less than kFloorMaxExplained. Its colours (floor_colours.hpp) are
 // then no ball colour in this image, and the image is searched again (up to kMaxFloorPasses
-// times).
+// times). Once a floor was found, a smaller smooth blob (kLaterFloorMinShare) is floor too: the
+// same floor in a shadow or under another lamp, whose colours the first pass did not reach (on a
+// wooden floor, the strips in the net's shadow that swallow the balls lying there).
 constexpr double kFloorMinShare = 0.02;
 constexpr double kFloorMaxRoughness = 0.05;
 constexpr double kFloorMaxExplained = 0.5;
-constexpr int kMaxFloorPasses = 2;
+constexpr double kLaterFloorMinShare = 0.005;
+constexpr int kMaxFloorPasses = 3;
 
 // By default a band per thread, each of at least this many rows (a band costs a pass over its
 // record of grown pixels, and a blob across k bands is grown k times).
@@ -175,9 +178,14 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Co
 // those found in other blobs (balls lie in groups; two small balls a few radii apart each hold
 // the other in their rings), those kept already (best score first) and those of its own clump.
 // The circles a blob that is no clump is split into (a painted line, a leaf) do not excuse each
-// other.
+// other. Growth-colour pixels count only as specks, when they are rough (kMaxSurfaceRoughness,
+// as a ball's roughness): a smooth surface of the ball's hue family (a wooden floor, a court
+// under a warm lamp whose noise crosses into a growth band) is where the ball lies, not a field
+// of leaves. Measured (docs/RESULTS.md): the simulator's floors 0.02-0.08, the weeds and leaf
+// litter around the real photos' small false candidates 0.13-0.36.
 constexpr double kSmallRadiusPx = 8.0;
 constexpr double kMaxWideShare = 0.02;
+constexpr double kMaxSurfaceRoughness = 0.1;
 constexpr double kOtherBallMarginPx = 2.0;
 
 // The inner and outer radius of a ball's wide ring.
@@ -185,11 +193,13 @@ std::pair<double, double> wide_ring(double r) {
   return {r + std::max(3.0, 0.3 * r), r + std::max(12.0, 0.6 * r)};
 }
 
-double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const PhotoBall& ball,
-                       double hue_deg_of_ball, const std::vector<PhotoBall>& others) {
+// Whether a small ball stands apart (see above): its wide ring, less the balls `others`.
+bool stands_apart(const cv::Mat& bgr, const ColorClassTable& table, const PhotoBall& ball,
+                  double hue_deg_of_ball, const std::vector<PhotoBall>& others) {
   const auto [ring_in, ring_out] = wide_ring(ball.radius_px);
   const Vec2& c = ball.center_px;
-  int count = 0, coloured = 0;
+  int count = 0, seeds = 0, alike = 0;
+  double alike_light = 0.0, alike_residual = 0.0;  // of the growth pixels a pixel inside
   for (int y = std::max(0, static_cast<int>(std::floor(c.y() - ring_out)));
        y <= std::min(bgr.rows - 1, static_cast<int>(std::ceil(c.y() + ring_out))); ++y) {
     const auto* row = bgr.ptr<cv::Vec3b>(y);
@@ -204,11 +214,19 @@ double wide_ring_share(const cv::Mat& bgr, const ColorClassTable& table, const P
       if (in_other) continue;
       ++count;
       const ColorClassMask classes = table.classify(row[x]);
-      coloured += (classes & kBallSeedClass) != 0 ||
-                  ((classes & kBallGrowClass) != 0 && of_hue_family(row[x], hue_deg_of_ball));
+      if ((classes & kBallSeedClass) != 0) {
+        ++seeds;
+      } else if ((classes & kBallGrowClass) != 0 && of_hue_family(row[x], hue_deg_of_ball)) {
+        ++alike;
+        if (x > 0 && y > 0 && x + 1 < bgr.cols && y + 1 < bgr.rows) {
+          alike_light += brightness(row[x]);
+          alike_residual += laplacian_residual(bgr, x, y);
+        }
+      }
     }
   }
-  return count > 0 ? static_cast<double>(coloured) / count : 0.0;
+  const bool specks = alike_light > 0.0 && alike_residual / alike_light > kMaxSurfaceRoughness;
+  return seeds + (specks ? alike : 0) <= kMaxWideShare * count;
 }
 
 }  // namespace
@@ -231,7 +249,7 @@ std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
             (o.center_px - f.ball.center_px).norm() <= reach_px + o.radius_px + kOtherBallMarginPx)
           others.push_back(o);
       }
-      if (wide_ring_share(bgr, active(), f.ball, f.hue_deg, others) > kMaxWideShare) continue;
+      if (!stands_apart(bgr, active(), f.ball, f.hue_deg, others)) continue;
     }
     kept[k] = true;
     balls.push_back(f.ball);
@@ -316,7 +334,8 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   // foliage and leaf litter do not.
   const double area = static_cast<double>(band.blob.pixels.size());
   const auto floor = [&] {
-    if (area >= kFloorMinShare * static_cast<double>(bgr.total()) &&
+    if (area >= (floor_excluded_ ? kLaterFloorMinShare : kFloorMinShare) *
+                    static_cast<double>(bgr.total()) &&
         blob_roughness(bgr, band.blob.pixels) <= kFloorMaxRoughness)
       band.floor.insert(band.floor.end(), band.blob.pixels.begin(), band.blob.pixels.end());
   };
