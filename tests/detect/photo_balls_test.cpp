@@ -132,8 +132,8 @@ TEST(PhotoBalls, FindsBallsOnAFloorOfABallsColour) {
 TEST(PhotoBalls, FindsBallsInAShadowOnAFloorOfABallsColour) {
   cv::Mat image = court({640, 480}, 1, cv::Scalar(100, 150, 195));
   const cv::Rect shadow(300, 200, 120, 40);
-  const std::vector<DrawnBall> balls{{Vec2(330.3, 214.2), 3.0}, {Vec2(390.6, 223.7), 3.5},
-                                     {Vec2(40.5, 40.5), 4.0}};
+  const std::vector<DrawnBall> balls{
+      {Vec2(330.3, 214.2), 3.0}, {Vec2(390.6, 223.7), 3.5}, {Vec2(40.5, 40.5), 4.0}};
   for (const DrawnBall& b : balls) draw_ball(image, b);
   cv::Mat shaded = image(shadow);
   shaded *= 0.5;
