@@ -233,6 +233,24 @@ TEST(PhotoBalls, FindsBallsInAHardShadow) {
   expect_found(detector.detect(image), balls);
 }
 
+// A concrete court under a hall's warm lamps (blue x 0.8, red x 1.12): the grey floor and its
+// white lines turn to a tennis ball's growth colours; the floor's colours are taken out as floor,
+// but a thin line's (a few pixels of each colour) are not, and it counts as rough specks around
+// the small balls lying near it. The cast is read off the lines and corrected.
+TEST(PhotoBalls, FindsBallsUnderAWarmLamp) {
+  cv::Mat image = court({640, 480}, 1, cv::Scalar::all(125));
+  cv::line(image, {0, 100}, {639, 130}, cv::Scalar::all(215), 1, cv::LINE_AA);
+  cv::line(image, {0, 300}, {639, 290}, cv::Scalar::all(215), 1, cv::LINE_AA);
+  const std::vector<DrawnBall> balls{{Vec2(60.3, 109.2), 2.5},
+                                     {Vec2(400.2, 110.7), 3.0},
+                                     {Vec2(250.5, 302.5), 3.5},
+                                     {Vec2(530.5, 285.5), 6.0}};
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  cv::multiply(image, cv::Scalar(0.8, 1.0, 1.12), image);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), balls);
+}
+
 // The image is searched in horizontal bands in parallel; a blob belongs to the band of its first
 // seed pixel. Balls across the band borders (for 2, 3 and 7 bands), one whose pale top (growth
 // colour only) reaches into the band above its first seed, touching balls, leaves, and two

@@ -73,6 +73,17 @@ ColorClassTable ColorClassTable::from_classifier(
   return table;
 }
 
+ColorClassTable ColorClassTable::remapped(const ChannelCellMap& map) const {
+  ColorClassTable out = *this;
+  for (int b = 0; b < kCellsPerChannel; ++b)
+    for (int g = 0; g < kCellsPerChannel; ++g)
+      for (int r = 0; r < kCellsPerChannel; ++r)
+        out.table_[cell(b, g, r)] =
+            table_[cell(map[0][static_cast<std::size_t>(b)], map[1][static_cast<std::size_t>(g)],
+                        map[2][static_cast<std::size_t>(r)])];
+  return out;
+}
+
 cv::Mat1b segment(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask) {
   require(bgr.type() == CV_8UC3, "segment", "expected an 8-bit BGR image");
   cv::Mat1b out(bgr.size());

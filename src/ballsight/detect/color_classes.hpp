@@ -56,6 +56,11 @@ class ColorClassTable {
     return {static_cast<int>(cell >> (2 * kBits)), static_cast<int>((cell >> kBits) & mask),
             static_cast<int>(cell & mask)};
   }
+  /// Per channel (B, G, R), the cell each cell of that channel is read from (remapped()).
+  using ChannelCellMap = std::array<std::array<std::uint8_t, kCellsPerChannel>, 3>;
+  /// The table whose cell (b, g, r) holds this table's classes of cell (map[0][b], map[1][g],
+  /// map[2][r]): a change of colour channel by channel (a gain per channel) in one pass.
+  ColorClassTable remapped(const ChannelCellMap& map) const;
   static std::size_t index(const cv::Vec3b& bgr) { return index(bgr[0], bgr[1], bgr[2]); }
   static std::size_t index(std::uint8_t b, std::uint8_t g, std::uint8_t r) {
     return cell(b >> kShift, g >> kShift, r >> kShift);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/detect/colour_cast.hpp"
 
 namespace ballsight {
 
@@ -113,11 +114,12 @@ double saturation_of(const cv::Vec3b& p) {
   return hi > 0 ? static_cast<double>(hi - lo) / hi : 0.0;
 }
 
-// `table` classifies the image's pixels (the floor's colours taken out), `base` is the colour
-// model's own table: a ring pixel of a colour taken out is floor, which a ball stands out from
+// `table` classifies the image's pixels (the floor's colours taken out, a warm cast corrected),
+// `model` is the colour model's own table: a ring pixel of a ball colour the photo's table does
+// not class so is floor (or floor and lines under a warm lamp), which a ball stands out from
 // whatever its hue.
-Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const ColorClassTable& base,
-                      const BlobCircle& circle) {
+Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table,
+                      const ColorClassTable& model, const BlobCircle& circle) {
   const double r = circle.radius_px;
   const double inner = 0.8 * r, ring_in = r + std::max(1.0, 0.2 * r),
                ring_out = r + std::max(3.0, 0.8 * r);
@@ -163,7 +165,7 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table, const Co
   int alike = 0;
   for (const cv::Vec3b& p : ring) {
     const bool floor =
-        (base.classify(p) & kBallGrowClass) != 0 && (table.classify(p) & kBallGrowClass) == 0;
+        (model.classify(p) & kBallGrowClass) != 0 && (table.classify(p) & kBallGrowClass) == 0;
     alike += saturation_of(p) >= kAlikeSaturation && of_hue_family(p, mean_hue) && !floor;
   }
   look.ring_alike =
@@ -261,6 +263,10 @@ std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   require(!bgr.empty() && bgr.type() == CV_8UC3, "ball detector", "expected an 8-bit BGR image");
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
   floor_excluded_ = false;
+  // A warm lamp's cast: this photo's colours are classified as they would be under white light.
+  const std::optional<cv::Vec3d> cast = warm_cast_gains(image);
+  if (cast) cast_table_ = corrected_for_cast(table_, *cast);
+  cast_corrected_ = cast.has_value();
   search(image);
   for (int pass = 0; pass < kMaxFloorPasses && exclude_floor_colours(image); ++pass) search(image);
   std::vector<Found> found;
@@ -296,7 +302,7 @@ bool PhotoBallDetector::exclude_floor_colours(const cv::Mat& bgr) {
   if (parts.empty()) return false;
   const std::vector<std::size_t> cells = floor_colours_.cells(bgr, parts);
   if (cells.empty()) return false;
-  if (!floor_excluded_) floor_table_ = table_;
+  if (!floor_excluded_) floor_table_ = base();
   for (const std::size_t cell : cells)
     floor_table_->remove_classes(cell, kBallSeedClass | kBallGrowClass);
   floor_excluded_ = true;

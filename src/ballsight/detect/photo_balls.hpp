@@ -76,12 +76,17 @@ class PhotoBallDetector {
   bool exclude_floor_colours(const cv::Mat& bgr);
   // The balls found (best score first), less the small ones that do not stand apart.
   std::vector<PhotoBall> keep_isolated(const cv::Mat& bgr, const std::vector<Found>& found) const;
-  // The table the search classifies with: the colour model's, or that less the floor's colours.
-  const ColorClassTable& active() const { return floor_excluded_ ? *floor_table_ : table_; }
+  // The table the search classifies with: the colour model's (corrected for a warm cast), or
+  // that less the floor's colours.
+  const ColorClassTable& active() const { return floor_excluded_ ? *floor_table_ : base(); }
+  // The colour model's table, corrected for this photo's warm cast if it has one.
+  const ColorClassTable& base() const { return cast_corrected_ ? *cast_table_ : table_; }
 
   PhotoBallOptions options_;
   ColorClassTable table_;
-  std::optional<ColorClassTable> floor_table_;  // table_ less this image's floor colours
+  std::optional<ColorClassTable> cast_table_;   // table_ corrected for this photo's warm cast
+  bool cast_corrected_ = false;                 // whether base() is cast_table_
+  std::optional<ColorClassTable> floor_table_;  // base() less this image's floor colours
   bool floor_excluded_ = false;                 // whether the search uses floor_table_
   FloorColours floor_colours_;
   std::vector<Band> bands_;

@@ -1,0 +1,77 @@
+#include "ballsight/detect/colour_cast.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+namespace ballsight {
+
+namespace {
+
+// Every kStep-th pixel of every kStep-th row is looked at (1/16 of a photo: thousands of
+// pixels at 640x480, enough for the brightest two percent).
+constexpr int kStep = 4;
+// The brightest share of the samples (by their largest channel), less the clipped and the
+// coloured ones, is taken for white.
+constexpr double kBrightestShare = 0.02;
+constexpr int kClipped = 250;
+constexpr double kMaxSaturation = 0.4;
+constexpr int kMinWhiteSamples = 50;
+// A cast is warm when the white's red exceeds its blue by this factor (the simulator's hall
+// lamps: 1.12-1.47; daylight whites are bluish, <= 1).
+constexpr double kMinWarmRatio = 1.1;
+
+int largest_channel(const cv::Vec3b& p) {
+  return std::max({p[0], p[1], p[2]});
+}
+
+}  // namespace
+
+std::optional<cv::Vec3d> warm_cast_gains(const cv::Mat& bgr) {
+  CV_Assert(bgr.type() == CV_8UC3);
+  std::array<int, 256> histogram{};
+  int samples = 0;
+  for (int y = 0; y < bgr.rows; y += kStep) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; x += kStep, ++samples)
+      ++histogram[static_cast<std::size_t>(largest_channel(row[x]))];
+  }
+  // The lowest brightness of the brightest kBrightestShare.
+  int threshold = 255, above = 0;
+  while (threshold > 0 &&
+         above + histogram[static_cast<std::size_t>(threshold)] <= kBrightestShare * samples)
+    above += histogram[static_cast<std::size_t>(threshold--)];
+  cv::Vec3d sum(0.0, 0.0, 0.0);
+  int whites = 0;
+  for (int y = 0; y < bgr.rows; y += kStep) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; x += kStep) {
+      const cv::Vec3b& p = row[x];
+      const int hi = largest_channel(p);
+      const int lo = std::min({p[0], p[1], p[2]});
+      if (hi < threshold || hi >= kClipped || hi - lo > kMaxSaturation * hi) continue;
+      sum += cv::Vec3d(p[0], p[1], p[2]);
+      ++whites;
+    }
+  }
+  if (whites < kMinWhiteSamples) return std::nullopt;
+  const cv::Vec3d white = sum / whites;
+  if (white[2] < kMinWarmRatio * white[0]) return std::nullopt;
+  const double grey = (white[0] + white[1] + white[2]) / 3.0;
+  return cv::Vec3d(grey / white[0], grey / white[1], grey / white[2]);
+}
+
+ColorClassTable corrected_for_cast(const ColorClassTable& table, const cv::Vec3d& gains) {
+  // A cell's centre, corrected, falls in the cell it is classified as.
+  constexpr int kHalf = 1 << (ColorClassTable::kShift - 1);
+  ColorClassTable::ChannelCellMap map;
+  for (std::size_t channel = 0; channel < 3; ++channel)
+    for (int cell = 0; cell < ColorClassTable::kCellsPerChannel; ++cell)
+      map[channel][static_cast<std::size_t>(cell)] = static_cast<std::uint8_t>(
+          cv::saturate_cast<uchar>(((cell << ColorClassTable::kShift) + kHalf) *
+                                   gains[static_cast<int>(channel)]) >>
+          ColorClassTable::kShift);
+  return table.remapped(map);
+}
+
+}  // namespace ballsight
