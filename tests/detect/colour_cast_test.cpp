@@ -43,8 +43,10 @@ TEST(ColourCast, DaylightAndClippedWhitesAreLeftAlone) {
   EXPECT_FALSE(warm_cast_gains(lined_floor({1.0, 1.0, 1.0})).has_value());
   EXPECT_FALSE(warm_cast_gains(lined_floor({1.1, 1.0, 0.95})).has_value());   // bluish
   EXPECT_FALSE(warm_cast_gains(lined_floor({0.97, 1.0, 1.03})).has_value());  // faintly warm
+  EXPECT_FALSE(warm_cast_gains(cv::Mat(240, 320, CV_8UC3, cv::Scalar::all(0))).has_value());
+  EXPECT_FALSE(warm_cast_gains(lined_floor({0.8, 1.0, 1.12}) * 0.2).has_value());  // too dark
   cv::Mat clipped = lined_floor({0.8, 1.0, 1.12});
-  clipped.setTo(cv::Scalar::all(255), clipped > 200);  // the whites burnt out
+  clipped.setTo(cv::Scalar::all(255), clipped > 200);  // the lines' red and green burnt out
   EXPECT_FALSE(warm_cast_gains(clipped).has_value());
 }
 

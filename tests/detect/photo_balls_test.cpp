@@ -141,17 +141,18 @@ TEST(PhotoBalls, FindsBallsInAShadowOnAFloorOfABallsColour) {
   expect_found(detector.detect(image), balls);
 }
 
-// A concrete floor under a hall's warm lamps (hue 45 deg, saturation 0.19): the camera's noise
-// pushes about one pixel in five across the yellow's growth band, into the wide ring of every
-// small ball. Those pixels are the smooth floor the balls lie on, not a field of leaves. (A
-// ball's antialiased rim, half ball and half floor, is of a growth colour here: its blob and
-// radius take in a pixel more than on a blue court.)
+// A warm-tinted concrete floor (hue 45 deg, saturation 0.19) in white light (a white wall shows
+// it: no cast is corrected): the camera's noise pushes about one pixel in five across the
+// yellow's growth band, into the wide ring of every small ball. Those pixels are the smooth floor
+// the balls lie on, not a field of leaves. (A ball's antialiased rim, half ball and half floor, is
+// of a growth colour here: its blob and radius take in a pixel more than on a blue court.)
 TEST(PhotoBalls, FindsSmallBallsOnASmoothFloorOfTheirHueFamily) {
   const std::vector<DrawnBall> balls{{Vec2(60.3, 60.2), 2.5},
                                      {Vec2(150.2, 90.7), 3.0},
                                      {Vec2(250.5, 170.5), 3.5},
                                      {Vec2(100.5, 180.5), 6.0}};
   cv::Mat image = court({320, 240}, 1, cv::Scalar(113, 133, 140));
+  image(cv::Rect(0, 0, 320, 10)).setTo(cv::Scalar::all(235));  // a white wall: daylight, no cast
   for (const DrawnBall& b : balls) draw_ball(image, b);
   PhotoBallDetector detector;
   expect_found(detector.detect(image), balls, 1.2);
@@ -236,7 +237,8 @@ TEST(PhotoBalls, FindsBallsInAHardShadow) {
 // A concrete court under a hall's warm lamps (blue x 0.8, red x 1.12): the grey floor and its
 // white lines turn to a tennis ball's growth colours; the floor's colours are taken out as floor,
 // but a thin line's (a few pixels of each colour) are not, and it counts as rough specks around
-// the small balls lying near it. The cast is read off the lines and corrected.
+// the small balls lying near it. The cast is read off the brightest near-neutral pixels (the
+// lines and the floor's brightest noise) and corrected.
 TEST(PhotoBalls, FindsBallsUnderAWarmLamp) {
   cv::Mat image = court({640, 480}, 1, cv::Scalar::all(125));
   cv::line(image, {0, 100}, {639, 130}, cv::Scalar::all(215), 1, cv::LINE_AA);

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+
+#include "ballsight/core/error.hpp"
 
 namespace ballsight {
 
@@ -12,14 +15,18 @@ namespace {
 // pixels at 640x480, enough for the brightest two percent).
 constexpr int kStep = 4;
 // The brightest share of the samples (by their largest channel), less the clipped and the
-// coloured ones, is taken for white.
+// coloured ones, is taken for white, when it is bright enough to be one and holds enough.
 constexpr double kBrightestShare = 0.02;
 constexpr int kClipped = 250;
 constexpr double kMaxSaturation = 0.4;
+constexpr int kMinWhite = 64;
 constexpr int kMinWhiteSamples = 50;
-// A cast is warm when the white's red exceeds its blue by this factor (the simulator's hall
-// lamps: 1.12-1.47; daylight whites are bluish, <= 1).
+// A cast is warm when the white's red exceeds its blue by kMinWarmRatio (the simulator's hall
+// lamps: 1.12-1.47; daylight whites are bluish, <= 1); beyond kMaxWarmRatio the "white" is a
+// coloured surface (sand, light wood), not a lamp's white.
 constexpr double kMinWarmRatio = 1.1;
+constexpr double kMaxWarmRatio = 1.6;
+constexpr double kGainSteps = 64.0;
 
 int largest_channel(const cv::Vec3b& p) {
   return std::max({p[0], p[1], p[2]});
@@ -28,7 +35,15 @@ int largest_channel(const cv::Vec3b& p) {
 }  // namespace
 
 std::optional<cv::Vec3d> warm_cast_gains(const cv::Mat& bgr) {
-  CV_Assert(bgr.type() == CV_8UC3);
+  require(!bgr.empty() && bgr.type() == CV_8UC3, "colour cast", "expected an 8-bit BGR image");
+  // The brightest kBrightestShare of all samples; of those, the ones neither clipped nor
+  // coloured are taken for white. (Counting the clipped and coloured samples too keeps a sunny
+  // photo, whose brightest share is burnt-out sky and white, from reading its sunlit ground for
+  // white: on the real photos, two more false balls otherwise.)
+  const auto candidate = [](const cv::Vec3b& p) {
+    const int hi = largest_channel(p), lo = std::min({p[0], p[1], p[2]});
+    return hi < kClipped && hi - lo <= kMaxSaturation * hi;
+  };
   std::array<int, 256> histogram{};
   int samples = 0;
   for (int y = 0; y < bgr.rows; y += kStep) {
@@ -41,24 +56,29 @@ std::optional<cv::Vec3d> warm_cast_gains(const cv::Mat& bgr) {
   while (threshold > 0 &&
          above + histogram[static_cast<std::size_t>(threshold)] <= kBrightestShare * samples)
     above += histogram[static_cast<std::size_t>(threshold--)];
+  if (threshold < kMinWhite) return std::nullopt;  // a dark photo: no white to read a cast off
   cv::Vec3d sum(0.0, 0.0, 0.0);
   int whites = 0;
   for (int y = 0; y < bgr.rows; y += kStep) {
     const auto* row = bgr.ptr<cv::Vec3b>(y);
     for (int x = 0; x < bgr.cols; x += kStep) {
       const cv::Vec3b& p = row[x];
-      const int hi = largest_channel(p);
-      const int lo = std::min({p[0], p[1], p[2]});
-      if (hi < threshold || hi >= kClipped || hi - lo > kMaxSaturation * hi) continue;
+      if (!candidate(p) || largest_channel(p) < threshold) continue;
       sum += cv::Vec3d(p[0], p[1], p[2]);
       ++whites;
     }
   }
   if (whites < kMinWhiteSamples) return std::nullopt;
   const cv::Vec3d white = sum / whites;
-  if (white[2] < kMinWarmRatio * white[0]) return std::nullopt;
+  const double warmth = white[2] / white[0];  // > 0: the white is no darker than kMinWhite
+  if (warmth < kMinWarmRatio || warmth > kMaxWarmRatio) return std::nullopt;
+  // Gains in steps of 1/kGainSteps: a camera's frames under one lamp give the same gains, and
+  // the corrected table can be kept from one frame to the next.
   const double grey = (white[0] + white[1] + white[2]) / 3.0;
-  return cv::Vec3d(grey / white[0], grey / white[1], grey / white[2]);
+  const auto step = [&](double channel) {
+    return std::round(grey / channel * kGainSteps) / kGainSteps;
+  };
+  return cv::Vec3d(step(white[0]), step(white[1]), step(white[2]));
 }
 
 ColorClassTable corrected_for_cast(const ColorClassTable& table, const cv::Vec3d& gains) {

@@ -17,12 +17,14 @@
 namespace ballsight {
 
 /// The gains (B, G, R) that make the brightest near-neutral pixels of `bgr` (8-bit BGR) grey,
-/// when they show a warm cast (red above blue by 10 % or more); nullopt when they do not or when
-/// too few pixels qualify (an image of clipped highlights, or one with nothing near-neutral).
+/// when they show a warm cast (red above blue by 10 % to 60 %); nullopt when they do not, when
+/// too few pixels qualify (clipped highlights, nothing near-neutral) or when the brightest are
+/// too dark for white. The gains come in steps of 1/64 (one lamp, one set of gains). Throws
+/// InputError for an image that is not 8-bit BGR.
 std::optional<cv::Vec3d> warm_cast_gains(const cv::Mat& bgr);
 
-/// The table that classifies a pixel of a photo under the cast as `table` classifies that pixel
-/// corrected by `gains` (each channel multiplied, saturated at 255).
+/// The table that classifies a pixel of a photo under the cast as `table` classifies the centre
+/// of its cell corrected by `gains` (each channel multiplied, saturated at 255).
 ColorClassTable corrected_for_cast(const ColorClassTable& table, const cv::Vec3d& gains);
 
 }  // namespace ballsight

@@ -264,8 +264,12 @@ std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
   floor_excluded_ = false;
   // A warm lamp's cast: this photo's colours are classified as they would be under white light.
+  // (The table of the previous photo is kept when its gains are the same: a camera's frames.)
   const std::optional<cv::Vec3d> cast = warm_cast_gains(image);
-  if (cast) cast_table_ = corrected_for_cast(table_, *cast);
+  if (cast && (!cast_table_ || *cast != cast_gains_)) {
+    cast_table_ = corrected_for_cast(table_, *cast);
+    cast_gains_ = *cast;
+  }
   cast_corrected_ = cast.has_value();
   search(image);
   for (int pass = 0; pass < kMaxFloorPasses && exclude_floor_colours(image); ++pass) search(image);

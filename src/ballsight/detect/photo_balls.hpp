@@ -84,7 +84,8 @@ class PhotoBallDetector {
 
   PhotoBallOptions options_;
   ColorClassTable table_;
-  std::optional<ColorClassTable> cast_table_;   // table_ corrected for this photo's warm cast
+  std::optional<ColorClassTable> cast_table_;   // table_ corrected for a warm cast
+  cv::Vec3d cast_gains_;                        // the gains cast_table_ is corrected by
   bool cast_corrected_ = false;                 // whether base() is cast_table_
   std::optional<ColorClassTable> floor_table_;  // base() less this image's floor colours
   bool floor_excluded_ = false;                 // whether the search uses floor_table_
