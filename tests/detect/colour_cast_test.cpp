@@ -67,5 +67,26 @@ TEST(ColourCast, TheCorrectedTableClassifiesTheCorrectedColour) {
   EXPECT_GT(differing, 0);  // the cast moves some colours into or out of the ball classes
 }
 
+// A camera's frames: the table follows each frame's cast, and is the model's own in daylight.
+TEST(ColourCast, TheTableFollowsTheFramesCast) {
+  const ColorClassTable model = ball_colour_table(default_ball_colours());
+  CastCorrectedTable table(model);
+  const cv::Vec3b lamp_lit_line(172, 215, 241);  // a grey of 215 under (0.8, 1.0, 1.12)
+  const cv::Mat warm = lined_floor({0.8, 1.0, 1.12});
+  const ColorClassTable expected = corrected_for_cast(model, *warm_cast_gains(warm));
+  for (int frame = 0; frame < 3; ++frame) {
+    SCOPED_TRACE("frame " + std::to_string(frame));
+    const cv::Mat image = frame == 1 ? lined_floor({1.0, 1.0, 1.0}) : warm;
+    const ColorClassTable& used = table.update(image);
+    EXPECT_EQ(&used, &table.current());
+    const ColorClassTable& truth = frame == 1 ? model : expected;
+    EXPECT_EQ(used.classify(lamp_lit_line), truth.classify(lamp_lit_line));
+    EXPECT_EQ(used.classify(cv::Vec3b(40, 200, 175)), truth.classify(cv::Vec3b(40, 200, 175)));
+  }
+  // The probe tells the two tables apart, and the model stays the model.
+  EXPECT_NE(expected.classify(lamp_lit_line), model.classify(lamp_lit_line));
+  EXPECT_EQ(table.model().classify(lamp_lit_line), model.classify(lamp_lit_line));
+}
+
 }  // namespace
 }  // namespace ballsight

@@ -11,6 +11,7 @@
 
 #include <opencv2/core.hpp>
 #include <optional>
+#include <utility>
 
 #include "ballsight/detect/color_classes.hpp"
 
@@ -26,5 +27,28 @@ std::optional<cv::Vec3d> warm_cast_gains(const cv::Mat& bgr);
 /// The table that classifies a pixel of a photo under the cast as `table` classifies the centre
 /// of its cell corrected by `gains` (each channel multiplied, saturated at 255).
 ColorClassTable corrected_for_cast(const ColorClassTable& table, const cv::Vec3d& gains);
+
+/// A colour model's table and the same corrected for the warm cast of the photo at hand, for a
+/// detector that classifies one camera's frames: the corrected table is kept while the frames
+/// give the same gains (one lamp).
+class CastCorrectedTable {
+ public:
+  explicit CastCorrectedTable(ColorClassTable model) : model_(std::move(model)) {}
+
+  /// Reads the warm cast of `bgr` (8-bit BGR; InputError otherwise) and returns the table to
+  /// classify its pixels with, which current() returns until the next call.
+  const ColorClassTable& update(const cv::Mat& bgr);
+  /// The model's table corrected for the cast of the last photo, or the model's own when it
+  /// showed none.
+  const ColorClassTable& current() const { return corrected_now_ ? *corrected_ : model_; }
+  /// The colour model's own table.
+  const ColorClassTable& model() const { return model_; }
+
+ private:
+  ColorClassTable model_;
+  std::optional<ColorClassTable> corrected_;  // model_ corrected by gains_
+  cv::Vec3d gains_;
+  bool corrected_now_ = false;  // whether the last photo showed a warm cast
+};
 
 }  // namespace ballsight

@@ -150,14 +150,16 @@ std::vector<PixelDetection> CourtDetector::detect(const cv::Mat& bgr) {
               std::to_string(size_.height));
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
   const auto* pixels = image.ptr<cv::Vec3b>(0);
+  // A warm lamp's cast: the frame's colours are classified as they would be under white light.
+  const ColorClassTable& table = table_.update(image);
   std::vector<PixelDetection> out;
   int blob_count = 0;
   for (int seed : seeds_) {
-    const ColorClassMask classes = table_.classify(pixels[seed]);
+    const ColorClassMask classes = table.classify(pixels[seed]);
     if (!classes) continue;
     for (size_t i = 0; i < options_.objects.size(); ++i) {
       if (!(classes & seed_bit(i))) continue;
-      if (!grow_blob(image, table_, grow_bits(i), seed, buffers_, blob_)) break;
+      if (!grow_blob(image, table, grow_bits(i), seed, buffers_, blob_)) break;
       touched_.insert(touched_.end(), blob_.pixels.begin(), blob_.pixels.end());
       measure(image, blob_, i, blob_count++, out);
       break;

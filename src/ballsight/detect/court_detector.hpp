@@ -22,6 +22,7 @@
 #include "ballsight/core/pixel_detection.hpp"
 #include "ballsight/detect/apparent_size.hpp"
 #include "ballsight/detect/blob_growth.hpp"
+#include "ballsight/detect/colour_cast.hpp"
 #include "ballsight/detect/hue_classes.hpp"
 
 namespace ballsight {
@@ -93,7 +94,7 @@ class CourtDetector {
 
   CourtDetectorOptions options_;
   cv::Size size_;
-  ColorClassTable table_;
+  CastCorrectedTable table_;            // the objects' colours, corrected for a warm cast
   std::vector<ApparentSizeMap> sizes_;  // one per object spec
   std::vector<int> seeds_;              // pixel indices of the seed grid
   BlobGrowthBuffers buffers_;

@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/detect/colour_cast.hpp"
 
 namespace ballsight {
 
@@ -264,13 +263,7 @@ std::vector<PhotoBall> PhotoBallDetector::detect(const cv::Mat& bgr) {
   const cv::Mat image = bgr.isContinuous() ? bgr : bgr.clone();
   floor_excluded_ = false;
   // A warm lamp's cast: this photo's colours are classified as they would be under white light.
-  // (The table of the previous photo is kept when its gains are the same: a camera's frames.)
-  const std::optional<cv::Vec3d> cast = warm_cast_gains(image);
-  if (cast && (!cast_table_ || *cast != cast_gains_)) {
-    cast_table_ = corrected_for_cast(table_, *cast);
-    cast_gains_ = *cast;
-  }
-  cast_corrected_ = cast.has_value();
+  table_.update(image);
   search(image);
   for (int pass = 0; pass < kMaxFloorPasses && exclude_floor_colours(image); ++pass) search(image);
   std::vector<Found> found;
@@ -380,7 +373,7 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   std::vector<BlobCircle> balls;
   std::vector<double> hues;
   for (BlobCircle circle : circles_in_blob(blob, geometry)) {
-    const Appearance look = appearance(bgr, table, table_, circle);
+    const Appearance look = appearance(bgr, table, table_.model(), circle);
     if (look.seed_share < kMinSeedShare || look.roughness > kMaxRoughness) continue;
     circle.score *= 1.0 - look.ring_alike;
     if (circle.score < options_.circles.min_score) continue;

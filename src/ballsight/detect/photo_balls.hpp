@@ -14,6 +14,7 @@
 #include "ballsight/detect/ball_colours.hpp"
 #include "ballsight/detect/blob_circles.hpp"
 #include "ballsight/detect/blob_growth.hpp"
+#include "ballsight/detect/colour_cast.hpp"
 #include "ballsight/detect/floor_colours.hpp"
 
 namespace ballsight {
@@ -80,13 +81,10 @@ class PhotoBallDetector {
   // that less the floor's colours.
   const ColorClassTable& active() const { return floor_excluded_ ? *floor_table_ : base(); }
   // The colour model's table, corrected for this photo's warm cast if it has one.
-  const ColorClassTable& base() const { return cast_corrected_ ? *cast_table_ : table_; }
+  const ColorClassTable& base() const { return table_.current(); }
 
   PhotoBallOptions options_;
-  ColorClassTable table_;
-  std::optional<ColorClassTable> cast_table_;   // table_ corrected for a warm cast
-  cv::Vec3d cast_gains_;                        // the gains cast_table_ is corrected by
-  bool cast_corrected_ = false;                 // whether base() is cast_table_
+  CastCorrectedTable table_;
   std::optional<ColorClassTable> floor_table_;  // base() less this image's floor colours
   bool floor_excluded_ = false;                 // whether the search uses floor_table_
   FloorColours floor_colours_;
