@@ -85,6 +85,22 @@ TEST(CourtDetector, RejectsOrangeBalls) {
   }
 }
 
+// A worn ball (its felt paled 40 % towards grey) in a building's hard shadow (a quarter of the
+// light): chroma 31, below the seed band's 35, but as saturated as in the sun.
+TEST(CourtDetector, FindsAWornBallInAHardShadow) {
+  CourtDetector detector(test::overhead_camera());
+  const double r = test::overhead_ball_radius_px();
+  const cv::Vec3b worn(96, 219, 204);
+  for (int i = 0; i < 4; ++i) {
+    const Vec2 center(150.3 + 97.1 * i, 120.6 + 61.7 * i);
+    SCOPED_TRACE("ball at " + std::to_string(center.x()) + ", " + std::to_string(center.y()));
+    const cv::Mat shaded = test::draw_discs({{center, r, worn}}, 2.0, i) * 0.25;
+    const auto found = balls_only(detector.detect(shaded));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_LT((found[0].center_px - center).norm(), 0.3);
+  }
+}
+
 TEST(CourtDetector, FindsBothMarkersAndNamesThem) {
   CourtDetector detector(test::overhead_camera());
   // Markers (4.5 cm) 34.5 cm high: a little larger than a ball on the floor.

@@ -18,6 +18,7 @@ void CourtObjectSpec::validate(const char* name) const {
   require(center_height_m >= 0.0 && std::isfinite(center_height_m), where + ".center_height_m",
           "must be non-negative");
   seed_colour.validate((where + ".seed_colour").c_str());
+  if (shade_seed_colour) shade_seed_colour->validate((where + ".shade_seed_colour").c_str());
   grow_colour.validate((where + ".grow_colour").c_str());
   require(std::abs(evidence_bgr[0] + evidence_bgr[1] + evidence_bgr[2]) < 1e-4f,
           where + ".evidence_bgr", "weights must sum to 0 (grey gives no evidence)");
@@ -26,6 +27,12 @@ void CourtObjectSpec::validate(const char* name) const {
 
 namespace {
 
+// A ball in a building's hard shadow (a tenth to a third of the sunlit brightness) keeps its hue
+// and its saturation, not its chroma: 27-32 against the seed band's 35 on the simulator, where
+// the report's HSV box found some of them and ballsight did not.
+constexpr double kShadeMinChroma = 20.0;
+constexpr double kShadeMinSaturation = 0.45;
+
 CourtObjectSpec object_of_colour(ObjectClass object, const cv::Vec3b& bgr, double radius_m,
                                  double center_height_m) {
   CourtObjectSpec spec;
@@ -33,12 +40,13 @@ CourtObjectSpec object_of_colour(ObjectClass object, const cv::Vec3b& bgr, doubl
   spec.radius_m = radius_m;
   spec.center_height_m = center_height_m;
   const double hue = hue_deg(bgr);
-  const auto band = [hue](double half_width_deg, double min_chroma) {
+  const auto band = [hue](double half_width_deg, double min_chroma, double min_saturation) {
     return HueBand{std::fmod(hue - half_width_deg + 360.0, 360.0),
-                   std::fmod(hue + half_width_deg, 360.0), min_chroma};
+                   std::fmod(hue + half_width_deg, 360.0), min_chroma, min_saturation};
   };
-  spec.seed_colour = band(20.0, 35.0);
-  spec.grow_colour = band(32.0, 15.0);
+  spec.seed_colour = band(20.0, 35.0, 0.0);
+  spec.shade_seed_colour = band(20.0, kShadeMinChroma, kShadeMinSaturation);
+  spec.grow_colour = band(32.0, 15.0, 0.0);
   const cv::Vec3f colour(bgr[0], bgr[1], bgr[2]);
   const float mean = (colour[0] + colour[1] + colour[2]) / 3.0f;
   const cv::Vec3f chroma = colour - cv::Vec3f::all(mean);
@@ -93,6 +101,7 @@ ColorClassTable court_table(const std::vector<CourtObjectSpec>& objects) {
   std::vector<HueClassRule> rules;
   for (size_t i = 0; i < objects.size(); ++i) {
     rules.push_back({seed_bit(i), objects[i].seed_colour});
+    if (objects[i].shade_seed_colour) rules.push_back({seed_bit(i), *objects[i].shade_seed_colour});
     rules.push_back(
         {static_cast<ColorClassMask>(grow_bits(i) & ~seed_bit(i)), objects[i].grow_colour});
   }
@@ -223,7 +232,7 @@ void CourtDetector::measure(const cv::Mat& bgr, const GrownBlob& blob, size_t sp
     return;  // a line or an edge, not a sphere
   // The most covered pixel has the object's own colour: the yellowish rim of an orange reference
   // ball, whose core is orange, is not a tennis ball.
-  if (!spec.seed_colour.contains(evidence.peak_bgr)) return;
+  if (!spec.is_own_colour(evidence.peak_bgr)) return;
   // Touching objects: more evidence than one, or stretched (two discs in a row: ~5x the variance
   // along the row for large discs, ~2-3x for discs of a pixel). Thresholds measured on the
   // simulator's clusters (docs/court-eval.md).

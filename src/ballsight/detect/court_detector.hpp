@@ -15,6 +15,7 @@
 //   partial occlusion, from which world gates and weights observations.
 
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "ballsight/camera/field_camera.hpp"
@@ -33,13 +34,18 @@ struct CourtObjectSpec {
   ObjectClass object = ObjectClass::ball;
   double radius_m = 0.0335;
   double center_height_m = 0.0335;
-  HueBand seed_colour;  // a seed pixel must be in it
+  HueBand seed_colour;                       // a seed pixel must be in it (or in shade_seed_colour)
+  std::optional<HueBand> shade_seed_colour;  // the same hues in deep shade: less chroma
   HueBand grow_colour;  // the blob grows through it (wider: the mixed pixels of the rim)
   cv::Vec3f evidence_bgr{-2.0f, 1.0f, 1.0f};  // weights of B, G, R; they sum to 0
   int max_split = 6;                          // touching objects one blob may hold (1: never split)
 
   /// Throws InputError naming `name` and the first invalid field.
   void validate(const char* name) const;
+  /// Whether `bgr` is of the object's own colour (seed_colour or shade_seed_colour).
+  bool is_own_colour(const cv::Vec3b& bgr) const {
+    return seed_colour.contains(bgr) || (shade_seed_colour && shade_seed_colour->contains(bgr));
+  }
 };
 
 /// The colours of what the detector looks for, 8-bit BGR as the cameras see them in daylight.

@@ -54,6 +54,29 @@ std::vector<Vec2> truth_pixels(const std::vector<sim::SphereTruth>& truth, size_
   return pixels;
 }
 
+// Where camera `camera` shows the true balls of the `missed` mistakes (the tennis ball whose
+// centre is nearest each one's position; where it is in view).
+std::vector<Vec2> missed_pixels(const std::vector<sim::SphereTruth>& truth,
+                                const std::vector<BallMistake>& mistakes, size_t camera) {
+  std::vector<Vec2> pixels;
+  for (const BallMistake& mistake : mistakes) {
+    if (mistake.kind != BallMistake::Kind::missed) continue;
+    const sim::SphereTruth* nearest = nullptr;
+    double best = INFINITY;
+    for (const sim::SphereTruth& t : truth) {
+      const double d = (t.sphere.center_in_field.head<2>() - mistake.position_m).norm();
+      if (t.sphere.kind == sim::ObjectKind::tennis_ball && d < best) {
+        best = d;
+        nearest = &t;
+      }
+    }
+    if (!nearest) continue;
+    const sim::SphereViewTruth& v = nearest->views[camera];
+    if (v.visible && v.silhouette_centroid_px) pixels.push_back(*v.silhouette_centroid_px);
+  }
+  return pixels;
+}
+
 const cv::Scalar kSeedColour(40, 40, 230);       // red
 const cv::Scalar kBallsightColour(40, 200, 40);  // green
 
@@ -81,6 +104,7 @@ void write_pictures(const CourtEvalOptions& options, const sim::CourtRig& rig, i
     const std::string name = scene_name(scene) + "_cam" + std::to_string(c) + ".png";
     write_png_atomic(dir / name,
                      draw_detection_overlay(frames[c], truth_pixels(truth, c), layers,
+                                            missed_pixels(truth, ballsight_mistakes, c),
                                             scene_name(scene) + ", camera " + std::to_string(c)));
     written.push_back(name);
   }

@@ -17,9 +17,15 @@ cv::Point to_point(const Vec2& p) {
 
 }  // namespace
 
+namespace {
+
+const cv::Scalar kMistakeColour(200, 0, 200);  // magenta
+
+}  // namespace
+
 cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& truth_px,
                                const std::vector<DetectionLayer>& layers,
-                               const std::string& title) {
+                               const std::vector<Vec2>& missed_px, const std::string& title) {
   cv::Mat image = frame.clone();
   for (const Vec2& p : truth_px)
     cv::circle(image, to_point(p), 9, cv::Scalar::all(255), 1, cv::LINE_AA);
@@ -39,6 +45,11 @@ cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& tr
     }
     legend.push_back({layer.label, layer.colour});
   }
+  for (const Vec2& p : missed_px) {
+    cv::circle(image, to_point(p), 14, kMistakeColour, 2, cv::LINE_AA);
+    draw_text(image, "M", to_point(p) + cv::Point(14, -10), 0.5, kMistakeColour);
+  }
+  if (!missed_px.empty()) legend.push_back({"missed by ballsight", kMistakeColour});
   cv::rectangle(image, {0, 0, image.cols, 28}, cv::Scalar::all(255), cv::FILLED);
   draw_text(image, title, {10, 20}, 0.55);
   draw_legend(image, {10, 40}, legend);
@@ -46,8 +57,6 @@ cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& tr
 }
 
 namespace {
-
-const cv::Scalar kMistakeColour(200, 0, 200);  // magenta
 
 // "M" (missed), "D" (duplicate), "F" (false positive).
 std::string mistake_letter(BallMistake::Kind kind) {

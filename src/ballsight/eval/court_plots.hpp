@@ -20,10 +20,12 @@ struct DetectionLayer {
   std::vector<PixelDetection> detections;
 };
 
-/// The frame with the true balls' pixels (white rings) and each layer's detections (balls:
-/// circles, markers: squares), a title and a legend.
+/// The frame with the true balls' pixels (white rings), each layer's detections (balls:
+/// circles, markers: squares), the true balls ballsight missed (`missed_px`, magenta rings and
+/// "M"), a title and a legend.
 cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& truth_px,
-                               const std::vector<DetectionLayer>& layers, const std::string& title);
+                               const std::vector<DetectionLayer>& layers,
+                               const std::vector<Vec2>& missed_px, const std::string& title);
 
 /// One method's world model on the map, with the balls it got wrong (court_metrics.hpp) marked.
 struct WorldLayer {
