@@ -177,6 +177,21 @@ TEST(PhotoBalls, IgnoresASmallLeafInLeafLitter) {
   expect_found(detector.detect(image), {ball});
 }
 
+// A flat scrap of a ball's yellow on the court (a wrapper, seen from far: 10 px long, its top
+// lit, its lower edge in its own shade): its brightest part fits a small circle, but a tiny
+// ball's blob does not reach 4 px beyond its disc. The ball of that size beside it is found.
+TEST(PhotoBalls, IgnoresAFlatScrapOfABallsColour) {
+  cv::Mat image = court({200, 100});
+  const std::vector<cv::Point> scrap{{45, 52}, {51, 46}, {56, 52}};
+  cv::fillConvexPoly(image, scrap, cv::Scalar(40, 200, 175), cv::LINE_AA);
+  cv::fillConvexPoly(image, std::vector<cv::Point>{{47, 51}, {51, 47}, {54, 51}},
+                     cv::Scalar(45, 245, 220), cv::LINE_AA);
+  const DrawnBall ball{Vec2(150.3, 50.4), 2.5};
+  draw_ball(image, ball);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), {ball});
+}
+
 TEST(PhotoBalls, GivesTheWholeCircleOfABallCutByTheBorder) {
   expect_found_when_drawn({300, 200}, {{Vec2(20, 150), 45}});  // a third outside the image
 }

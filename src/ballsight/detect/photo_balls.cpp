@@ -27,6 +27,13 @@ namespace {
 // (the growth colours are for its rim, its shade and its pale top).
 constexpr double kMinSeedShare = 0.3;
 constexpr double kMinBoxFill = 0.15;
+// A tiny ball's blob is its disc and rim. A blob with one circle of at most kMaxLoneRadiusPx
+// that reaches more than kMaxLoneOverhangPx beyond the circle's diameter (2 px a side: the
+// antialiased rim, and the JPEG's chroma at half resolution) is a flat scrap of a ball's colour,
+// a wrapper or a leaf, not a ball (on the real photos: a yellow scrap on the court, 9-11 px
+// long, whose brightest part fits a circle of 2.3-2.8 px).
+constexpr double kMaxLoneRadiusPx = 4.0;
+constexpr double kMaxLoneOverhangPx = 4.0;
 constexpr double kMinBlobSeedShare = 0.15;
 // Ring pixels of the ball's own hue family (within this of its mean hue, saturation >= 0.2):
 // foliage, a wall or a court of the ball's colour, not a ball standing out.
@@ -385,6 +392,10 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
     explained += std::numbers::pi * ball.radius_px * ball.radius_px;
   if (explained < kFloorMaxExplained * area) floor();
   if (balls.empty()) return;
+  const int blob_length = std::max(band.blob.bbox.width, band.blob.bbox.height);
+  if (balls.size() == 1 && balls[0].radius_px <= kMaxLoneRadiusPx &&
+      blob_length > 2.0 * balls[0].radius_px + kMaxLoneOverhangPx)
+    return;  // a flat scrap, not a ball
   // Whether the blob's balls are a clump is judged by them alone, not by the circles dropped.
   const bool clump = is_clump(blob, balls);
   for (std::size_t k = 0; k < balls.size(); ++k)
