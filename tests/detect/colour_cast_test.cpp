@@ -5,6 +5,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "ballsight/core/error.hpp"
 #include "ballsight/detect/ball_colours.hpp"
 
 namespace ballsight {
@@ -45,6 +46,7 @@ TEST(ColourCast, DaylightAndClippedWhitesAreLeftAlone) {
   EXPECT_FALSE(warm_cast_gains(lined_floor({0.97, 1.0, 1.03})).has_value());  // faintly warm
   EXPECT_FALSE(warm_cast_gains(cv::Mat(240, 320, CV_8UC3, cv::Scalar::all(0))).has_value());
   EXPECT_FALSE(warm_cast_gains(lined_floor({0.8, 1.0, 1.12}) * 0.2).has_value());  // too dark
+  EXPECT_FALSE(warm_cast_gains(lined_floor({0.6, 1.0, 1.12})).has_value());  // sand, not a lamp
   cv::Mat clipped = lined_floor({0.8, 1.0, 1.12});
   clipped.setTo(cv::Scalar::all(255), clipped > 200);  // the lines' red and green burnt out
   EXPECT_FALSE(warm_cast_gains(clipped).has_value());
@@ -65,6 +67,11 @@ TEST(ColourCast, TheCorrectedTableClassifiesTheCorrectedColour) {
         differing += corrected.classify(p) != table.classify(p);
       }
   EXPECT_GT(differing, 0);  // the cast moves some colours into or out of the ball classes
+}
+
+TEST(ColourCast, AnImageThatIsNotColourIsAnError) {
+  EXPECT_THROW(warm_cast_gains(cv::Mat(240, 320, CV_8UC1, cv::Scalar(200))), InputError);
+  EXPECT_THROW(warm_cast_gains(cv::Mat()), InputError);
 }
 
 // A camera's frames: the table follows each frame's cast, and is the model's own in daylight.

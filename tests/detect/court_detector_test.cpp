@@ -94,7 +94,11 @@ TEST(CourtDetector, FindsAWornBallInAHardShadow) {
   for (int i = 0; i < 4; ++i) {
     const Vec2 center(150.3 + 97.1 * i, 120.6 + 61.7 * i);
     SCOPED_TRACE("ball at " + std::to_string(center.x()) + ", " + std::to_string(center.y()));
-    const cv::Mat shaded = test::draw_discs({{center, r, worn}}, 2.0, i) * 0.25;
+    cv::Mat shaded = test::draw_discs({{center, r, worn}}) * 0.25;
+    cv::Mat noise(shaded.size(), CV_16SC3);
+    cv::theRNG().state = static_cast<std::uint64_t>(i + 1);
+    cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(2));  // sensor noise after the shade
+    cv::add(shaded, noise, shaded, cv::noArray(), CV_8UC3);
     const auto found = balls_only(detector.detect(shaded));
     ASSERT_EQ(found.size(), 1u);
     EXPECT_LT((found[0].center_px - center).norm(), 0.3);
@@ -199,6 +203,7 @@ SimulatedCourtResult detect_on_simulated_court(const sim::CourtScenarioOptions& 
 // are not near a true ball.
 TEST(CourtDetector, FindsTheSimulatedBalls) {
   const SimulatedCourtResult result = detect_on_simulated_court({});
+  ASSERT_GT(result.visible, 0);
   EXPECT_EQ(result.found, result.visible);
   EXPECT_LT(result.median_error_px, 0.15);
   EXPECT_LT(result.unmatched, result.detections * 3 / 100);
@@ -212,6 +217,7 @@ TEST(CourtDetector, FindsTheSimulatedBallsUnderAHallsWarmLamps) {
   sim::CourtScenarioOptions options;
   options.light = sim::LightCondition::indoor;
   const SimulatedCourtResult result = detect_on_simulated_court(options);
+  ASSERT_GT(result.visible, 0);
   EXPECT_GE(result.found, result.visible * 99 / 100);
   EXPECT_LT(result.median_error_px, 0.15);
   EXPECT_LT(result.unmatched, result.detections * 3 / 100);

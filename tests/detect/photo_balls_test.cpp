@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <opencv2/imgproc.hpp>
 #include <random>
 #include <string>
@@ -178,18 +179,28 @@ TEST(PhotoBalls, IgnoresASmallLeafInLeafLitter) {
 }
 
 // A flat scrap of a ball's yellow on the court (a wrapper, seen from far: 10 px long, its top
-// lit, its lower edge in its own shade): its brightest part fits a small circle, but a tiny
-// ball's blob does not reach 4 px beyond its disc. The ball of that size beside it is found.
+// lit, its lower edge in its own shade), lying at any angle: its brightest part fits a small
+// circle, but a tiny ball's blob is not 4 px longer than its disc. The ball of that size beside
+// it is found.
 TEST(PhotoBalls, IgnoresAFlatScrapOfABallsColour) {
-  cv::Mat image = court({200, 100});
-  const std::vector<cv::Point> scrap{{45, 52}, {51, 46}, {56, 52}};
-  cv::fillConvexPoly(image, scrap, cv::Scalar(40, 200, 175), cv::LINE_AA);
-  cv::fillConvexPoly(image, std::vector<cv::Point>{{47, 51}, {51, 47}, {54, 51}},
-                     cv::Scalar(45, 245, 220), cv::LINE_AA);
-  const DrawnBall ball{Vec2(150.3, 50.4), 2.5};
-  draw_ball(image, ball);
-  PhotoBallDetector detector;
-  expect_found(detector.detect(image), {ball});
+  for (const double angle_deg : {0.0, 45.0, 100.0}) {
+    SCOPED_TRACE("scrap at " + std::to_string(angle_deg) + " deg");
+    cv::Mat image = court({200, 100});
+    const double a = angle_deg * std::numbers::pi / 180.0;
+    const auto at = [&](double along, double across) {  // around (50, 50), turned by the angle
+      return cv::Point(
+          static_cast<int>(std::lround(50 + along * std::cos(a) - across * std::sin(a))),
+          static_cast<int>(std::lround(50 + along * std::sin(a) + across * std::cos(a))));
+    };
+    cv::fillConvexPoly(image, std::vector<cv::Point>{at(-5, 1.5), at(0, -2.5), at(5, 1.5)},
+                       cv::Scalar(40, 200, 175), cv::LINE_AA);
+    cv::fillConvexPoly(image, std::vector<cv::Point>{at(-3, 1), at(0, -2), at(3, 1)},
+                       cv::Scalar(45, 245, 220), cv::LINE_AA);
+    const DrawnBall ball{Vec2(150.3, 50.4), 2.5};
+    draw_ball(image, ball);
+    PhotoBallDetector detector;
+    expect_found(detector.detect(image), {ball});
+  }
 }
 
 TEST(PhotoBalls, GivesTheWholeCircleOfABallCutByTheBorder) {

@@ -20,8 +20,9 @@ namespace ballsight {
 /// The gains (B, G, R) that make the brightest near-neutral pixels of `bgr` (8-bit BGR) grey,
 /// when they show a warm cast (red above blue by 10 % to 60 %); nullopt when they do not, when
 /// too few pixels qualify (clipped highlights, nothing near-neutral) or when the brightest are
-/// too dark for white. The gains come in steps of 1/64 (one lamp, one set of gains). Throws
-/// InputError for an image that is not 8-bit BGR.
+/// too dark for white. The gains come in steps of 1/64 (one lamp, one set of gains). An image
+/// under about 200 x 200 pixels holds too few samples and is not corrected. Throws InputError
+/// for an image that is not 8-bit BGR.
 std::optional<cv::Vec3d> warm_cast_gains(const cv::Mat& bgr);
 
 /// The table that classifies a pixel of a photo under the cast as `table` classifies the centre

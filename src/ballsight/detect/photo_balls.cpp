@@ -28,10 +28,10 @@ namespace {
 constexpr double kMinSeedShare = 0.3;
 constexpr double kMinBoxFill = 0.15;
 // A tiny ball's blob is its disc and rim. A blob with one circle of at most kMaxLoneRadiusPx
-// that reaches more than kMaxLoneOverhangPx beyond the circle's diameter (2 px a side: the
-// antialiased rim, and the JPEG's chroma at half resolution) is a flat scrap of a ball's colour,
-// a wrapper or a leaf, not a ball (on the real photos: a yellow scrap on the court, 9-11 px
-// long, whose brightest part fits a circle of 2.3-2.8 px).
+// that is longer, at any angle, than the circle's diameter and kMaxLoneOverhangPx (2 px a side:
+// the antialiased rim, and the JPEG's chroma at half resolution) is a flat scrap of a ball's
+// colour, a wrapper or a leaf, not a ball (on the real photos: a yellow scrap on the court, 9-11
+// px long, whose brightest part fits a circle of 2.3-2.8 px).
 constexpr double kMaxLoneRadiusPx = 4.0;
 constexpr double kMaxLoneOverhangPx = 4.0;
 constexpr double kMinBlobSeedShare = 0.15;
@@ -237,6 +237,22 @@ bool stands_apart(const cv::Mat& bgr, const ColorClassTable& table, const PhotoB
   return seeds + (specks ? alike : 0) <= kMaxWideShare * count;
 }
 
+// A blob's length in pixels at whatever angle it lies: the largest distance between two of its
+// pixels' centres, plus one (a row of n pixels is n long). For a blob larger than a few tiny
+// balls, the longer side of its box (a lower bound, and long enough).
+double blob_length(const GrownBlob& blob, int cols) {
+  const int box = std::max(blob.bbox.width, blob.bbox.height);
+  if (box > 4 * kMaxLoneRadiusPx) return box;
+  int farthest = 0;  // squared
+  for (std::size_t i = 0; i < blob.pixels.size(); ++i)
+    for (std::size_t j = i + 1; j < blob.pixels.size(); ++j) {
+      const int dx = blob.pixels[i] % cols - blob.pixels[j] % cols;
+      const int dy = blob.pixels[i] / cols - blob.pixels[j] / cols;
+      farthest = std::max(farthest, dx * dx + dy * dy);
+    }
+  return std::sqrt(farthest) + 1.0;
+}
+
 }  // namespace
 
 PhotoBallDetector::PhotoBallDetector(const PhotoBallOptions& options)
@@ -392,9 +408,8 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
     explained += std::numbers::pi * ball.radius_px * ball.radius_px;
   if (explained < kFloorMaxExplained * area) floor();
   if (balls.empty()) return;
-  const int blob_length = std::max(band.blob.bbox.width, band.blob.bbox.height);
   if (balls.size() == 1 && balls[0].radius_px <= kMaxLoneRadiusPx &&
-      blob_length > 2.0 * balls[0].radius_px + kMaxLoneOverhangPx)
+      blob_length(band.blob, bgr.cols) > 2.0 * balls[0].radius_px + kMaxLoneOverhangPx)
     return;  // a flat scrap, not a ball
   // Whether the blob's balls are a clump is judged by them alone, not by the circles dropped.
   const bool clump = is_clump(blob, balls);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -62,7 +63,7 @@ std::vector<Vec2> missed_pixels(const std::vector<sim::SphereTruth>& truth,
   for (const BallMistake& mistake : mistakes) {
     if (mistake.kind != BallMistake::Kind::missed) continue;
     const sim::SphereTruth* nearest = nullptr;
-    double best = INFINITY;
+    double best = std::numeric_limits<double>::infinity();
     for (const sim::SphereTruth& t : truth) {
       const double d = (t.sphere.center_in_field.head<2>() - mistake.position_m).norm();
       if (t.sphere.kind == sim::ObjectKind::tennis_ball && d < best) {

@@ -15,10 +15,6 @@ cv::Point to_point(const Vec2& p) {
   return {static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
 }
 
-}  // namespace
-
-namespace {
-
 const cv::Scalar kMistakeColour(200, 0, 200);  // magenta
 
 }  // namespace
