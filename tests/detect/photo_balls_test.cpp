@@ -147,16 +147,22 @@ TEST(PhotoBalls, FindsBallsInAShadowOnAFloorOfABallsColour) {
 // yellow's growth band, into the wide ring of every small ball. Those pixels are the smooth floor
 // the balls lie on, not a field of leaves. (A ball's antialiased rim, half ball and half floor, is
 // of a growth colour here: its blob and radius take in a pixel more than on a blue court.)
+// Without the wall nothing white is in view: the floor's own colour is read as a lamp's cast
+// and corrected, and the balls are found as well.
 TEST(PhotoBalls, FindsSmallBallsOnASmoothFloorOfTheirHueFamily) {
   const std::vector<DrawnBall> balls{{Vec2(60.3, 60.2), 2.5},
                                      {Vec2(150.2, 90.7), 3.0},
                                      {Vec2(250.5, 170.5), 3.5},
                                      {Vec2(100.5, 180.5), 6.0}};
-  cv::Mat image = court({320, 240}, 1, cv::Scalar(113, 133, 140));
-  image(cv::Rect(0, 0, 320, 10)).setTo(cv::Scalar::all(235));  // a white wall: daylight, no cast
-  for (const DrawnBall& b : balls) draw_ball(image, b);
-  PhotoBallDetector detector;
-  expect_found(detector.detect(image), balls, 1.2);
+  for (const bool wall : {true, false}) {
+    SCOPED_TRACE(wall ? "a white wall in view" : "no white in view");
+    cv::Mat image = court({320, 240}, 1, cv::Scalar(113, 133, 140));
+    if (wall) image(cv::Rect(0, 0, 320, 10)).setTo(cv::Scalar::all(235));
+    for (const DrawnBall& b : balls) draw_ball(image, b);
+    EXPECT_EQ(warm_cast_gains(image).has_value(), !wall);
+    PhotoBallDetector detector;
+    expect_found(detector.detect(image), balls, 1.2);
+  }
 }
 
 // A small leaf of a ball's colour in leaf litter (dull yellow-green leaves of a growth colour,
