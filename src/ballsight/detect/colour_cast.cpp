@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/detect/hue_classes.hpp"
 
 namespace ballsight {
 
@@ -43,8 +44,7 @@ std::optional<cv::Vec3d> warm_cast_gains(const cv::Mat& bgr) {
   // photo, whose brightest share is burnt-out sky and white, from reading its sunlit ground for
   // white: on the real photos, two more false balls otherwise.)
   const auto candidate = [](const cv::Vec3b& p) {
-    const int hi = largest_channel(p), lo = std::min({p[0], p[1], p[2]});
-    return hi < kClipped && hi - lo <= kMaxSaturation * hi;
+    return largest_channel(p) < kClipped && saturation(p) <= kMaxSaturation;
   };
   // Every kMinStep-th row; in the k-th of them every column_step-th pixel from column k (a
   // skewed lattice: a thin line at any angle crosses sampled pixels).

@@ -32,6 +32,11 @@ double hue_deg(const cv::Vec3b& bgr) {
   return hue < 0.0 ? hue + 360.0 : hue;
 }
 
+double saturation(const cv::Vec3b& bgr) {
+  const int hi = std::max({bgr[0], bgr[1], bgr[2]}), lo = std::min({bgr[0], bgr[1], bgr[2]});
+  return hi > 0 ? static_cast<double>(hi - lo) / hi : 0.0;
+}
+
 bool HueBand::contains(const cv::Vec3b& bgr) const {
   const int hi = std::max({bgr[0], bgr[1], bgr[2]}), lo = std::min({bgr[0], bgr[1], bgr[2]});
   if (hi - lo < min_chroma || hi == lo || hi < min_value) return false;

@@ -28,6 +28,9 @@ struct HueBand {
 /// Hue of a colour, degrees in [0, 360) (0 for greys).
 double hue_deg(const cv::Vec3b& bgr);
 
+/// Saturation of a colour: chroma / max of B, G, R, in [0, 1] (0 for black).
+double saturation(const cv::Vec3b& bgr);
+
 struct HueClassRule {
   ColorClassMask mask = 0;
   HueBand band;

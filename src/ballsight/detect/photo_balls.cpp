@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/detect/hue_classes.hpp"
 
 namespace ballsight {
 
@@ -115,11 +116,6 @@ bool of_hue_family(const cv::Vec3b& p, double ball_hue_deg) {
   return std::abs(std::remainder(hue_deg(p) - ball_hue_deg, 360.0)) <= kAlikeHueDeg;
 }
 
-double saturation_of(const cv::Vec3b& p) {
-  const int hi = std::max({p[0], p[1], p[2]}), lo = std::min({p[0], p[1], p[2]});
-  return hi > 0 ? static_cast<double>(hi - lo) / hi : 0.0;
-}
-
 // `table` classifies the image's pixels (the floor's colours taken out, a warm cast corrected),
 // `model` is the colour model's own table: a ring pixel of a ball colour the photo's table does
 // not class so is floor (or floor and lines under a warm lamp), which a ball stands out from
@@ -155,7 +151,7 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table,
         if (is_ball_seed(table, row[x])) {
           ++seeds;
           const double h = hue_deg(row[x]) * std::numbers::pi / 180.0;
-          hue_sum += saturation_of(row[x]) * Vec2(std::cos(h), std::sin(h));
+          hue_sum += saturation(row[x]) * Vec2(std::cos(h), std::sin(h));
         }
       } else if (d >= ring_in && d <= ring_out) {
         ring.push_back(row[x]);
@@ -172,7 +168,7 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table,
   for (const cv::Vec3b& p : ring) {
     const bool floor =
         (model.classify(p) & kBallGrowClass) != 0 && (table.classify(p) & kBallGrowClass) == 0;
-    alike += saturation_of(p) >= kAlikeSaturation && of_hue_family(p, mean_hue) && !floor;
+    alike += saturation(p) >= kAlikeSaturation && of_hue_family(p, mean_hue) && !floor;
   }
   look.ring_alike =
       ring.empty() ? 0.0 : static_cast<double>(alike) / static_cast<double>(ring.size());
