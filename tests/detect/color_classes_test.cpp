@@ -6,6 +6,7 @@
 #include <random>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/detect/blob_growth.hpp"
 
 namespace ballsight {
 namespace {
@@ -58,6 +59,37 @@ TEST(ColorClassTable, RejectsInvalidRanges) {
   EXPECT_THROW(ColorClassTable({{1, YuvRange{{0, 0, 0}, {300, 255, 255}}}}), InputError);
   EXPECT_THROW(ColorClassTable({{1, YuvRange{{10, 0, 0}, {5, 255, 255}}}}), InputError);
   EXPECT_THROW(segment(cv::Mat1b(4, 4), ColorClassTable({}), 1), InputError);
+}
+
+TEST(ColorClassTable, GrowingOnTheClassImageIsGrowingThroughTheTable) {
+  // Blocks of random colours, so that regions of a class are of many shapes and sizes.
+  std::mt19937 rng(kSeed);
+  std::uniform_int_distribution<int> byte(0, 255);
+  cv::Mat small(24, 32, CV_8UC3), bgr;
+  for (int i = 0; i < small.rows * small.cols; ++i)
+    small.at<cv::Vec3b>(i) = cv::Vec3b(static_cast<uchar>(byte(rng)), static_cast<uchar>(byte(rng)),
+                                       static_cast<uchar>(byte(rng)));
+  cv::resize(small, bgr, {}, 5, 5, cv::INTER_NEAREST);
+  const ColorClassTable table({{1, kOrange}, {2, YuvRange{{0, 0, 0}, {255, 128, 255}}}});
+  cv::Mat1b classes(bgr.size());
+  classify_rows(bgr, table, cv::Range(0, bgr.rows / 2), classes);
+  classify_rows(bgr, table, cv::Range(bgr.rows / 2, bgr.rows), classes);
+  BlobGrowthBuffers through_table, through_classes;
+  through_table.reset(static_cast<int>(bgr.total()));
+  through_classes.reset(static_cast<int>(bgr.total()));
+  GrownBlob a, b;
+  int blobs = 0;
+  for (int seed = 0; seed < static_cast<int>(bgr.total()); ++seed) {
+    for (const ColorClassMask mask : {ColorClassMask{1}, ColorClassMask{3}}) {
+      const bool grown = grow_blob(bgr, table, mask, seed, through_table, a);
+      ASSERT_EQ(grow_blob(classes, mask, seed, through_classes, b), grown) << "seed " << seed;
+      if (!grown) continue;
+      ++blobs;
+      EXPECT_EQ(a.pixels, b.pixels);
+      EXPECT_EQ(a.bbox, b.bbox);
+    }
+  }
+  EXPECT_GT(blobs, 20);
 }
 
 }  // namespace

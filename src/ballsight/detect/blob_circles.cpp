@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
 
@@ -11,6 +12,18 @@ namespace ballsight {
 namespace {
 
 constexpr int kMaxCirclesPerBlob = 16;
+
+// Squared distances are compared with this relative margin before a square root settles the few
+// near a bound, so that every test gives what the distance itself would.
+constexpr double kSquareMargin = 1e-9;
+
+// Whether d.norm() < limit (limit > 0).
+bool shorter_than(const Vec2& d, double limit) {
+  const double squared = d.squaredNorm(), bound = limit * limit;
+  if (squared < bound * (1.0 - kSquareMargin)) return true;
+  if (squared > bound * (1.0 + kSquareMargin)) return false;
+  return d.norm() < limit;
+}
 
 // Local maxima of the distance transform (image coordinates), largest first.
 std::vector<BlobCircle> distance_maxima(const cv::Mat1f& distance, const BlobMask& blob,
@@ -59,18 +72,27 @@ std::vector<BlobCircle> propose(const std::vector<BlobCircle>& maxima,
 std::vector<Vec2> outline(const BlobMask& blob) {
   static constexpr int kStep[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   const cv::Mat1b& mask = blob.mask;
+  // A neighbour (nx, ny) of the mask lies in the image when min_x <= nx <= max_x and the same in
+  // y (image pixel origin + (nx, ny), its centre within half a pixel of the image).
+  const auto min_x = static_cast<int>(std::ceil(-0.5 - blob.origin.x()));
+  const auto max_x = static_cast<int>(std::floor(blob.image_size.width - 0.5 - blob.origin.x()));
+  const auto min_y = static_cast<int>(std::ceil(-0.5 - blob.origin.y()));
+  const auto max_y = static_cast<int>(std::floor(blob.image_size.height - 0.5 - blob.origin.y()));
   std::vector<Vec2> points;
   for (int y = 0; y < mask.rows; ++y) {
+    const std::uint8_t* row = mask.ptr<std::uint8_t>(y);
+    const std::uint8_t* above = y > 0 ? mask.ptr<std::uint8_t>(y - 1) : nullptr;
+    const std::uint8_t* below = y + 1 < mask.rows ? mask.ptr<std::uint8_t>(y + 1) : nullptr;
     for (int x = 0; x < mask.cols; ++x) {
-      if (!mask(y, x)) continue;
-      for (const auto& step : kStep) {
-        const int nx = x + step[0], ny = y + step[1];
-        const Vec2 outside = blob.to_image(nx, ny);
-        if (outside.x() < -0.5 || outside.y() < -0.5 || outside.x() > blob.image_size.width - 0.5 ||
-            outside.y() > blob.image_size.height - 0.5)
-          continue;
-        if (nx >= 0 && ny >= 0 && nx < mask.cols && ny < mask.rows && mask(ny, nx)) continue;
-        points.push_back(blob.to_image(x + 0.5 * step[0], y + 0.5 * step[1]));
+      if (!row[x]) continue;
+      // In kStep's order: whether that neighbour is in the blob.
+      const bool inside[4] = {x + 1 < mask.cols && row[x + 1], x > 0 && row[x - 1],
+                              below && below[x], above && above[x]};
+      if (inside[0] && inside[1] && inside[2] && inside[3]) continue;
+      for (int k = 0; k < 4; ++k) {
+        const int nx = x + kStep[k][0], ny = y + kStep[k][1];
+        if (inside[k] || nx < min_x || ny < min_y || nx > max_x || ny > max_y) continue;
+        points.push_back(blob.to_image(x + 0.5 * kStep[k][0], y + 0.5 * kStep[k][1]));
       }
     }
   }
@@ -124,17 +146,28 @@ double tolerance(double radius, bool first) {
   return first ? std::max(1.5, 0.25 * radius) : std::max(1.0, 0.12 * radius);
 }
 
-// The outline points nearest each circle (within its tolerance).
+// The outline points nearest each circle (within its tolerance). A point outside a circle's
+// annulus of squared distances is passed over without a square root.
 std::vector<std::vector<Vec2>> assign(const std::vector<Vec2>& points,
                                       const std::vector<BlobCircle>& circles, bool first) {
+  struct Annulus {
+    double tolerance, min_squared, max_squared;
+  };
+  std::vector<Annulus> annuli;
+  for (const BlobCircle& circle : circles) {
+    const double r = circle.radius_px, t = tolerance(r, first), inner = std::max(0.0, r - t);
+    annuli.push_back(
+        {t, inner * inner * (1.0 - kSquareMargin), (r + t) * (r + t) * (1.0 + kSquareMargin)});
+  }
   std::vector<std::vector<Vec2>> parts(circles.size());
   for (const Vec2& p : points) {
     std::size_t best = circles.size();
     double best_residual = 0.0;
     for (std::size_t k = 0; k < circles.size(); ++k) {
-      const double residual = std::abs((p - circles[k].center_px).norm() - circles[k].radius_px);
-      if (residual <= tolerance(circles[k].radius_px, first) &&
-          (best == circles.size() || residual < best_residual))
+      const double squared = (p - circles[k].center_px).squaredNorm();
+      if (squared < annuli[k].min_squared || squared > annuli[k].max_squared) continue;
+      const double residual = std::abs(std::sqrt(squared) - circles[k].radius_px);
+      if (residual <= annuli[k].tolerance && (best == circles.size() || residual < best_residual))
         best = k, best_residual = residual;
     }
     if (best < circles.size()) parts[best].push_back(p);
@@ -172,7 +205,8 @@ void refine(const std::vector<Vec2>& points, std::vector<BlobCircle>& circles) {
 bool inside_other(const std::vector<BlobCircle>& circles, std::size_t self, const Vec2& q,
                   double margin) {
   for (std::size_t j = 0; j < circles.size(); ++j)
-    if (j != self && (q - circles[j].center_px).norm() < circles[j].radius_px + margin) return true;
+    if (j != self && shorter_than(q - circles[j].center_px, circles[j].radius_px + margin))
+      return true;
   return false;
 }
 

@@ -5,14 +5,15 @@
 
 namespace ballsight {
 
-bool grow_blob(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask, int seed,
-               BlobGrowthBuffers& buffers, GrownBlob& blob) {
-  assert(bgr.type() == CV_8UC3 && bgr.isContinuous());
-  assert(buffers.visited.size() == bgr.total());
-  const auto* pixels = bgr.ptr<cv::Vec3b>(0);
+namespace {
+
+// Grows from `seed` through the pixels for which in(index) holds, over an image of width x
+// height.
+template <class In>
+bool grow(int width, int height, In in, int seed, BlobGrowthBuffers& buffers, GrownBlob& blob) {
+  assert(buffers.visited.size() == static_cast<std::size_t>(width) * height);
   auto& visited = buffers.visited;
-  if (visited[static_cast<size_t>(seed)] || !(table.classify(pixels[seed]) & mask)) return false;
-  const int width = bgr.cols, height = bgr.rows;
+  if (visited[static_cast<size_t>(seed)] || !in(seed)) return false;
   blob.pixels.clear();
   buffers.stack.assign(1, seed);
   visited[static_cast<size_t>(seed)] = 1;
@@ -28,13 +29,33 @@ bool grow_blob(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask 
     for (const auto& [nx, ny] : neighbours) {
       if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
       const int n = ny * width + nx;
-      if (visited[static_cast<size_t>(n)] || !(table.classify(pixels[n]) & mask)) continue;
+      if (visited[static_cast<size_t>(n)] || !in(n)) continue;
       visited[static_cast<size_t>(n)] = 1;
       buffers.stack.push_back(n);
     }
   }
   blob.bbox = cv::Rect(min_x, min_y, max_x - min_x + 1, max_y - min_y + 1);
   return true;
+}
+
+}  // namespace
+
+bool grow_blob(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask, int seed,
+               BlobGrowthBuffers& buffers, GrownBlob& blob) {
+  assert(bgr.type() == CV_8UC3 && bgr.isContinuous());
+  const auto* pixels = bgr.ptr<cv::Vec3b>(0);
+  return grow(
+      bgr.cols, bgr.rows, [&](int index) { return (table.classify(pixels[index]) & mask) != 0; },
+      seed, buffers, blob);
+}
+
+bool grow_blob(const cv::Mat1b& classes, ColorClassMask mask, int seed, BlobGrowthBuffers& buffers,
+               GrownBlob& blob) {
+  assert(classes.isContinuous());
+  const ColorClassMask* of = classes.ptr<ColorClassMask>(0);
+  return grow(
+      classes.cols, classes.rows, [&](int index) { return (of[index] & mask) != 0; }, seed, buffers,
+      blob);
 }
 
 }  // namespace ballsight

@@ -31,4 +31,8 @@ struct BlobGrowthBuffers {
 bool grow_blob(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask, int seed,
                BlobGrowthBuffers& buffers, GrownBlob& blob);
 
+/// The same on a continuous class image (classify_rows) of the whole image.
+bool grow_blob(const cv::Mat1b& classes, ColorClassMask mask, int seed, BlobGrowthBuffers& buffers,
+               GrownBlob& blob);
+
 }  // namespace ballsight

@@ -1,5 +1,6 @@
 #include "ballsight/detect/color_classes.hpp"
 
+#include <cassert>
 #include <opencv2/imgproc.hpp>
 #include <string>
 
@@ -84,14 +85,22 @@ ColorClassTable ColorClassTable::remapped(const ChannelCellMap& map) const {
   return out;
 }
 
+void classify_rows(const cv::Mat& bgr, const ColorClassTable& table, cv::Range rows,
+                   cv::Mat1b& classes) {
+  assert(bgr.type() == CV_8UC3 && classes.size() == bgr.size());
+  for (int y = rows.start; y < rows.end; ++y) {
+    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y);
+    ColorClassMask* out = classes.ptr<ColorClassMask>(y);
+    for (int x = 0; x < bgr.cols; ++x) out[x] = table.classify(in[x]);
+  }
+}
+
 cv::Mat1b segment(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask) {
   require(bgr.type() == CV_8UC3, "segment", "expected an 8-bit BGR image");
-  cv::Mat1b out(bgr.size());
-  for (int y = 0; y < bgr.rows; ++y) {
-    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y);
-    uchar* o = out.ptr<uchar>(y);
-    for (int x = 0; x < bgr.cols; ++x) o[x] = (table.classify(in[x]) & mask) ? 255 : 0;
-  }
+  cv::Mat1b classes(bgr.size());
+  classify_rows(bgr, table, cv::Range(0, bgr.rows), classes);
+  cv::Mat1b out;
+  cv::compare(classes & mask, 0, out, cv::CMP_NE);
   return out;
 }
 

@@ -70,6 +70,12 @@ class ColorClassTable {
   std::vector<ColorClassMask> table_;
 };
 
+/// The classes of the pixels of rows [rows.start, rows.end) of an 8-bit BGR image, into the same
+/// rows of `classes` (of the image's size): a class image read instead of the table where a
+/// detector looks at most pixels, some several times.
+void classify_rows(const cv::Mat& bgr, const ColorClassTable& table, cv::Range rows,
+                   cv::Mat1b& classes);
+
 /// 255 where a BGR pixel belongs to any class in `mask`, 0 elsewhere (whole image).
 cv::Mat1b segment(const cv::Mat& bgr, const ColorClassTable& table, ColorClassMask mask);
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <numbers>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
@@ -304,10 +306,18 @@ void PhotoBallDetector::search(const cv::Mat& bgr) {
       options_.bands > 0 ? options_.bands : std::min(cv::getNumThreads(), bgr.rows / kMinBandRows),
       1, bgr.rows);
   bands_.resize(static_cast<std::size_t>(count));
+  const auto band_rows = [&](int b) {
+    return cv::Range(b * bgr.rows / count, (b + 1) * bgr.rows / count);
+  };
+  // Every band grows over the whole image: all rows are classified before any band is searched.
+  classes_.create(bgr.size());
   cv::parallel_for_(cv::Range(0, count), [&](const cv::Range& range) {
     for (int b = range.start; b < range.end; ++b)
-      scan_band(bgr, b * bgr.rows / count, (b + 1) * bgr.rows / count,
-                bands_[static_cast<std::size_t>(b)]);
+      classify_rows(bgr, active(), band_rows(b), classes_);
+  });
+  cv::parallel_for_(cv::Range(0, count), [&](const cv::Range& range) {
+    for (int b = range.start; b < range.end; ++b)
+      scan_band(bgr, band_rows(b), bands_[static_cast<std::size_t>(b)]);
   });
 }
 
@@ -325,22 +335,26 @@ bool PhotoBallDetector::exclude_floor_colours(const cv::Mat& bgr) {
   return true;
 }
 
-void PhotoBallDetector::scan_band(const cv::Mat& bgr, int first_row, int end_row,
-                                  Band& band) const {
+void PhotoBallDetector::scan_band(const cv::Mat& bgr, cv::Range rows, Band& band) const {
   // Blobs grow beyond the band, so the band marks what it grew over the whole image.
   band.buffers.reset(static_cast<int>(bgr.total()));
   band.found.clear();
   band.floor.clear();
   band.blobs = 0;
-  const auto* pixels = bgr.ptr<cv::Vec3b>(0);
-  const int begin = first_row * bgr.cols, end = end_row * bgr.cols;
-  const ColorClassTable& table = active();
-  const auto is_seed = [&](int index) { return is_ball_seed(table, pixels[index]); };
+  const int begin = rows.start * bgr.cols, end = rows.end * bgr.cols;
+  const ColorClassMask* classes = classes_.ptr<ColorClassMask>(0);
+  const auto is_seed = [&](int index) { return (classes[index] & kBallSeedClass) != 0; };
+  constexpr std::uint64_t kSeedBytes = 0x0101010101010101ULL * kBallSeedClass;
   for (int seed = begin; seed < end; ++seed) {
-    if (band.buffers.visited[static_cast<std::size_t>(seed)] || !is_seed(seed)) continue;
-    grow_blob(bgr, table, kBallGrowClass, seed, band.buffers, band.blob);
+    // Most pixels are of no seed colour: eight at a time.
+    std::uint64_t eight = 0;
+    while (seed + 8 <= end && (std::memcpy(&eight, classes + seed, 8), !(eight & kSeedBytes)))
+      seed += 8;
+    if (seed == end) break;
+    if (!is_seed(seed) || band.buffers.visited[static_cast<std::size_t>(seed)]) continue;
+    grow_blob(classes_, kBallGrowClass, seed, band.buffers, band.blob);
     // A blob with a seed pixel above the band is an earlier band's.
-    if (band.blob.bbox.y < first_row &&
+    if (band.blob.bbox.y < rows.start &&
         std::any_of(band.blob.pixels.begin(), band.blob.pixels.end(),
                     [&](int index) { return index < begin && is_seed(index); }))
       continue;
@@ -366,10 +380,9 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
     return floor();
   // Most of a ball is of a seed colour (kMinSeedShare of its disc); a blob grown mostly through
   // the looser growth colours is shade, foliage or a wall.
-  const ColorClassTable& table = active();
   std::size_t seeds = 0;
-  const auto* pixels = bgr.ptr<cv::Vec3b>(0);
-  for (int index : band.blob.pixels) seeds += is_ball_seed(table, pixels[index]);
+  const ColorClassMask* classes = classes_.ptr<ColorClassMask>(0);
+  for (int index : band.blob.pixels) seeds += (classes[index] & kBallSeedClass) != 0;
   if (static_cast<double>(seeds) < kMinBlobSeedShare * area) return floor();
   constexpr int kMargin = 3;
   const cv::Rect region =
@@ -392,7 +405,7 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   std::vector<BlobCircle> balls;
   std::vector<double> hues;
   for (BlobCircle circle : circles_in_blob(blob, geometry)) {
-    const Appearance look = appearance(bgr, table, table_.model(), circle);
+    const Appearance look = appearance(bgr, active(), table_.model(), circle);
     if (look.seed_share < kMinSeedShare || look.roughness > kMaxRoughness) continue;
     circle.score *= 1.0 - look.ring_alike;
     if (circle.score < options_.circles.min_score) continue;

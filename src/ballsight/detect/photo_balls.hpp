@@ -70,7 +70,7 @@ class PhotoBallDetector {
   // One search of the whole image with the table active(): the balls of every band, and the
   // floor blobs' pixels.
   void search(const cv::Mat& bgr);
-  void scan_band(const cv::Mat& bgr, int first_row, int end_row, Band& band) const;
+  void scan_band(const cv::Mat& bgr, cv::Range rows, Band& band) const;
   void find_circles(const cv::Mat& bgr, Band& band) const;
   // Takes the colours that make up the floor blobs out of the ball classes (into floor_table_,
   // then active); false when there is none to take.
@@ -89,6 +89,7 @@ class PhotoBallDetector {
   bool floor_excluded_ = false;                 // whether the search uses floor_table_
   FloorColours floor_colours_;
   std::vector<Band> bands_;
+  cv::Mat1b classes_;  // the image's pixels classified by active() (search)
 };
 
 }  // namespace ballsight
