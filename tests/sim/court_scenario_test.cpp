@@ -225,7 +225,7 @@ TEST(CourtScenario, IndoorLightIsTopLitWarmAndOnlyWhenAsked) {
   EXPECT_EQ(light_condition_named("indoor"), LightCondition::indoor);
 }
 
-TEST(CourtScenario, SurfacesPaintTheCourtEachItsOwnColour) {
+TEST(CourtScenario, SurfacesPaintTheCourtEachItsOwnColourAndChooseTheReferenceColour) {
   std::set<std::array<uchar, 3>> colours;
   for (const CourtSurface surface : {CourtSurface::green, CourtSurface::blue, CourtSurface::red,
                                      CourtSurface::concrete, CourtSurface::wood}) {
@@ -240,6 +240,17 @@ TEST(CourtScenario, SurfacesPaintTheCourtEachItsOwnColour) {
   TennisCourtSpec green;
   set_court_surface(green, CourtSurface::green);
   EXPECT_EQ(green.court_bgr, TennisCourtSpec().court_bgr);
+  // Orange reference balls but on the floors of orange's hues; the scene draws the court's.
+  TennisCourtSpec red;
+  set_court_surface(red, CourtSurface::red);
+  EXPECT_EQ(red.reference_ball_bgr, kVioletReferenceBgr);
+  set_court_surface(red, CourtSurface::blue);
+  EXPECT_EQ(red.reference_ball_bgr, TennisCourtSpec().reference_ball_bgr);
+  set_court_surface(red, CourtSurface::wood);
+  for (const SceneSphere& ball : make_court_scene(red, {}, 1).balls) {
+    if (ball.kind != ObjectKind::reference_ball) continue;
+    EXPECT_EQ(ball.bgr, kVioletReferenceBgr);
+  }
   EXPECT_FALSE(court_surface_named("grass"));
 }
 

@@ -1,6 +1,8 @@
 #include "ballsight/eval/court_eval_calibration.hpp"
 
+#include <algorithm>
 #include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
 #include <string>
 
 #include "ballsight/calib/chessboard_corners.hpp"
@@ -47,6 +49,14 @@ std::vector<ChessboardView> find_views(const std::vector<cv::Mat>& images, size_
   return views;
 }
 
+// The report's HSV box for reference balls of the site's colour (OpenCV's hue, 0-179).
+HsvRange reference_hsv_box(const Rgb& colour) {
+  cv::Mat3b pixel(1, 1, colour.bgr()), hsv;
+  cv::cvtColor(pixel, hsv, cv::COLOR_BGR2HSV);
+  const int hue = hsv(0, 0)[0];
+  return {{std::max(0, hue - 12), 70, 40}, {std::min(179, hue + 12), 255, 255}};
+}
+
 }  // namespace
 
 CalibrationImages render_calibration_images(const sim::CourtRig& rig, int views, double noise_sigma,
@@ -91,6 +101,8 @@ Site simulated_site(const sim::CourtRig& rig) {
   const std::vector<Vec3> references = sim::reference_ball_positions(rig.court);
   for (size_t i = 0; i < references.size(); ++i)
     site.reference_balls.push_back({"reference " + std::to_string(i), references[i].head<2>()});
+  const cv::Vec3b reference = rig.court.reference_ball_bgr;
+  site.colours.reference_ball = {reference[2], reference[1], reference[0]};
   for (size_t c = 0; c < rig.cameras.size(); ++c) {
     // The pole's corner, from the camera's side of the court (its rough place on the site plan).
     const Vec3 center = rig.cameras[c].center_in_field();
@@ -123,10 +135,11 @@ EvalCalibration calibrate_ballsight_cameras(const CalibrationImages& images, con
 }
 
 EvalCalibration calibrate_seed_cameras(const CalibrationImages& images, const Site& site) {
-  // The report's reference balls are orange table-tennis balls (hue about 10 of 180); no median
-  // filter: it would erase balls of one or two pixels in radius. Saturation from 70: the balls
-  // are small, their pixels mixed with the court.
-  const HsvRange orange{{0, 70, 40}, {22, 255, 255}};
+  // The report's reference balls are orange table-tennis balls (hue about 10 of 180): its box
+  // is the site's colour's hue +-12 (0-22 for orange); no median filter: it would erase balls
+  // of one or two pixels in radius. Saturation from 70: the balls are small, their pixels mixed
+  // with the court.
+  const HsvRange box = reference_hsv_box(site.colours.reference_ball);
   const std::vector<ReferencePoint> references = site_references(site);
   EvalCalibration out;
   for (size_t c = 0; c < images.chessboards.size(); ++c) {
@@ -146,7 +159,7 @@ EvalCalibration calibrate_seed_cameras(const CalibrationImages& images, const Si
 
     std::vector<Vec2> candidates;
     for (const PixelDetection& d :
-         detect_seed_colour(images.reference_views[c], orange, 1, ObjectClass::ball))
+         detect_seed_colour(images.reference_views[c], box, 1, ObjectClass::ball))
       candidates.push_back(d.center_px);
     ReferencePose matched;
     try {
@@ -155,7 +168,8 @@ EvalCalibration calibrate_seed_cameras(const CalibrationImages& images, const Si
     } catch (const InputError& e) {
       throw InputError("seed calibration, camera " + std::to_string(c) + " (fx " +
                        std::to_string(camera.params().fx) + ", " +
-                       std::to_string(candidates.size()) + " orange blobs): " + e.what());
+                       std::to_string(candidates.size()) +
+                       " blobs of the reference colour): " + e.what());
     }
     std::vector<cv::Point3d> points;
     std::vector<cv::Point2d> pixels;

@@ -197,7 +197,7 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
   Placement placement(scene.robot, net);
   for (size_t i = 0; i < references.size(); ++i) {
     scene.balls.push_back({ObjectKind::reference_ball, static_cast<int>(i), references[i],
-                           kReferenceBallRadiusM, kReferenceBallBgr});
+                           kReferenceBallRadiusM, court.reference_ball_bgr});
     placement.add(scene.balls.back());
   }
 

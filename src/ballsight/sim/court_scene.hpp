@@ -23,8 +23,7 @@ std::string_view object_kind_name(ObjectKind kind);
 
 inline constexpr double kTennisBallRadiusM = 0.0335;
 inline constexpr double kReferenceBallRadiusM = 0.02;
-inline const cv::Vec3b kTennisBallBgr{45, 250, 225};     // fluorescent yellow
-inline const cv::Vec3b kReferenceBallBgr{20, 100, 255};  // orange table-tennis ball
+inline const cv::Vec3b kTennisBallBgr{45, 250, 225};  // fluorescent yellow
 
 /// A sphere in the scene; `id` numbers the objects of one kind from 0.
 struct SceneSphere {

@@ -48,6 +48,9 @@ std::optional<CourtSurface> court_surface_named(std::string_view name) {
 
 void set_court_surface(TennisCourtSpec& court, CourtSurface surface) {
   const TennisCourtSpec plain;
+  court.reference_ball_bgr = surface == CourtSurface::red || surface == CourtSurface::wood
+                                 ? kVioletReferenceBgr
+                                 : plain.reference_ball_bgr;
   switch (surface) {
     case CourtSurface::green:
       court.court_bgr = plain.court_bgr, court.surround_bgr = plain.surround_bgr;

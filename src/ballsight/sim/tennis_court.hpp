@@ -56,6 +56,9 @@ struct TennisCourtSpec {
   cv::Vec3b surround_bgr{80, 92, 52};   // darker teal-green run-off
   cv::Vec3b ground_bgr{128, 134, 138};  // neutral ground beyond the run-off
   cv::Vec3b line_bgr{238, 240, 240};    // white lines
+  // The reference balls the cameras are posed from: orange table-tennis balls (the report's),
+  // violet ones where orange does not stand out (set_court_surface).
+  cv::Vec3b reference_ball_bgr{20, 100, 255};
   NetSpec net;
 
   /// Throws InputError naming the first invalid field.
@@ -74,12 +77,16 @@ struct TennisCourtSpec {
 /// wooden floor (a darker wood around it).
 enum class CourtSurface { green, blue, red, concrete, wood };
 
+inline const cv::Vec3b kVioletReferenceBgr{230, 40, 140};  // hue 272 degrees
+
 /// "green", "blue", "red", "concrete", "wood".
 std::string_view court_surface_name(CourtSurface surface);
 /// The surface of that name, or nullopt.
 std::optional<CourtSurface> court_surface_named(std::string_view name);
 /// Paints the court and its run-off with `surface` (albedo; the lines stay white). Green is the
-/// simulator's default court.
+/// simulator's default court. On a red or wooden court the reference balls are violet
+/// (kVioletReferenceBgr): orange lies within those floors' hues, and violet stands 50 degrees of
+/// hue from both robot markers (pink 326, blue 224) and the run-off's teal (162).
 void set_court_surface(TennisCourtSpec& court, CourtSurface surface);
 
 /// Albedo of the floor at `p_in_field`, box-filtered over a footprint of half-sizes
