@@ -74,6 +74,10 @@ TEST(ColorClassTable, GrowingOnTheClassImageIsGrowingThroughTheTable) {
   cv::Mat1b classes(bgr.size());
   classify_rows(bgr, table, cv::Range(0, bgr.rows / 2), classes);
   classify_rows(bgr, table, cv::Range(bgr.rows / 2, bgr.rows), classes);
+  int mismatched = 0;
+  for (int i = 0; i < static_cast<int>(bgr.total()); ++i)
+    mismatched += classes(i) != table.classify(bgr.at<cv::Vec3b>(i));
+  EXPECT_EQ(mismatched, 0);
   BlobGrowthBuffers through_table, through_classes;
   through_table.reset(static_cast<int>(bgr.total()));
   through_classes.reset(static_cast<int>(bgr.total()));

@@ -155,9 +155,11 @@ std::vector<std::vector<Vec2>> assign(const std::vector<Vec2>& points,
   };
   std::vector<Annulus> annuli;
   for (const BlobCircle& circle : circles) {
-    const double r = circle.radius_px, t = tolerance(r, first), inner = std::max(0.0, r - t);
-    annuli.push_back(
-        {t, inner * inner * (1.0 - kSquareMargin), (r + t) * (r + t) * (1.0 + kSquareMargin)});
+    // The margins are relative to the circle's size, not to the inner bound (near 0 when the
+    // tolerance is near the radius).
+    const double r = circle.radius_px, t = tolerance(r, first),
+                 inner = std::max(0.0, r - t - kSquareMargin * (r + t)), outer = r + t;
+    annuli.push_back({t, inner * inner, outer * outer * (1.0 + kSquareMargin)});
   }
   std::vector<std::vector<Vec2>> parts(circles.size());
   for (const Vec2& p : points) {

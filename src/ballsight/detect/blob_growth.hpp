@@ -1,7 +1,9 @@
 #pragma once
 // Region growing through a colour-class table: from one seed pixel, the 4-connected pixels whose
-// class is in a mask. Only the pixels of the region and its border are ever classified, which is
-// what lets a detector look at a sparse grid of seeds instead of the whole image.
+// class is in a mask. Through the table, only the pixels of the region and its border are ever
+// classified, which is what lets a detector look at a sparse grid of seeds instead of the whole
+// image (the court detector, the omni blobs); through a class image of the whole image
+// (classify_rows), no pixel is classified twice (the photo detector, which looks at every pixel).
 
 #include <cstdint>
 #include <opencv2/core.hpp>

@@ -49,14 +49,6 @@ std::vector<ChessboardView> find_views(const std::vector<cv::Mat>& images, size_
   return views;
 }
 
-// The report's HSV box for reference balls of the site's colour (OpenCV's hue, 0-179).
-HsvRange reference_hsv_box(const Rgb& colour) {
-  cv::Mat3b pixel(1, 1, colour.bgr()), hsv;
-  cv::cvtColor(pixel, hsv, cv::COLOR_BGR2HSV);
-  const int hue = hsv(0, 0)[0];
-  return {{std::max(0, hue - 12), 70, 40}, {std::min(179, hue + 12), 255, 255}};
-}
-
 }  // namespace
 
 CalibrationImages render_calibration_images(const sim::CourtRig& rig, int views, double noise_sigma,
@@ -116,6 +108,13 @@ Site simulated_site(const sim::CourtRig& rig) {
   return site;
 }
 
+HsvRange report_reference_box(const Rgb& colour) {
+  cv::Mat3b pixel(1, 1, colour.bgr()), hsv;
+  cv::cvtColor(pixel, hsv, cv::COLOR_BGR2HSV);
+  const int hue = hsv(0, 0)[0];
+  return {{std::max(0, hue - 12), 70, 40}, {std::min(179, hue + 12), 255, 255}};
+}
+
 EvalCalibration calibrate_ballsight_cameras(const CalibrationImages& images, const Site& site) {
   EvalCalibration out;
   for (size_t c = 0; c < images.chessboards.size(); ++c) {
@@ -135,11 +134,10 @@ EvalCalibration calibrate_ballsight_cameras(const CalibrationImages& images, con
 }
 
 EvalCalibration calibrate_seed_cameras(const CalibrationImages& images, const Site& site) {
-  // The report's reference balls are orange table-tennis balls (hue about 10 of 180): its box
-  // is the site's colour's hue +-12 (0-22 for orange); no median filter: it would erase balls
-  // of one or two pixels in radius. Saturation from 70: the balls are small, their pixels mixed
-  // with the court.
-  const HsvRange box = reference_hsv_box(site.colours.reference_ball);
+  // The report's reference balls are orange table-tennis balls (report_reference_box); no median
+  // filter: it would erase balls of one or two pixels in radius. Saturation from 70: the balls
+  // are small, their pixels mixed with the court.
+  const HsvRange box = report_reference_box(site.colours.reference_ball);
   const std::vector<ReferencePoint> references = site_references(site);
   EvalCalibration out;
   for (size_t c = 0; c < images.chessboards.size(); ++c) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "ballsight/camera/field_camera.hpp"
+#include "ballsight/detect/seed_detector.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/world/site.hpp"
 
@@ -35,6 +36,10 @@ CalibrationImages render_calibration_images(const sim::CourtRig& rig, int views,
 /// floor positions, the colours, and each camera's pole corner as a rough position hint (5 m
 /// high, at the corner of the run-off area; not the simulator's exact pose).
 Site simulated_site(const sim::CourtRig& rig);
+
+/// The report's HSV box for reference balls of the site's colour: its OpenCV hue (0-179) +-12,
+/// saturation and value from 70 and 40 (0-22 for the orange table-tennis balls).
+HsvRange report_reference_box(const Rgb& colour);
 
 /// One method's calibrated cameras and how well each fit (rms reprojection errors, px).
 struct EvalCalibration {

@@ -85,8 +85,9 @@ std::string_view court_surface_name(CourtSurface surface);
 std::optional<CourtSurface> court_surface_named(std::string_view name);
 /// Paints the court and its run-off with `surface` (albedo; the lines stay white). Green is the
 /// simulator's default court. On a red or wooden court the reference balls are violet
-/// (kVioletReferenceBgr): orange lies within those floors' hues, and violet stands 50 degrees of
-/// hue from both robot markers (pink 326, blue 224) and the run-off's teal (162).
+/// (kVioletReferenceBgr): orange lies within those floors' hues; violet (272 degrees of hue)
+/// stands about 50 degrees from both robot markers (pink 326, blue 224) and 110 from the red
+/// court's teal run-off (162).
 void set_court_surface(TennisCourtSpec& court, CourtSurface surface);
 
 /// Albedo of the floor at `p_in_field`, box-filtered over a footprint of half-sizes
