@@ -72,8 +72,8 @@ constexpr int kMaxFloorPasses = 3;
 // record of grown pixels, and a blob across k bands is grown k times).
 constexpr int kMinBandRows = 64;
 
-bool is_ball_seed(const ColorClassTable& table, const cv::Vec3b& pixel) {
-  return (table.classify(pixel) & kBallSeedClass) != 0;
+bool is_seed(ColorClassMask classes) {
+  return (classes & kBallSeedClass) != 0;
 }
 
 struct Appearance {
@@ -118,12 +118,12 @@ bool of_hue_family(const cv::Vec3b& p, double ball_hue_deg) {
   return std::abs(std::remainder(hue_deg(p) - ball_hue_deg, 360.0)) <= kAlikeHueDeg;
 }
 
-// `table` classifies the image's pixels (the floor's colours taken out, a warm cast corrected),
-// `model` is the colour model's own table: a ring pixel of a ball colour the photo's table does
-// not class so is floor (or floor and lines under a warm lamp), which a ball stands out from
-// whatever its hue.
-Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table,
-                      const ColorClassTable& model, const BlobCircle& circle) {
+// `classes` are the image's pixels' classes (the floor's colours taken out, a warm cast
+// corrected), `model` is the colour model's own table: a ring pixel of a ball colour the photo's
+// classes do not hold is floor (or floor and lines under a warm lamp), which a ball stands out
+// from whatever its hue.
+Appearance appearance(const cv::Mat& bgr, const cv::Mat1b& classes, const ColorClassTable& model,
+                      const BlobCircle& circle) {
   const double r = circle.radius_px;
   const double inner = 0.8 * r, ring_in = r + std::max(1.0, 0.2 * r),
                ring_out = r + std::max(3.0, 0.8 * r);
@@ -138,9 +138,10 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table,
   int disc = 0, seeds = 0, inside = 0;
   double light = 0.0, residual = 0.0;
   Vec2 hue_sum = Vec2::Zero();
-  std::vector<cv::Vec3b> ring;
+  std::vector<std::pair<cv::Vec3b, ColorClassMask>> ring;
   for (int y = y0; y <= y1; y += step) {
     const auto* row = bgr.ptr<cv::Vec3b>(y);
+    const auto* row_classes = classes.ptr<ColorClassMask>(y);
     for (int x = x0; x <= x1; x += step) {
       const double d = (Vec2(x, y) - c).norm();
       if (d <= inner) {
@@ -150,13 +151,13 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table,
           ++inside;
           residual += laplacian_residual(bgr, x, y);
         }
-        if (is_ball_seed(table, row[x])) {
+        if (is_seed(row_classes[x])) {
           ++seeds;
           const double h = hue_deg(row[x]) * std::numbers::pi / 180.0;
           hue_sum += saturation(row[x]) * Vec2(std::cos(h), std::sin(h));
         }
       } else if (d >= ring_in && d <= ring_out) {
-        ring.push_back(row[x]);
+        ring.emplace_back(row[x], row_classes[x]);
       }
     }
   }
@@ -167,9 +168,9 @@ Appearance appearance(const cv::Mat& bgr, const ColorClassTable& table,
   const double mean_hue = std::atan2(hue_sum.y(), hue_sum.x()) * 180.0 / std::numbers::pi;
   look.hue_deg = mean_hue;
   int alike = 0;
-  for (const cv::Vec3b& p : ring) {
+  for (const auto& [p, photo_classes] : ring) {
     const bool floor =
-        (model.classify(p) & kBallGrowClass) != 0 && (table.classify(p) & kBallGrowClass) == 0;
+        (model.classify(p) & kBallGrowClass) != 0 && (photo_classes & kBallGrowClass) == 0;
     alike += saturation(p) >= kAlikeSaturation && of_hue_family(p, mean_hue) && !floor;
   }
   look.ring_alike =
@@ -200,7 +201,7 @@ std::pair<double, double> wide_ring(double r) {
 }
 
 // Whether a small ball stands apart (see above): its wide ring, less the balls `others`.
-bool stands_apart(const cv::Mat& bgr, const ColorClassTable& table, const PhotoBall& ball,
+bool stands_apart(const cv::Mat& bgr, const cv::Mat1b& classes, const PhotoBall& ball,
                   double hue_deg_of_ball, const std::vector<PhotoBall>& others) {
   const auto [ring_in, ring_out] = wide_ring(ball.radius_px);
   const Vec2& c = ball.center_px;
@@ -209,6 +210,7 @@ bool stands_apart(const cv::Mat& bgr, const ColorClassTable& table, const PhotoB
   for (int y = std::max(0, static_cast<int>(std::floor(c.y() - ring_out)));
        y <= std::min(bgr.rows - 1, static_cast<int>(std::ceil(c.y() + ring_out))); ++y) {
     const auto* row = bgr.ptr<cv::Vec3b>(y);
+    const auto* row_classes = classes.ptr<ColorClassMask>(y);
     for (int x = std::max(0, static_cast<int>(std::floor(c.x() - ring_out)));
          x <= std::min(bgr.cols - 1, static_cast<int>(std::ceil(c.x() + ring_out))); ++x) {
       const Vec2 q(x, y);
@@ -219,10 +221,9 @@ bool stands_apart(const cv::Mat& bgr, const ColorClassTable& table, const PhotoB
       });
       if (in_other) continue;
       ++count;
-      const ColorClassMask classes = table.classify(row[x]);
-      if ((classes & kBallSeedClass) != 0) {
+      if (is_seed(row_classes[x])) {
         ++seeds;
-      } else if ((classes & kBallGrowClass) != 0 && of_hue_family(row[x], hue_deg_of_ball)) {
+      } else if ((row_classes[x] & kBallGrowClass) != 0 && of_hue_family(row[x], hue_deg_of_ball)) {
         ++alike;
         if (x > 0 && y > 0 && x + 1 < bgr.cols && y + 1 < bgr.rows) {
           alike_light += brightness(row[x]);
@@ -271,7 +272,7 @@ std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
             (o.center_px - f.ball.center_px).norm() <= reach_px + o.radius_px + kOtherBallMarginPx)
           others.push_back(o);
       }
-      if (!stands_apart(bgr, active(), f.ball, f.hue_deg, others)) continue;
+      if (!stands_apart(bgr, classes_, f.ball, f.hue_deg, others)) continue;
     }
     kept[k] = true;
     balls.push_back(f.ball);
@@ -343,7 +344,6 @@ void PhotoBallDetector::scan_band(const cv::Mat& bgr, cv::Range rows, Band& band
   band.blobs = 0;
   const int begin = rows.start * bgr.cols, end = rows.end * bgr.cols;
   const ColorClassMask* classes = classes_.ptr<ColorClassMask>(0);
-  const auto is_seed = [&](int index) { return (classes[index] & kBallSeedClass) != 0; };
   constexpr std::uint64_t kSeedBytes = 0x0101010101010101ULL * kBallSeedClass;
   for (int seed = begin; seed < end; ++seed) {
     // Most pixels are of no seed colour: eight at a time.
@@ -351,12 +351,12 @@ void PhotoBallDetector::scan_band(const cv::Mat& bgr, cv::Range rows, Band& band
     while (seed + 8 <= end && (std::memcpy(&eight, classes + seed, 8), !(eight & kSeedBytes)))
       seed += 8;
     if (seed == end) break;
-    if (!is_seed(seed) || band.buffers.visited[static_cast<std::size_t>(seed)]) continue;
+    if (!is_seed(classes[seed]) || band.buffers.visited[static_cast<std::size_t>(seed)]) continue;
     grow_blob(classes_, kBallGrowClass, seed, band.buffers, band.blob);
     // A blob with a seed pixel above the band is an earlier band's.
     if (band.blob.bbox.y < rows.start &&
         std::any_of(band.blob.pixels.begin(), band.blob.pixels.end(),
-                    [&](int index) { return index < begin && is_seed(index); }))
+                    [&](int index) { return index < begin && is_seed(classes[index]); }))
       continue;
     find_circles(bgr, band);
   }
@@ -382,7 +382,7 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   // the looser growth colours is shade, foliage or a wall.
   std::size_t seeds = 0;
   const ColorClassMask* classes = classes_.ptr<ColorClassMask>(0);
-  for (int index : band.blob.pixels) seeds += (classes[index] & kBallSeedClass) != 0;
+  for (int index : band.blob.pixels) seeds += is_seed(classes[index]);
   if (static_cast<double>(seeds) < kMinBlobSeedShare * area) return floor();
   constexpr int kMargin = 3;
   const cv::Rect region =
@@ -405,7 +405,7 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   std::vector<BlobCircle> balls;
   std::vector<double> hues;
   for (BlobCircle circle : circles_in_blob(blob, geometry)) {
-    const Appearance look = appearance(bgr, active(), table_.model(), circle);
+    const Appearance look = appearance(bgr, classes_, table_.model(), circle);
     if (look.seed_share < kMinSeedShare || look.roughness > kMaxRoughness) continue;
     circle.score *= 1.0 - look.ring_alike;
     if (circle.score < options_.circles.min_score) continue;
