@@ -20,8 +20,7 @@ TEST(CourtEvalCalibration, TheSiteAndTheReportsBoxFollowTheReferenceColour) {
   const HsvRange orange = report_reference_box(SiteColours().reference_ball);
   EXPECT_EQ(orange.min, (std::array<int, 3>{0, 70, 40}));
   EXPECT_EQ(orange.max, (std::array<int, 3>{22, 255, 255}));
-  const cv::Vec3b violet = sim::kVioletReferenceBgr;
-  const HsvRange box = report_reference_box({violet[2], violet[1], violet[0]});
+  const HsvRange box = report_reference_box(Rgb::from_bgr(sim::kVioletReferenceBgr));
   EXPECT_EQ(box.min[0], 124);
   EXPECT_EQ(box.max[0], 148);
 }

@@ -81,8 +81,7 @@ TEST(CourtCalibration, VioletReferenceBallsPoseTheCamerasOnRedAndWoodenCourts) {
     const sim::CourtRig rig = sim::make_court_rig(court, {}, 1);
     const sim::CourtScene scene = sim::make_court_scene(rig.court, {}, 1);
     Site violet_site = read_site(kExampleSite);
-    const cv::Vec3b violet = sim::kVioletReferenceBgr;
-    violet_site.colours.reference_ball = {violet[2], violet[1], violet[0]};
+    violet_site.colours.reference_ball = Rgb::from_bgr(sim::kVioletReferenceBgr);
     for (std::size_t c = 0; c < rig.cameras.size(); ++c) {
       SCOPED_TRACE(std::string(sim::court_surface_name(surface)) + " camera " + std::to_string(c));
       const sim::CourtCamera& truth = rig.cameras[c];

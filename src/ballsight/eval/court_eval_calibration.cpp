@@ -93,8 +93,7 @@ Site simulated_site(const sim::CourtRig& rig) {
   const std::vector<Vec3> references = sim::reference_ball_positions(rig.court);
   for (size_t i = 0; i < references.size(); ++i)
     site.reference_balls.push_back({"reference " + std::to_string(i), references[i].head<2>()});
-  const cv::Vec3b reference = rig.court.reference_ball_bgr;
-  site.colours.reference_ball = {reference[2], reference[1], reference[0]};
+  site.colours.reference_ball = Rgb::from_bgr(rig.court.reference_ball_bgr);
   for (size_t c = 0; c < rig.cameras.size(); ++c) {
     // The pole's corner, from the camera's side of the court (its rough place on the site plan).
     const Vec3 center = rig.cameras[c].center_in_field();

@@ -48,6 +48,7 @@ struct ReferenceBall {
 struct Rgb {
   std::uint8_t r = 0, g = 0, b = 0;
   cv::Vec3b bgr() const { return {b, g, r}; }
+  static Rgb from_bgr(const cv::Vec3b& bgr) { return {bgr[2], bgr[1], bgr[0]}; }
 };
 
 struct SiteColours {
