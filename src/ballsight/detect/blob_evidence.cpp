@@ -32,8 +32,9 @@ void weighted_moments(const std::vector<EvidencePixel>& pixels, double& mass, Ve
   covariance << sxx / m, sxy / m, sxy / m, syy / m;
 }
 
-BlobEvidence measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
-                                   const cv::Vec3f& evidence_bgr, int margin_px) {
+std::optional<BlobEvidence> measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
+                                                  const cv::Vec3f& evidence_bgr, int margin_px,
+                                                  double max_peaks) {
   BlobEvidence out;
   out.blob_area_px = static_cast<int>(blob.pixels.size());
   const cv::Rect image(0, 0, bgr.cols, bgr.rows);
@@ -43,10 +44,10 @@ BlobEvidence measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
       cv::Rect(blob.bbox.x - margin_px, blob.bbox.y - margin_px, blob.bbox.width + 2 * margin_px,
                blob.bbox.height + 2 * margin_px) &
       image;
-  const auto evidence = [&](int x, int y) {
-    const cv::Vec3b& p = bgr.at<cv::Vec3b>(y, x);
+  const auto evidence_of = [&](const cv::Vec3b& p) {
     return evidence_bgr[0] * p[0] + evidence_bgr[1] * p[1] + evidence_bgr[2] * p[2];
   };
+  const auto evidence = [&](int x, int y) { return evidence_of(bgr.at<cv::Vec3b>(y, x)); };
 
   // Background: the median evidence on the window's outer ring, walked in order; never below grey
   // (0), so that grey things beside the object (the robot's box, a line) count as background
@@ -63,6 +64,18 @@ BlobEvidence measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
     steps[i] = std::abs(ring[i] - ring[(i + 1) % ring.size()]);
   out.noise_sigma = std::max(1.0, 1.4826 / std::numbers::sqrt2 * median(std::move(steps)));
   out.background = std::max(0.0, median(std::move(ring)));
+
+  // The blob's own pixels are part of its support: their evidence is a lower bound of its mass.
+  // The most a pixel could hold is that of the colour full where a weight is positive and empty
+  // where it is not (in every pixel's arithmetic, so that none exceeds it).
+  cv::Vec3b most_colour;
+  for (int c = 0; c < 3; ++c) most_colour[c] = evidence_bgr[c] > 0.0f ? 255 : 0;
+  const double limit = max_peaks * (evidence_of(most_colour) - out.background);
+  double lower_bound = 0.0;
+  for (int index : blob.pixels) {
+    lower_bound += std::max(0.0, evidence(index % bgr.cols, index / bgr.cols) - out.background);
+    if (lower_bound > limit) return std::nullopt;
+  }
 
   // Support: the blob grown by one pixel, so that the faint rim of the object counts.
   cv::Mat1b support(window.size(), uchar{0});

@@ -5,7 +5,9 @@
 // covered by the object holds half the evidence of a covered one and the weighted centroid is the
 // centroid of the coverage, to a fraction of a pixel, without a colour conversion.
 
+#include <limits>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
@@ -33,9 +35,14 @@ struct BlobEvidence {
 };
 
 /// Measures `blob` in the 8-bit BGR image with evidence weights `evidence_bgr` (B, G, R); the
-/// background ring lies `margin_px` outside the blob's bounding box.
-BlobEvidence measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
-                                   const cv::Vec3f& evidence_bgr, int margin_px);
+/// background ring lies `margin_px` outside the blob's bounding box. nullopt, before the blob's
+/// support is measured, when its own pixels hold more evidence than `max_peaks` times the most
+/// any pixel could hold (any colour, the same background): its mass is more than `max_peaks`
+/// times its peak, whatever the peak. A floor of the object's colour then costs a pass over a
+/// part of its pixels.
+std::optional<BlobEvidence> measure_blob_evidence(
+    const cv::Mat& bgr, const GrownBlob& blob, const cv::Vec3f& evidence_bgr, int margin_px,
+    double max_peaks = std::numeric_limits<double>::infinity());
 
 /// Weighted centroid and second central moments of `pixels` (mass 0: centroid and moments 0).
 void weighted_moments(const std::vector<EvidencePixel>& pixels, double& mass, Vec2& centroid,

@@ -15,14 +15,14 @@ bool grow(int width, int height, In in, int seed, BlobGrowthBuffers& buffers, Gr
   auto& visited = buffers.visited;
   if (visited[static_cast<size_t>(seed)] || !in(seed)) return false;
   blob.pixels.clear();
-  buffers.stack.assign(1, seed);
+  // Pixels are stacked with their coordinates: no division by the width per pixel.
+  buffers.stack.assign(1, cv::Point(seed % width, seed / width));
   visited[static_cast<size_t>(seed)] = 1;
   int min_x = width, min_y = height, max_x = -1, max_y = -1;
   while (!buffers.stack.empty()) {
-    const int index = buffers.stack.back();
+    const auto [x, y] = buffers.stack.back();
     buffers.stack.pop_back();
-    blob.pixels.push_back(index);
-    const int x = index % width, y = index / width;
+    blob.pixels.push_back(y * width + x);
     min_x = std::min(min_x, x), max_x = std::max(max_x, x);
     min_y = std::min(min_y, y), max_y = std::max(max_y, y);
     const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
@@ -31,7 +31,7 @@ bool grow(int width, int height, In in, int seed, BlobGrowthBuffers& buffers, Gr
       const int n = ny * width + nx;
       if (visited[static_cast<size_t>(n)] || !in(n)) continue;
       visited[static_cast<size_t>(n)] = 1;
-      buffers.stack.push_back(n);
+      buffers.stack.emplace_back(nx, ny);
     }
   }
   blob.bbox = cv::Rect(min_x, min_y, max_x - min_x + 1, max_y - min_y + 1);

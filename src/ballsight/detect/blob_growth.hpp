@@ -23,7 +23,7 @@ struct GrownBlob {
 /// start of an image); grown pixels are marked so that a later seed inside them is skipped.
 struct BlobGrowthBuffers {
   std::vector<std::uint8_t> visited;
-  std::vector<int> stack;
+  std::vector<cv::Point> stack;  // pixels to visit, (x, y)
 
   void reset(int pixel_count) { visited.assign(static_cast<std::size_t>(pixel_count), 0); }
 };

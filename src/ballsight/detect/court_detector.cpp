@@ -213,16 +213,20 @@ void CourtDetector::measure(const cv::Mat& bgr, const GrownBlob& blob, size_t sp
                         blob.bbox.y + 0.5 * (blob.bbox.height - 1));
   const double expected_r = sizes_[spec_index].radius_px(box_center);
   if (expected_r <= 0.0) return;  // outside the field area
-  const int margin = 2 + static_cast<int>(std::ceil(0.5 * expected_r));
-  const BlobEvidence evidence = measure_blob_evidence(bgr, blob, spec.evidence_bgr, margin);
-  if (evidence.mass <= 0.0 || evidence.peak < 3.0 * evidence.noise_sigma) return;
-
   // Size and shape against one object of the expected size: a disc of radius r, blurred by the
   // pixel and the optics (as if about kBlurPx larger), holds about kShadedFill * pi (r + blur)^2
   // times the peak evidence and has a variance of (r + blur)^2 / 4 + 1/12 along every axis.
   const double blurred_r = expected_r + kBlurPx;
   const double single_mass = kShadedFill * std::numbers::pi * blurred_r * blurred_r;
   const double disc_variance = blurred_r * blurred_r / 4.0 + 1.0 / 12.0;
+  const int margin = 2 + static_cast<int>(std::ceil(0.5 * expected_r));
+  // A blob of more objects than max_objects_in_blob whatever its peak (a court of a marker's
+  // colour) is left unmeasured.
+  const std::optional<BlobEvidence> measured = measure_blob_evidence(
+      bgr, blob, spec.evidence_bgr, margin, options_.max_objects_in_blob * single_mass);
+  if (!measured) return;
+  const BlobEvidence& evidence = *measured;
+  if (evidence.mass <= 0.0 || evidence.peak < 3.0 * evidence.noise_sigma) return;
   const double objects_by_mass = evidence.mass / (evidence.peak * single_mass);
   if (objects_by_mass > options_.max_objects_in_blob) return;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> shape(evidence.covariance);

@@ -1,0 +1,85 @@
+#include "ballsight/detect/blob_evidence.hpp"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "ballsight/detect/hue_classes.hpp"
+
+namespace ballsight {
+namespace {
+
+// The court cameras' back marker (blue, hue about 224 deg) and its evidence weights: its chroma
+// direction (court_detector.hpp).
+const cv::Vec3b kMarker(220, 80, 30);
+const cv::Vec3f kMarkerEvidence = [] {
+  const cv::Vec3f chroma = cv::Vec3f(220, 80, 30) - cv::Vec3f::all(110.0f);
+  return chroma / static_cast<float>(cv::norm(chroma));
+}();
+
+// A blue court (hue about 215 deg, within the marker's growth band) with a marker on it, a
+// marker on the run-off beside it, and a scrap of blue larger than a marker; light noise.
+cv::Mat blue_court() {
+  cv::Mat image(240, 320, CV_8UC3, cv::Scalar(47, 62, 39));  // dark green run-off
+  cv::rectangle(image, {40, 30}, {200, 200}, cv::Scalar(80, 67, 35), cv::FILLED);
+  cv::circle(image, {120, 110}, 6, cv::Scalar(kMarker), cv::FILLED, cv::LINE_AA);
+  cv::circle(image, {260, 60}, 6, cv::Scalar(kMarker), cv::FILLED, cv::LINE_AA);
+  cv::ellipse(image, {260, 170}, {30, 12}, 20.0, 0.0, 360.0, cv::Scalar(kMarker), cv::FILLED);
+  cv::Mat noise(image.size(), CV_16SC3);
+  cv::theRNG().state = 7;
+  cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(2));
+  cv::add(image, noise, image, cv::noArray(), CV_8UC3);
+  return image;
+}
+
+std::vector<GrownBlob> marker_blobs(const cv::Mat& image) {
+  const ColorClassTable table = hue_class_table({{1, HueBand{192.0, 256.0, 15.0, 0.0, 0.0}}});
+  BlobGrowthBuffers buffers;
+  buffers.reset(image.rows * image.cols);
+  std::vector<GrownBlob> blobs;
+  GrownBlob blob;
+  for (int seed = 0; seed < image.rows * image.cols; ++seed)
+    if (grow_blob(image, table, 1, seed, buffers, blob) && blob.pixels.size() >= 20)
+      blobs.push_back(blob);  // not the few mixed pixels where the run-off meets the court
+  return blobs;
+}
+
+// The limit only ever leaves out a blob whose full measurement holds more than `max_peaks`
+// times its peak; below it, the measurement is the full one.
+TEST(BlobEvidence, LeavesOutOnlyBlobsOfMorePeaksThanTheLimit) {
+  const cv::Mat image = blue_court();
+  const std::vector<GrownBlob> blobs = marker_blobs(image);
+  ASSERT_EQ(blobs.size(), 3u);  // the court (the marker on it merged), the marker, the scrap
+  int left_out = 0, measured = 0;
+  for (const GrownBlob& blob : blobs) {
+    const std::optional<BlobEvidence> full = measure_blob_evidence(image, blob, kMarkerEvidence, 6);
+    ASSERT_TRUE(full);
+    ASSERT_GT(full->peak, 0.0);
+    const double peaks = full->mass / full->peak;
+    for (const double max_peaks : {0.5 * peaks, 0.9 * peaks, 2.0 * peaks, 10.0 * peaks, 1e3, 1e4}) {
+      SCOPED_TRACE("blob of " + std::to_string(blob.pixels.size()) + " px, " +
+                   std::to_string(peaks) + " peaks, limit " + std::to_string(max_peaks));
+      const auto limited = measure_blob_evidence(image, blob, kMarkerEvidence, 6, max_peaks);
+      if (!limited) {
+        ++left_out;
+        EXPECT_GT(peaks, max_peaks);
+        continue;
+      }
+      ++measured;
+      EXPECT_EQ(limited->mass, full->mass);
+      EXPECT_EQ(limited->peak, full->peak);
+      EXPECT_EQ(limited->centroid, full->centroid);
+      EXPECT_EQ(limited->pixels.size(), full->pixels.size());
+    }
+  }
+  // Both happen: the court is left out under a limit of a few markers, a marker is measured.
+  EXPECT_GT(left_out, 0);
+  EXPECT_GT(measured, 0);
+  const GrownBlob& court = *std::max_element(
+      blobs.begin(), blobs.end(),
+      [](const GrownBlob& a, const GrownBlob& b) { return a.pixels.size() < b.pixels.size(); });
+  EXPECT_FALSE(measure_blob_evidence(image, court, kMarkerEvidence, 6, 8.0 * 100.0));
+}
+
+}  // namespace
+}  // namespace ballsight
