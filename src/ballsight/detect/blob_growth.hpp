@@ -13,7 +13,8 @@
 
 namespace ballsight {
 
-/// A grown region: pixel indices (y * width + x) and their bounding box.
+/// A grown region: pixel indices (y * width + x), a row's run of them after another, and their
+/// bounding box.
 struct GrownBlob {
   std::vector<int> pixels;
   cv::Rect bbox;
@@ -23,7 +24,7 @@ struct GrownBlob {
 /// start of an image); grown pixels are marked so that a later seed inside them is skipped.
 struct BlobGrowthBuffers {
   std::vector<std::uint8_t> visited;
-  std::vector<cv::Point> stack;  // pixels to visit, (x, y)
+  std::vector<cv::Point> stack;  // (x, y): where a run of pixels to grow begins
 
   void reset(int pixel_count) { visited.assign(static_cast<std::size_t>(pixel_count), 0); }
 };
