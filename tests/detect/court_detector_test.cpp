@@ -105,6 +105,46 @@ TEST(CourtDetector, FindsAWornBallInAHardShadow) {
   }
 }
 
+// Balls lit from one side on a light wooden floor, which is of the ball's hues' side (hue about
+// 32 deg): each ball's shaded half (a quarter of the light) is darker than the floor around it.
+// A lone ball is one ball at its centre (within 0.12 r; 0.3 r towards the light, the
+// shift of its sunlit part, when the floor's evidence was only subtracted); two touching balls
+// are two.
+TEST(CourtDetector, FindsShadedBallsOnAWoodenFloor) {
+  CourtDetector detector(test::overhead_camera());
+  const cv::Vec3b wood(100, 150, 195);
+  const double r = test::overhead_ball_radius_px();
+  const cv::Vec3b shade(11, 62, 56);  // test::kBallYellow at a quarter of the light
+  // A ball: its shaded disc, and its sunlit part, a disc shifted towards the light.
+  const auto ball = [&](const Vec2& center, const Vec2& light) {
+    return std::vector<test::Disc>{{center, r, shade},
+                                   {center + 0.3 * r * light, 0.7 * r, test::kBallYellow}};
+  };
+  for (int k = 0; k < 4; ++k) {
+    const double angle = 0.8 * k;
+    const Vec2 light(std::cos(angle), std::sin(angle)), across(-light.y(), light.x());
+    SCOPED_TRACE("light from " + std::to_string(angle) + " rad");
+    const Vec2 lone(200.3 + 20.0 * k, 150.7), a(400.2, 300.6 + 10.0 * k);
+    const Vec2 b = a + 2.02 * r * across;
+    std::vector<test::Disc> discs = ball(lone, light);
+    for (const Vec2& c : {a, b}) {
+      const std::vector<test::Disc> more = ball(c, light);
+      discs.insert(discs.end(), more.begin(), more.end());
+    }
+    const auto found = balls_only(detector.detect(
+        test::draw_discs(discs, 2.0, static_cast<std::uint64_t>(k + 1), {640, 480}, wood)));
+    ASSERT_EQ(found.size(), 3u);
+    for (const Vec2& truth : {lone, a, b}) {
+      const auto nearest =
+          std::min_element(found.begin(), found.end(), [&](const auto& p, const auto& q) {
+            return (p.center_px - truth).norm() < (q.center_px - truth).norm();
+          });
+      EXPECT_LT((nearest->center_px - truth).norm(), 0.2 * r);
+      EXPECT_EQ(nearest->split_count, truth == lone ? 1 : 2);
+    }
+  }
+}
+
 TEST(CourtDetector, FindsBothMarkersAndNamesThem) {
   CourtDetector detector(test::overhead_camera());
   // Markers (4.5 cm) 34.5 cm high: a little larger than a ball on the floor.

@@ -34,8 +34,9 @@ struct Disc {
 /// The floor colour with discs drawn over it (8 x 8 samples per pixel, later discs on top) and
 /// Gaussian noise of `noise_sigma` grey levels.
 inline cv::Mat draw_discs(const std::vector<Disc>& discs, double noise_sigma = 0.0,
-                          std::uint64_t seed = 1, cv::Size size = {640, 480}) {
-  cv::Mat3f image(size, cv::Vec3f(kCourtGreen[0], kCourtGreen[1], kCourtGreen[2]));
+                          std::uint64_t seed = 1, cv::Size size = {640, 480},
+                          const cv::Vec3b& floor = kCourtGreen) {
+  cv::Mat3f image(size, cv::Vec3f(floor[0], floor[1], floor[2]));
   constexpr int kSamples = 8;
   for (const Disc& d : discs) {
     const int x0 = static_cast<int>(std::floor(d.center_px.x() - d.radius_px - 1));

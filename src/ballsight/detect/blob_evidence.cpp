@@ -32,6 +32,45 @@ void weighted_moments(const std::vector<EvidencePixel>& pixels, double& mass, Ve
   covariance << sxx / m, sxy / m, sxy / m, syy / m;
 }
 
+namespace {
+
+// A floor whose chroma (its colour less its grey) is shorter than this is grey: its direction is
+// noise.
+constexpr double kMinFloorChroma = 10.0;
+// The share of the object's chroma direction that must lie off the floor's for the evidence to
+// be taken across the floor's (a blue marker on a blue court keeps its own weights).
+constexpr double kMinOwnChromaOffFloor = 0.5;
+
+// The evidence weights for an object of weights `own` on a floor of colour `floor`: where the
+// floor's chroma leans towards the object's (a wooden floor or a red court under a yellow ball),
+// the component of `own` across the floor's chroma, so that the floor holds no evidence at any
+// brightness and a ball's shaded side, darker than the sunlit floor, still holds its own; else
+// `own`. Both add up to zero.
+cv::Vec3f weights_across_floor(const cv::Vec3f& own, const cv::Vec3f& floor) {
+  const cv::Vec3f chroma = floor - cv::Vec3f::all((floor[0] + floor[1] + floor[2]) / 3.0f);
+  const double length = cv::norm(chroma);
+  if (length < kMinFloorChroma) return own;
+  const cv::Vec3f along = chroma / static_cast<float>(length);
+  const float shared = own.dot(along);
+  const cv::Vec3f across = own - shared * along;
+  const double kept = cv::norm(across);
+  if (shared <= 0.0f || kept < kMinOwnChromaOffFloor) return own;
+  return across / static_cast<float>(kept);
+}
+
+// The pixels of the window's outer ring, walked in order.
+std::vector<cv::Vec3b> window_ring(const cv::Mat& bgr, const cv::Rect& window) {
+  std::vector<cv::Vec3b> ring;
+  const int x0 = window.x, y0 = window.y, x1 = window.br().x - 1, y1 = window.br().y - 1;
+  for (int x = x0; x < x1; ++x) ring.push_back(bgr.at<cv::Vec3b>(y0, x));
+  for (int y = y0; y < y1; ++y) ring.push_back(bgr.at<cv::Vec3b>(y, x1));
+  for (int x = x1; x > x0; --x) ring.push_back(bgr.at<cv::Vec3b>(y1, x));
+  for (int y = y1; y > y0; --y) ring.push_back(bgr.at<cv::Vec3b>(y, x0));
+  return ring;
+}
+
+}  // namespace
+
 std::optional<BlobEvidence> measure_blob_evidence(const cv::Mat& bgr, const GrownBlob& blob,
                                                   const cv::Vec3f& evidence_bgr, int margin_px,
                                                   double max_peaks) {
@@ -44,21 +83,28 @@ std::optional<BlobEvidence> measure_blob_evidence(const cv::Mat& bgr, const Grow
       cv::Rect(blob.bbox.x - margin_px, blob.bbox.y - margin_px, blob.bbox.width + 2 * margin_px,
                blob.bbox.height + 2 * margin_px) &
       image;
+  // The floor: the median colour, channel by channel, of the window's outer ring.
+  const std::vector<cv::Vec3b> ring_pixels = window_ring(bgr, window);
+  cv::Vec3f floor;
+  for (int c = 0; c < 3; ++c) {
+    std::vector<float> channel;
+    channel.reserve(ring_pixels.size());
+    for (const cv::Vec3b& p : ring_pixels) channel.push_back(p[c]);
+    floor[c] = static_cast<float>(median(std::move(channel)));
+  }
+  const cv::Vec3f weights = weights_across_floor(evidence_bgr, floor);
   const auto evidence_of = [&](const cv::Vec3b& p) {
-    return evidence_bgr[0] * p[0] + evidence_bgr[1] * p[1] + evidence_bgr[2] * p[2];
+    return weights[0] * p[0] + weights[1] * p[1] + weights[2] * p[2];
   };
   const auto evidence = [&](int x, int y) { return evidence_of(bgr.at<cv::Vec3b>(y, x)); };
 
-  // Background: the median evidence on the window's outer ring, walked in order; never below grey
-  // (0), so that grey things beside the object (the robot's box, a line) count as background
-  // even on a background of negative evidence. Noise: from differences of ring neighbours, which
-  // an edge crossing the ring hardly changes.
+  // Background: the median evidence on the ring; never below grey (0), so that grey things
+  // beside the object (the robot's box, a line) count as background even on a background of
+  // negative evidence. Noise: from differences of ring neighbours, which an edge crossing the
+  // ring hardly changes.
   std::vector<float> ring;
-  const int x0 = window.x, y0 = window.y, x1 = window.br().x - 1, y1 = window.br().y - 1;
-  for (int x = x0; x < x1; ++x) ring.push_back(evidence(x, y0));
-  for (int y = y0; y < y1; ++y) ring.push_back(evidence(x1, y));
-  for (int x = x1; x > x0; --x) ring.push_back(evidence(x, y1));
-  for (int y = y1; y > y0; --y) ring.push_back(evidence(x0, y));
+  ring.reserve(ring_pixels.size());
+  for (const cv::Vec3b& p : ring_pixels) ring.push_back(evidence_of(p));
   std::vector<float> steps(ring.size());
   for (size_t i = 0; i < ring.size(); ++i)
     steps[i] = std::abs(ring[i] - ring[(i + 1) % ring.size()]);
@@ -69,7 +115,7 @@ std::optional<BlobEvidence> measure_blob_evidence(const cv::Mat& bgr, const Grow
   // The most a pixel could hold is that of the colour full where a weight is positive and empty
   // where it is not (in every pixel's arithmetic, so that none exceeds it).
   cv::Vec3b most_colour;
-  for (int c = 0; c < 3; ++c) most_colour[c] = evidence_bgr[c] > 0.0f ? 255 : 0;
+  for (int c = 0; c < 3; ++c) most_colour[c] = weights[c] > 0.0f ? 255 : 0;
   const double limit = max_peaks * (evidence_of(most_colour) - out.background);
   double lower_bound = 0.0;
   for (int index : blob.pixels) {

@@ -3,7 +3,10 @@
 // around it holds than the local background. The evidence is linear in the colour (a weighted sum
 // of B, G, R whose weights add up to zero, so grey lines and ground give none), so a pixel half
 // covered by the object holds half the evidence of a covered one and the weighted centroid is the
-// centroid of the coverage, to a fraction of a pixel, without a colour conversion.
+// centroid of the coverage, to a fraction of a pixel, without a colour conversion. On a floor
+// whose colour leans towards the object's (a yellow ball on a wooden floor or a red court) the
+// weights are taken across the floor's chroma: the floor then holds no evidence however bright,
+// and a ball's shaded side, darker than the sunlit floor around it, still holds its own.
 
 #include <limits>
 #include <opencv2/core.hpp>
@@ -34,8 +37,9 @@ struct BlobEvidence {
   bool touches_border = false;  // the blob reaches the image border
 };
 
-/// Measures `blob` in the 8-bit BGR image with evidence weights `evidence_bgr` (B, G, R); the
-/// background ring lies `margin_px` outside the blob's bounding box. nullopt, before the blob's
+/// Measures `blob` in the 8-bit BGR image with evidence weights `evidence_bgr` (B, G, R: the
+/// object's chroma direction, unit length); the background ring lies `margin_px` outside the
+/// blob's bounding box, and its median colour is the floor's. nullopt, before the blob's
 /// support is measured, when its own pixels hold more evidence than `max_peaks` times the most
 /// any pixel could hold (any colour, the same background): its mass is more than `max_peaks`
 /// times its peak, whatever the peak. A floor of the object's colour then costs a pass over a
