@@ -79,7 +79,7 @@ BENCHMARK(BM_CourtFrameSetBallsight)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 
-// A blue court is of the robot's back marker's colour (hue about 215 against 224 deg): on every
+// A blue court is of the robot's back marker's colour (hue about 209 against 224 deg): on every
 // frame the court grows into one blob of it, which is left out by its evidence.
 void BM_CourtFrameSetBallsightBlueCourt(benchmark::State& state) {
   static const Setup s = render_setup(sim::CourtSurface::blue);

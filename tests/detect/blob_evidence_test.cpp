@@ -2,12 +2,22 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "ballsight/detect/hue_classes.hpp"
 
 namespace ballsight {
 namespace {
+
+// Gaussian noise of 2 grey levels, the same every run.
+void add_noise(cv::Mat& image) {
+  cv::Mat noise(image.size(), CV_16SC3);
+  cv::RNG rng(7);
+  rng.fill(noise, cv::RNG::NORMAL, 0, 2);
+  cv::add(image, noise, image, cv::noArray(), CV_8UC3);
+}
 
 // The court cameras' back marker (blue, hue about 224 deg) and its evidence weights: its chroma
 // direction (court_detector.hpp).
@@ -17,7 +27,7 @@ const cv::Vec3f kMarkerEvidence = [] {
   return chroma / static_cast<float>(cv::norm(chroma));
 }();
 
-// A blue court (hue about 215 deg, within the marker's growth band) with a marker on it, a
+// A blue court (hue about 197 deg, within the marker's growth band) with a marker on it, a
 // marker on the run-off beside it, and a scrap of blue larger than a marker; light noise.
 cv::Mat blue_court() {
   cv::Mat image(240, 320, CV_8UC3, cv::Scalar(47, 62, 39));  // dark green run-off
@@ -25,10 +35,7 @@ cv::Mat blue_court() {
   cv::circle(image, {120, 110}, 6, cv::Scalar(kMarker), cv::FILLED, cv::LINE_AA);
   cv::circle(image, {260, 60}, 6, cv::Scalar(kMarker), cv::FILLED, cv::LINE_AA);
   cv::ellipse(image, {260, 170}, {30, 12}, 20.0, 0.0, 360.0, cv::Scalar(kMarker), cv::FILLED);
-  cv::Mat noise(image.size(), CV_16SC3);
-  cv::theRNG().state = 7;
-  cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(2));
-  cv::add(image, noise, image, cv::noArray(), CV_8UC3);
+  add_noise(image);
   return image;
 }
 
@@ -79,6 +86,53 @@ TEST(BlobEvidence, LeavesOutOnlyBlobsOfMorePeaksThanTheLimit) {
       blobs.begin(), blobs.end(),
       [](const GrownBlob& a, const GrownBlob& b) { return a.pixels.size() < b.pixels.size(); });
   EXPECT_FALSE(measure_blob_evidence(image, court, kMarkerEvidence, 6, 8.0 * 100.0));
+}
+
+// A yellow ball's evidence on a light wooden floor, whose chroma leans towards the ball's (hue
+// about 32 deg): taken across the floor's chroma, the floor holds none (its evidence along the
+// ball's own direction is 55 grey levels). A blue marker on a blue court keeps its own weights
+// (less than half of its direction lies across the court's): the court is its background.
+TEST(BlobEvidence, TakesTheEvidenceAcrossAFloorOfTheObjectsSide) {
+  const cv::Vec3f ball_chroma = cv::Vec3f(45, 250, 225) - cv::Vec3f::all(173.333f);
+  const cv::Vec3f ball_evidence = ball_chroma / static_cast<float>(cv::norm(ball_chroma));
+  const ColorClassTable grows = hue_class_table({{1, HueBand{36.0, 100.0, 15.0, 0.0, 0.0}}});
+  const ColorClassTable marker_grows =
+      hue_class_table({{1, HueBand{192.0, 256.0, 15.0, 0.0, 0.0}}});
+  struct Case {
+    const char* name;
+    cv::Scalar floor, object;
+    cv::Vec3f evidence;
+    const ColorClassTable* table;
+    double min_background, max_background;
+    bool alone;  // the object's blob is its own (not grown into the floor)
+  };
+  const Case cases[] = {
+      {"ball on wood", {100, 150, 195}, {45, 250, 225}, ball_evidence, &grows, 0.0, 1.0, true},
+      {"marker on a blue court",
+       {80, 67, 35},
+       cv::Scalar(kMarker),
+       kMarkerEvidence,
+       &marker_grows,
+       20.0,
+       40.0,
+       false}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    cv::Mat image(120, 160, CV_8UC3, c.floor);
+    cv::circle(image, {80, 60}, 8, c.object, cv::FILLED, cv::LINE_AA);
+    add_noise(image);
+    BlobGrowthBuffers buffers;
+    buffers.reset(image.rows * image.cols);
+    GrownBlob blob;
+    ASSERT_TRUE(grow_blob(image, *c.table, 1, 60 * image.cols + 80, buffers, blob));
+    const auto evidence = measure_blob_evidence(image, blob, c.evidence, 6);
+    ASSERT_TRUE(evidence);
+    EXPECT_GE(evidence->background, c.min_background);
+    EXPECT_LE(evidence->background, c.max_background);
+    if (!c.alone) continue;
+    EXPECT_NEAR(evidence->centroid.x(), 80.0, 0.1);
+    EXPECT_NEAR(evidence->centroid.y(), 60.0, 0.1);
+  }
 }
 
 }  // namespace

@@ -107,9 +107,9 @@ TEST(CourtDetector, FindsAWornBallInAHardShadow) {
 
 // Balls lit from one side on a light wooden floor, which is of the ball's hues' side (hue about
 // 32 deg): each ball's shaded half (a quarter of the light) is darker than the floor around it.
-// A lone ball is one ball at its centre (within 0.12 r; 0.3 r towards the light, the
-// shift of its sunlit part, when the floor's evidence was only subtracted); two touching balls
-// are two.
+// A lone ball is one ball at its centre (measured within 0.12 r, allowed 0.2 r; 0.3 r towards
+// the light, the shift of its sunlit part, when the floor's evidence was only subtracted); two
+// touching balls are two.
 TEST(CourtDetector, FindsShadedBallsOnAWoodenFloor) {
   CourtDetector detector(test::overhead_camera());
   const cv::Vec3b wood(100, 150, 195);

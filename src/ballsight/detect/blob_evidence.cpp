@@ -41,21 +41,22 @@ constexpr double kMinFloorChroma = 10.0;
 // be taken across the floor's (a blue marker on a blue court keeps its own weights).
 constexpr double kMinOwnChromaOffFloor = 0.5;
 
-// The evidence weights for an object of weights `own` on a floor of colour `floor`: where the
-// floor's chroma leans towards the object's (a wooden floor or a red court under a yellow ball),
-// the component of `own` across the floor's chroma, so that the floor holds no evidence at any
-// brightness and a ball's shaded side, darker than the sunlit floor, still holds its own; else
-// `own`. Both add up to zero.
-cv::Vec3f weights_across_floor(const cv::Vec3f& own, const cv::Vec3f& floor) {
-  const cv::Vec3f chroma = floor - cv::Vec3f::all((floor[0] + floor[1] + floor[2]) / 3.0f);
+// The evidence weights for an object of weights `own` on a floor of colour `floor_colour`: where
+// the floor's chroma leans towards the object's (a wooden floor or a red court under a yellow
+// ball, and a little the green court), the component of `own` across the floor's chroma, as long
+// as `own`, so that the floor holds no evidence at any brightness and a ball's shaded side, darker
+// than the sunlit floor, still holds its own; else `own`. Both add up to zero.
+cv::Vec3f weights_across_floor(const cv::Vec3f& own, const cv::Vec3f& floor_colour) {
+  const cv::Vec3f chroma =
+      floor_colour - cv::Vec3f::all((floor_colour[0] + floor_colour[1] + floor_colour[2]) / 3.0f);
   const double length = cv::norm(chroma);
   if (length < kMinFloorChroma) return own;
   const cv::Vec3f along = chroma / static_cast<float>(length);
   const float shared = own.dot(along);
   const cv::Vec3f across = own - shared * along;
-  const double kept = cv::norm(across);
-  if (shared <= 0.0f || kept < kMinOwnChromaOffFloor) return own;
-  return across / static_cast<float>(kept);
+  const double own_length = cv::norm(own), kept = cv::norm(across);
+  if (shared <= 0.0f || kept < kMinOwnChromaOffFloor * own_length) return own;
+  return across * static_cast<float>(own_length / kept);
 }
 
 // The pixels of the window's outer ring, walked in order.
@@ -85,14 +86,14 @@ std::optional<BlobEvidence> measure_blob_evidence(const cv::Mat& bgr, const Grow
       image;
   // The floor: the median colour, channel by channel, of the window's outer ring.
   const std::vector<cv::Vec3b> ring_pixels = window_ring(bgr, window);
-  cv::Vec3f floor;
+  cv::Vec3f floor_colour;
   for (int c = 0; c < 3; ++c) {
     std::vector<float> channel;
     channel.reserve(ring_pixels.size());
     for (const cv::Vec3b& p : ring_pixels) channel.push_back(p[c]);
-    floor[c] = static_cast<float>(median(std::move(channel)));
+    floor_colour[c] = static_cast<float>(median(std::move(channel)));
   }
-  const cv::Vec3f weights = weights_across_floor(evidence_bgr, floor);
+  const cv::Vec3f weights = weights_across_floor(evidence_bgr, floor_colour);
   const auto evidence_of = [&](const cv::Vec3b& p) {
     return weights[0] * p[0] + weights[1] * p[1] + weights[2] * p[2];
   };

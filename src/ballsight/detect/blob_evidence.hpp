@@ -4,9 +4,10 @@
 // of B, G, R whose weights add up to zero, so grey lines and ground give none), so a pixel half
 // covered by the object holds half the evidence of a covered one and the weighted centroid is the
 // centroid of the coverage, to a fraction of a pixel, without a colour conversion. On a floor
-// whose colour leans towards the object's (a yellow ball on a wooden floor or a red court) the
-// weights are taken across the floor's chroma: the floor then holds no evidence however bright,
-// and a ball's shaded side, darker than the sunlit floor around it, still holds its own.
+// whose colour leans towards the object's (a yellow ball on a wooden floor or a red court, and a
+// little on the green court) the weights are taken across the floor's chroma: the floor then
+// holds no evidence however bright, and a ball's shaded side, darker than the sunlit floor around
+// it, still holds its own.
 
 #include <limits>
 #include <opencv2/core.hpp>
@@ -38,7 +39,7 @@ struct BlobEvidence {
 };
 
 /// Measures `blob` in the 8-bit BGR image with evidence weights `evidence_bgr` (B, G, R: the
-/// object's chroma direction, unit length); the background ring lies `margin_px` outside the
+/// object's chroma direction, adding up to zero); the background ring lies `margin_px` outside the
 /// blob's bounding box, and its median colour is the floor's. nullopt, before the blob's
 /// support is measured, when its own pixels hold more evidence than `max_peaks` times the most
 /// any pixel could hold (any colour, the same background): its mass is more than `max_peaks`
