@@ -267,11 +267,14 @@ namespace {
 // and robot errors.
 std::string scores_line(const std::string& name, const CourtScores& s) {
   char line[256];
+  // The robot's errors are over the scenes where it was found: how many is said beside them.
   std::snprintf(
-      line, sizeof line, "%-10s %6.2f%%  %8.2f%%  %3d %3d  %5.2f cm  %5.2f cm  %6.2f cm  %6.3f deg",
+      line, sizeof line,
+      "%-10s %6.2f%%  %8.2f%%  %3d %3d  %5.2f cm  %5.2f cm  %6.2f cm  %6.3f deg  %3d/%-3d",
       name.c_str(), 100.0 * s.recall(), 100.0 * s.precision(), s.duplicates, s.false_positives,
       100.0 * s.ball_error_mean_m(), 100.0 * s.ball_error_p95_m(),
-      100.0 * s.robot_position_error_mean_m(), deg_from_rad(s.robot_heading_error_mean_rad()));
+      100.0 * s.robot_position_error_mean_m(), deg_from_rad(s.robot_heading_error_mean_rad()),
+      s.robot_found, s.scenes);
   return line;
 }
 
@@ -285,8 +288,8 @@ std::string court_eval_text(const CourtEvalReport& report) {
                 static_cast<unsigned long long>(report.options.seed), report.options.scenes,
                 100.0 * report.options.match_radius_m);
   out << line;
-  out << "method      recall  precision  dup  FP  err mean  err p95  robot pos  robot hdg   "
-         "ms/set\n";
+  out << "method      recall  precision  dup  FP  err mean  err p95  robot pos  robot hdg  "
+         "found    ms/set\n";
   for (const MethodReport& m : report.methods) {
     if (!m.calibration_error.empty()) {
       out << court_method_name(m.method) << ": could not be calibrated: " << m.calibration_error
