@@ -20,7 +20,9 @@ test("the dashboard in Chromium", { timeout: 240_000 }, async (t) => {
   const pageErrors = watchPage(page, origin);
   await page.goto(`${origin}/`);
   const shown = () => page.evaluate(() => window.ballsightDashboard);
-  await until(async () => (await shown()).seq > 0 && (await shown()).robot, "a navigation update with the robot");
+  // A second update at least: the first subtest asks for the update shown with after = seq - 1,
+  // and after = 0 asks for the latest, whatever the page shows.
+  await until(async () => (await shown()).seq > 1 && (await shown()).robot, "a navigation update with the robot after the first");
 
   await t.test("shows exactly the balls and robot pose the API returns at that seq", async () => {
     // What the page holds and shows, read at one moment (an update may come in between reads).
