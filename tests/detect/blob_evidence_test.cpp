@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "ballsight/detect/court_detector.hpp"
 #include "ballsight/detect/hue_classes.hpp"
 
 namespace ballsight {
@@ -19,13 +20,14 @@ void add_noise(cv::Mat& image) {
   cv::add(image, noise, image, cv::noArray(), CV_8UC3);
 }
 
-// The court cameras' back marker (blue, hue about 224 deg) and its evidence weights: its chroma
-// direction (court_detector.hpp).
-const cv::Vec3b kMarker(220, 80, 30);
-const cv::Vec3f kMarkerEvidence = [] {
-  const cv::Vec3f chroma = cv::Vec3f(220, 80, 30) - cv::Vec3f::all(110.0f);
-  return chroma / static_cast<float>(cv::norm(chroma));
-}();
+// The court cameras' objects as their detector sees them: the tennis ball, and the back marker
+// (blue, hue about 224 deg), each with its growth band and evidence weights.
+const CourtObjectColours kColours;
+const std::vector<CourtObjectSpec> kObjects = court_objects(kColours);
+const CourtObjectSpec& kBall = kObjects[0];
+const CourtObjectSpec& kBackMarker = kObjects[2];
+const cv::Vec3b kMarker = kColours.back_marker;
+const cv::Vec3f kMarkerEvidence = kBackMarker.evidence_bgr;
 
 // A blue court (hue about 197 deg, within the marker's growth band) with a marker on it, a
 // marker on the run-off beside it, and a scrap of blue larger than a marker; light noise.
@@ -40,7 +42,7 @@ cv::Mat blue_court() {
 }
 
 std::vector<GrownBlob> marker_blobs(const cv::Mat& image) {
-  const ColorClassTable table = hue_class_table({{1, HueBand{192.0, 256.0, 15.0, 0.0, 0.0}}});
+  const ColorClassTable table = hue_class_table({{1, kBackMarker.grow_colour}});
   BlobGrowthBuffers buffers;
   buffers.reset(image.rows * image.cols);
   std::vector<GrownBlob> blobs;
@@ -93,11 +95,8 @@ TEST(BlobEvidence, LeavesOutOnlyBlobsOfMorePeaksThanTheLimit) {
 // ball's own direction is 55 grey levels). A blue marker on a blue court keeps its own weights
 // (less than half of its direction lies across the court's): the court is its background.
 TEST(BlobEvidence, TakesTheEvidenceAcrossAFloorOfTheObjectsSide) {
-  const cv::Vec3f ball_chroma = cv::Vec3f(45, 250, 225) - cv::Vec3f::all(173.333f);
-  const cv::Vec3f ball_evidence = ball_chroma / static_cast<float>(cv::norm(ball_chroma));
-  const ColorClassTable grows = hue_class_table({{1, HueBand{36.0, 100.0, 15.0, 0.0, 0.0}}});
-  const ColorClassTable marker_grows =
-      hue_class_table({{1, HueBand{192.0, 256.0, 15.0, 0.0, 0.0}}});
+  const ColorClassTable grows = hue_class_table({{1, kBall.grow_colour}});
+  const ColorClassTable marker_grows = hue_class_table({{1, kBackMarker.grow_colour}});
   struct Case {
     const char* name;
     cv::Scalar floor, object;
@@ -106,16 +105,22 @@ TEST(BlobEvidence, TakesTheEvidenceAcrossAFloorOfTheObjectsSide) {
     double min_background, max_background;
     bool alone;  // the object's blob is its own (not grown into the floor)
   };
-  const Case cases[] = {
-      {"ball on wood", {100, 150, 195}, {45, 250, 225}, ball_evidence, &grows, 0.0, 1.0, true},
-      {"marker on a blue court",
-       {80, 67, 35},
-       cv::Scalar(kMarker),
-       kMarkerEvidence,
-       &marker_grows,
-       20.0,
-       40.0,
-       false}};
+  const Case cases[] = {{"ball on wood",
+                         {100, 150, 195},
+                         cv::Scalar(kColours.ball),
+                         kBall.evidence_bgr,
+                         &grows,
+                         0.0,
+                         1.0,
+                         true},
+                        {"marker on a blue court",
+                         {80, 67, 35},
+                         cv::Scalar(kMarker),
+                         kMarkerEvidence,
+                         &marker_grows,
+                         20.0,
+                         40.0,
+                         false}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     cv::Mat image(120, 160, CV_8UC3, c.floor);
