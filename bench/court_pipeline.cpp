@@ -26,6 +26,7 @@ using namespace ballsight;
 struct Setup {
   std::vector<FieldCamera> cameras;
   std::vector<cv::Mat> frames;
+  BallsightPipelineOptions options;  // the detector looks for the court's robot markers
 };
 
 // 40 balls (a quarter in clusters, some by the robot), the weather of scene 7, noise: rendered
@@ -42,6 +43,10 @@ Setup render_setup(sim::CourtSurface surface) {
   options.ball_count = 40;
   const sim::CourtScene scene = sim::make_court_scene(rig.court, options, 7);
   Setup out;
+  CourtObjectColours colours;
+  colours.front_marker = rig.court.robot_front_marker_bgr;
+  colours.back_marker = rig.court.robot_back_marker_bgr;
+  out.options.detector.objects = court_objects(colours);
   for (const sim::CourtCamera& camera : rig.cameras) {
     out.cameras.push_back({camera.camera, camera.camera_from_field});
     out.frames.push_back(sim::CourtRenderer(camera, rig.court).render(scene, 3).bgr);
@@ -70,7 +75,7 @@ BENCHMARK(BM_CourtFrameSetSeedPipeline)
     ->UseRealTime();
 
 void BM_CourtFrameSetBallsight(benchmark::State& state) {
-  const auto pipeline = make_ballsight_pipeline(setup().cameras);
+  const auto pipeline = make_ballsight_pipeline(setup().cameras, setup().options);
   run_frame_sets(state, *pipeline);
   state.SetLabel("4 x 1920x1080 -> world model, ballsight");
 }
@@ -79,11 +84,12 @@ BENCHMARK(BM_CourtFrameSetBallsight)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 
-// A blue court is of the robot's back marker's colour (hue about 209 against 224 deg): on every
-// frame the court grows into one blob of it, which is left out by its evidence.
+// A blue court (hue about 209 deg), whose robot wears a violet back marker: a blue one (224 deg)
+// would make the court grow into one blob of its colour on every frame (left out by its
+// evidence, at twice the cost: docs/RESULTS.md).
 void BM_CourtFrameSetBallsightBlueCourt(benchmark::State& state) {
   static const Setup s = render_setup(sim::CourtSurface::blue);
-  const auto pipeline = make_ballsight_pipeline(s.cameras);
+  const auto pipeline = make_ballsight_pipeline(s.cameras, s.options);
   run_frame_sets(state, *pipeline, s);
   state.SetLabel("4 x 1920x1080 on a blue court -> world model, ballsight");
 }

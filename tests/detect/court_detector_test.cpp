@@ -160,6 +160,29 @@ TEST(CourtDetector, FindsBothMarkersAndNamesThem) {
   }
 }
 
+// On a blue court (hue 209) a blue back marker (224) grows into the court's blob, which is floor
+// (the simulator's site gives such a court a violet one: sim/tennis_court.hpp). The detector
+// built for the site's colours finds a violet marker there, beside the pink one.
+TEST(CourtDetector, FindsAVioletBackMarkerOnABlueCourt) {
+  const cv::Vec3b blue_court{150, 100, 45}, violet{230, 40, 140};
+  CourtObjectColours colours;
+  colours.back_marker = violet;
+  CourtDetectorOptions options;
+  options.objects = court_objects(colours);
+  CourtDetector detector(test::overhead_camera(), options);
+  const double r = 800.0 * 0.045 / (6.0 - 0.345);
+  const cv::Mat image =
+      test::draw_discs({{{300.2, 200.7}, r, colours.front_marker}, {{300.2, 260.3}, r, violet}},
+                       2.0, 1, {640, 480}, blue_court);
+  const auto found = detector.detect(image);
+  ASSERT_EQ(found.size(), 2u);
+  for (const PixelDetection& d : found) {
+    const bool front = d.object == ObjectClass::robot_front_marker;
+    EXPECT_TRUE(front || d.object == ObjectClass::robot_back_marker);
+    EXPECT_LT((d.center_px - (front ? Vec2(300.2, 200.7) : Vec2(300.2, 260.3))).norm(), 0.1);
+  }
+}
+
 TEST(CourtDetector, ImageOfAnotherSizeThanTheCalibrationIsAnError) {
   CourtDetector detector(test::overhead_camera());
   try {

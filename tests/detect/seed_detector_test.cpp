@@ -25,6 +25,24 @@ TEST(SeedDetector, MedianFilterErasesSmallBalls) {
   EXPECT_EQ(detect_seed_colour(image, SeedDetectorOptions{}.ball, 1, ObjectClass::ball).size(), 1u);
 }
 
+// A box chosen around one colour, moved to another's hue; S and V stay, the hue bounds clamp.
+TEST(SeedDetector, HueBoxesMoveToAnotherColour) {
+  const HsvRange box{{100, 120, 30}, {125, 255, 255}};
+  const cv::Vec3b blue{220, 80, 30}, violet{230, 40, 140}, orange{20, 100, 255};
+  EXPECT_EQ(opencv_hue(blue), 112);
+  EXPECT_EQ(opencv_hue(violet), 136);
+  const HsvRange moved = hue_moved(box, blue, violet);
+  EXPECT_EQ(moved.min, (std::array<int, 3>{124, 120, 30}));
+  EXPECT_EQ(moved.max, (std::array<int, 3>{149, 255, 255}));
+  const HsvRange same = hue_moved(box, blue, blue);
+  EXPECT_EQ(same.min, box.min);
+  EXPECT_EQ(same.max, box.max);
+  const HsvRange clamped = hue_moved(box, blue, orange);  // orange's hue is 10
+  EXPECT_EQ(clamped.min[0], 0);
+  EXPECT_EQ(clamped.max[0], 23);
+  EXPECT_NO_THROW(clamped.validate("moved"));
+}
+
 TEST(SeedDetector, BadOptionsAreErrors) {
   SeedDetectorOptions options;
   options.median_kernel_px = 4;

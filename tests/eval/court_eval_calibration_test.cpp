@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "ballsight/detect/seed_detector.hpp"
+#include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/tennis_court.hpp"
 
@@ -23,6 +25,28 @@ TEST(CourtEvalCalibration, TheSiteAndTheReportsBoxFollowTheReferenceColour) {
   const HsvRange box = report_reference_box(Rgb::from_bgr(sim::kVioletReferenceBgr));
   EXPECT_EQ(box.min[0], 124);
   EXPECT_EQ(box.max[0], 148);
+}
+
+// The simulated site names the robot's marker colours, and the report's marker boxes follow them:
+// the boxes of before for the pink and blue markers, moved to violet's hue (136) for a violet
+// back marker (a blue court's).
+TEST(CourtEvalCalibration, TheReportsMarkerBoxesFollowTheSitesMarkerColours) {
+  sim::TennisCourtSpec court;
+  sim::set_court_surface(court, sim::CourtSurface::blue);
+  const Site site = simulated_site(sim::make_court_rig(court, {}, 1));
+  EXPECT_EQ(site.colours.robot_back.bgr(), sim::kVioletReferenceBgr);
+  EXPECT_EQ(site.colours.robot_front.bgr(), sim::kPinkMarkerBgr);
+
+  const SeedDetectorOptions report;
+  const SeedDetectorOptions plain = seed_options_for_site(Site{}).detector;
+  EXPECT_EQ(plain.front_marker.min, report.front_marker.min);
+  EXPECT_EQ(plain.front_marker.max, report.front_marker.max);
+  EXPECT_EQ(plain.back_marker.min, report.back_marker.min);
+  EXPECT_EQ(plain.back_marker.max, report.back_marker.max);
+  const SeedDetectorOptions blue_court = seed_options_for_site(site).detector;
+  EXPECT_EQ(blue_court.front_marker.min, report.front_marker.min);
+  EXPECT_EQ(blue_court.back_marker.min, (std::array<int, 3>{124, 120, 30}));
+  EXPECT_EQ(blue_court.back_marker.max, (std::array<int, 3>{149, 255, 255}));
 }
 
 }  // namespace

@@ -252,6 +252,18 @@ TEST(CourtScenario, SurfacesPaintTheCourtEachItsOwnColourAndChooseTheReferenceCo
     EXPECT_EQ(ball.bgr, kVioletReferenceBgr);
   }
   EXPECT_FALSE(court_surface_named("grass"));
+  // A blue back marker but on a blue court (it is of the court's hues); the robot wears the
+  // court's markers.
+  for (const CourtSurface surface : {CourtSurface::green, CourtSurface::red, CourtSurface::wood}) {
+    set_court_surface(red, surface);
+    EXPECT_EQ(red.robot_back_marker_bgr, kBlueMarkerBgr);
+  }
+  set_court_surface(red, CourtSurface::blue);
+  EXPECT_EQ(red.robot_back_marker_bgr, kVioletReferenceBgr);
+  EXPECT_EQ(red.robot_front_marker_bgr, kPinkMarkerBgr);
+  const RobotBox robot = make_court_scene(red, {}, 1).robot;
+  EXPECT_EQ(robot.back_marker().bgr, kVioletReferenceBgr);
+  EXPECT_EQ(robot.front_marker().bgr, kPinkMarkerBgr);
 }
 
 TEST(CourtScenario, EveryCameraSeesSixWellSpreadReferenceBalls) {

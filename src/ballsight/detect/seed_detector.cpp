@@ -21,6 +21,20 @@ void HsvRange::validate(const char* name) const {
   }
 }
 
+int opencv_hue(const cv::Vec3b& bgr) {
+  cv::Mat3b pixel(1, 1, bgr), hsv;
+  cv::cvtColor(pixel, hsv, cv::COLOR_BGR2HSV);
+  return hsv(0, 0)[0];
+}
+
+HsvRange hue_moved(const HsvRange& range, const cv::Vec3b& from_bgr, const cv::Vec3b& to_bgr) {
+  const int shift = opencv_hue(to_bgr) - opencv_hue(from_bgr);
+  HsvRange moved = range;
+  moved.min[0] = std::clamp(range.min[0] + shift, 0, 179);
+  moved.max[0] = std::clamp(range.max[0] + shift, 0, 179);
+  return moved;
+}
+
 void SeedDetectorOptions::validate() const {
   ball.validate("seed detector ball");
   front_marker.validate("seed detector front_marker");

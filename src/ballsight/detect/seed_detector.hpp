@@ -21,12 +21,20 @@ struct HsvRange {
   void validate(const char* name) const;
 };
 
+/// The hue of an 8-bit BGR colour in OpenCV's 8-bit HSV scale (0-179).
+int opencv_hue(const cv::Vec3b& bgr);
+
+/// `range` moved along the hue axis by the hue difference from `from_bgr` to `to_bgr`: a box
+/// chosen around one colour, for another (its hue bounds clamped to 0-179, S and V kept).
+HsvRange hue_moved(const HsvRange& range, const cv::Vec3b& from_bgr, const cv::Vec3b& to_bgr);
+
 struct SeedDetectorOptions {
   // Section 2.3: H 19-39, S 119-255, V 4-206, found by trial; the values are already in OpenCV's
   // 8-bit HSV scale. V max raised from 206 to 255: the simulator's sunlit balls are brighter
   // than the report's (see docs/court-eval.md).
   HsvRange ball{{19, 119, 4}, {39, 255, 255}};
-  // The report gives no values for the markers; chosen as its user would, around their hues.
+  // The report gives no values for the markers; chosen as its user would, around their hues
+  // (for markers of other colours: hue_moved, as pipeline/site_setup.hpp does).
   HsvRange front_marker{{150, 100, 40}, {175, 255, 255}};  // pink, hue 163
   HsvRange back_marker{{100, 120, 30}, {125, 255, 255}};   // blue, hue 112
   int median_kernel_px = 5;                                // section 7.1: 5x5

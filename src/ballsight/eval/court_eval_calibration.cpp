@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <opencv2/calib3d.hpp>
-#include <opencv2/imgproc.hpp>
 #include <string>
 
 #include "ballsight/calib/chessboard_corners.hpp"
@@ -94,6 +93,8 @@ Site simulated_site(const sim::CourtRig& rig) {
   for (size_t i = 0; i < references.size(); ++i)
     site.reference_balls.push_back({"reference " + std::to_string(i), references[i].head<2>()});
   site.colours.reference_ball = Rgb::from_bgr(rig.court.reference_ball_bgr);
+  site.colours.robot_front = Rgb::from_bgr(rig.court.robot_front_marker_bgr);
+  site.colours.robot_back = Rgb::from_bgr(rig.court.robot_back_marker_bgr);
   for (size_t c = 0; c < rig.cameras.size(); ++c) {
     // The pole's corner, from the camera's side of the court (its rough place on the site plan).
     const Vec3 center = rig.cameras[c].center_in_field();
@@ -108,9 +109,7 @@ Site simulated_site(const sim::CourtRig& rig) {
 }
 
 HsvRange report_reference_box(const Rgb& colour) {
-  cv::Mat3b pixel(1, 1, colour.bgr()), hsv;
-  cv::cvtColor(pixel, hsv, cv::COLOR_BGR2HSV);
-  const int hue = hsv(0, 0)[0];
+  const int hue = opencv_hue(colour.bgr());
   return {{std::max(0, hue - 12), 70, 40}, {std::min(179, hue + 12), 255, 255}};
 }
 

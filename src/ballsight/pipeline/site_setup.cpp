@@ -2,6 +2,7 @@
 
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/detect/seed_detector.hpp"
 
 namespace ballsight {
 
@@ -52,6 +53,12 @@ BallsightPipelineOptions ballsight_options_for_site(const Site& site) {
 
 SeedPipelineOptions seed_options_for_site(const Site& site) {
   SeedPipelineOptions options;
+  // The markers' boxes follow the site's marker colours.
+  const SiteColours plain;
+  options.detector.front_marker = hue_moved(options.detector.front_marker, plain.robot_front.bgr(),
+                                            site.colours.robot_front.bgr());
+  options.detector.back_marker = hue_moved(options.detector.back_marker, plain.robot_back.bgr(),
+                                           site.colours.robot_back.bgr());
   options.world.merge_distance_m = site.robot.collector_width_m;
   options.world.robot.marker_height_m = site.robot.marker_height_m;
   return options;

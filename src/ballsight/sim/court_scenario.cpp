@@ -177,6 +177,8 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
   options.validate();
   std::mt19937_64 rng(seed);
   CourtScene scene;
+  scene.robot.front_marker_bgr = court.robot_front_marker_bgr;
+  scene.robot.back_marker_bgr = court.robot_back_marker_bgr;
   const std::vector<Vec3> references = reference_ball_positions(court);
 
   // The robot somewhere on the court, clear of the reference balls and of the net (its centre at

@@ -24,6 +24,8 @@ std::string_view object_kind_name(ObjectKind kind);
 inline constexpr double kTennisBallRadiusM = 0.0335;
 inline constexpr double kReferenceBallRadiusM = 0.02;
 inline const cv::Vec3b kTennisBallBgr{45, 250, 225};  // fluorescent yellow
+inline const cv::Vec3b kPinkMarkerBgr{180, 80, 255};  // the robot's front marker, hue 326 deg
+inline const cv::Vec3b kBlueMarkerBgr{220, 80, 30};   // its back marker, hue 224 deg
 
 /// A sphere in the scene; `id` numbers the objects of one kind from 0.
 struct SceneSphere {
@@ -35,7 +37,8 @@ struct SceneSphere {
 };
 
 /// The robot as a box standing on the floor, centred on its pose, with two marker balls on top
-/// on its centre line: the pink one at the front (+x of the robot), the blue one at the back.
+/// on its centre line: by default the pink one at the front (+x of the robot), the blue one at
+/// the back.
 struct RobotBox {
   Pose2D pose;  // field_from_robot: position of the box centre and heading of its front
   double length_m = 0.60;
@@ -44,8 +47,8 @@ struct RobotBox {
   double marker_radius_m = 0.045;
   double marker_inset_m = 0.10;  // marker centre from the front/back face
   cv::Vec3b bgr{128, 128, 128};
-  cv::Vec3b front_marker_bgr{180, 80, 255};  // pink
-  cv::Vec3b back_marker_bgr{220, 80, 30};    // blue
+  cv::Vec3b front_marker_bgr = kPinkMarkerBgr;
+  cv::Vec3b back_marker_bgr = kBlueMarkerBgr;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -51,6 +51,8 @@ void set_court_surface(TennisCourtSpec& court, CourtSurface surface) {
   court.reference_ball_bgr = surface == CourtSurface::red || surface == CourtSurface::wood
                                  ? kVioletReferenceBgr
                                  : plain.reference_ball_bgr;
+  court.robot_back_marker_bgr =
+      surface == CourtSurface::blue ? kVioletReferenceBgr : plain.robot_back_marker_bgr;
   switch (surface) {
     case CourtSurface::green:
       court.court_bgr = plain.court_bgr, court.surround_bgr = plain.surround_bgr;

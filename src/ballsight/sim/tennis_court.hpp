@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/sim/court_scene.hpp"
 
 namespace ballsight::sim {
 
@@ -59,6 +60,10 @@ struct TennisCourtSpec {
   // The reference balls the cameras are posed from: orange table-tennis balls (the report's),
   // violet ones where orange does not stand out (set_court_surface).
   cv::Vec3b reference_ball_bgr{20, 100, 255};
+  // The colours of the robot's marker balls on this site (make_court_scene paints them): pink at
+  // the front, blue at the back, violet at the back on a blue court (set_court_surface).
+  cv::Vec3b robot_front_marker_bgr = kPinkMarkerBgr;
+  cv::Vec3b robot_back_marker_bgr = kBlueMarkerBgr;
   NetSpec net;
 
   /// Throws InputError naming the first invalid field.
@@ -87,7 +92,8 @@ std::optional<CourtSurface> court_surface_named(std::string_view name);
 /// simulator's default court. On a red or wooden court the reference balls are violet
 /// (kVioletReferenceBgr): orange lies within those floors' hues; violet (272 degrees of hue)
 /// stands about 50 degrees from both robot markers (pink 326, blue 224) and 110 from the red
-/// court's teal run-off (162).
+/// court's teal run-off (162). On a blue court (hue 209) the robot's back marker is violet: a
+/// blue one (224) is lost in the court's blob.
 void set_court_surface(TennisCourtSpec& court, CourtSurface surface);
 
 /// Albedo of the floor at `p_in_field`, box-filtered over a footprint of half-sizes
