@@ -5,6 +5,7 @@
 
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/eval/mirror_curves.hpp"
 #include "ballsight/eval/omni_experiment.hpp"
 #include "ballsight/eval/omni_real.hpp"
 #include "commands.hpp"
@@ -46,10 +47,39 @@ void add_eval_omni_real_command(CLI::App& eval) {
   });
 }
 
+void add_eval_mirror_curves_command(CLI::App& eval) {
+  struct Args {
+    std::filesystem::path data_dir = OmniRealOptions().data_dir;
+    bool json = false;
+    std::optional<std::string> plot;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* curves = eval.add_subcommand(
+      "mirror-curves",
+      "The simulator's mirrors beside real ones: the image radius of a floor point against its "
+      "distance, for each simulated mirror kind and each real calibration set (real/omni under "
+      "the data folder, and the paper's Table I)");
+  curves->add_option("--data", args->data_dir, "The shared data folder")->capture_default_str();
+  curves->add_flag("--json", args->json, "Print JSON instead of a table");
+  curves->add_option("--plot", args->plot, "Also write a PNG of the curves")->type_name("PNG");
+  curves->callback([args] {
+    std::vector<std::string> missing;
+    std::vector<MirrorCurve> all = simulated_mirror_curves();
+    for (MirrorCurve& c : real_mirror_curves(load_real_omni_sets(args->data_dir, missing)))
+      all.push_back(std::move(c));
+    if (args->plot) write_png_atomic(*args->plot, plot_mirror_curves(all));
+    std::cout << (args->json
+                      ? mirror_curves_json(all).dump(2) + "\n"
+                      : mirror_curves_table(all, {0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0}));
+    for (const std::string& file : missing) std::cerr << "not found, left out: " << file << "\n";
+  });
+}
+
 }  // namespace
 
 void add_eval_commands(CLI::App& eval) {
   add_eval_omni_real_command(eval);
+  add_eval_mirror_curves_command(eval);
   struct Args {
     OmniExperimentOptions options;
     std::string mirror = "unified";
