@@ -13,6 +13,8 @@
 #include <opencv2/core.hpp>
 
 #include "ballsight/detect/court_detector.hpp"
+#include "ballsight/eval/court_eval_calibration.hpp"
+#include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
@@ -26,7 +28,7 @@ using namespace ballsight;
 struct Setup {
   std::vector<FieldCamera> cameras;
   std::vector<cv::Mat> frames;
-  BallsightPipelineOptions options;  // the detector looks for the court's robot markers
+  BallsightPipelineOptions options;  // the simulated site's: the court's marker colours
 };
 
 // 40 balls (a quarter in clusters, some by the robot), the weather of scene 7, noise: rendered
@@ -43,10 +45,7 @@ Setup render_setup(sim::CourtSurface surface) {
   options.ball_count = 40;
   const sim::CourtScene scene = sim::make_court_scene(rig.court, options, 7);
   Setup out;
-  CourtObjectColours colours;
-  colours.front_marker = rig.court.robot_front_marker_bgr;
-  colours.back_marker = rig.court.robot_back_marker_bgr;
-  out.options.detector.objects = court_objects(colours);
+  out.options = ballsight_options_for_site(simulated_site(rig));
   for (const sim::CourtCamera& camera : rig.cameras) {
     out.cameras.push_back({camera.camera, camera.camera_from_field});
     out.frames.push_back(sim::CourtRenderer(camera, rig.court).render(scene, 3).bgr);

@@ -160,9 +160,10 @@ TEST(CourtDetector, FindsBothMarkersAndNamesThem) {
   }
 }
 
-// On a blue court (hue 209) a blue back marker (224) grows into the court's blob, which is floor
-// (the simulator's site gives such a court a violet one: sim/tennis_court.hpp). The detector
-// built for the site's colours finds a violet marker there, beside the pink one.
+// Why a blue court's robot wears a violet back marker (sim/tennis_court.hpp): on a blue floor
+// (hue 209) a blue marker (224) grows into the floor's blob and is not found (this test fails
+// with it), a violet one is, beside the pink one. That the site's colours reach the detector is
+// CourtEvalCalibration.TheReportsMarkerBoxesFollowTheSitesMarkerColours.
 TEST(CourtDetector, FindsAVioletBackMarkerOnABlueCourt) {
   const cv::Vec3b blue_court{150, 100, 45}, violet{230, 40, 140};
   CourtObjectColours colours;

@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 #include <tuple>
 
 #include "ballsight/camera/omni_rig.hpp"
+#include "ballsight/core/error.hpp"
 
 namespace ballsight {
 namespace {
@@ -61,15 +64,35 @@ TEST(MirrorCurves, ARealSetIsTheMeanRadiusOfEachDistance) {
   EXPECT_EQ(json.at("curves").at(0).at("radius_px").at(1), 152.0);
 }
 
-// The figure has both panels drawn: dark pixels (axes, curves) on each half.
-TEST(MirrorCurves, ThePlotDrawsBothPanels) {
+// Edge cases: a curve of one point reads only there; an empty one nowhere; a bad range throws.
+TEST(MirrorCurves, OnePointAndEmptyCurves) {
+  const MirrorCurve one{"one", false, {2.0}, {150.0}};
+  EXPECT_DOUBLE_EQ(*one.radius_at(2.0), 150.0);
+  EXPECT_FALSE(one.radius_at(2.1));
+  EXPECT_FALSE(MirrorCurve{}.radius_at(1.0));
+  EXPECT_DOUBLE_EQ(*simulated_mirror_curves()[0].radius_at(7.0),
+                   simulated_mirror_curves()[0].radius_px.back());
+  EXPECT_THROW(simulated_mirror_curves(1.0, 2.0, 0.0), InputError);
+  EXPECT_THROW(simulated_mirror_curves(2.0, 1.0, 0.1), InputError);
+  EXPECT_FALSE(plot_mirror_curves({}).empty());
+  EXPECT_FALSE(plot_mirror_curves({one}).empty());  // no 1 m radius: the shape panel stays empty
+}
+
+// Both panels show the curves: against the figure without them, each half differs by the lines
+// (four simulated mirrors, 2 px wide, hundreds of pixels long).
+TEST(MirrorCurves, ThePlotDrawsTheCurvesInBothPanels) {
   const cv::Mat plot = plot_mirror_curves(simulated_mirror_curves());
+  const cv::Mat empty = plot_mirror_curves({});
   ASSERT_EQ(plot.type(), CV_8UC3);
-  cv::Mat grey;
-  cv::extractChannel(plot, grey, 1);
+  ASSERT_EQ(plot.cols, empty.cols);
+  const int rows = std::min(plot.rows, empty.rows) - 200;  // above the legends
+  cv::Mat differs;
+  cv::cvtColor(
+      cv::abs(plot(cv::Rect(0, 0, plot.cols, rows)) - empty(cv::Rect(0, 0, plot.cols, rows))),
+      differs, cv::COLOR_BGR2GRAY);
   const int half = plot.cols / 2;
-  for (const cv::Rect side : {cv::Rect(0, 0, half, plot.rows), cv::Rect(half, 0, half, plot.rows)})
-    EXPECT_GT(cv::countNonZero(grey(side) < 200), 2000);
+  for (const cv::Rect side : {cv::Rect(0, 0, half, rows), cv::Rect(half, 0, half, rows)})
+    EXPECT_GT(cv::countNonZero(differs(side) > 40), 1500);
 }
 
 }  // namespace

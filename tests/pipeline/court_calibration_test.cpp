@@ -77,11 +77,11 @@ TEST(CourtCalibration, VioletReferenceBallsPoseTheCamerasOnRedAndWoodenCourts) {
   for (const sim::CourtSurface surface : {sim::CourtSurface::red, sim::CourtSurface::wood}) {
     sim::TennisCourtSpec court;
     sim::set_court_surface(court, surface);
-    ASSERT_EQ(court.reference_ball_bgr, sim::kVioletReferenceBgr);
+    ASSERT_EQ(court.reference_ball_bgr, sim::kVioletBgr);
     const sim::CourtRig rig = sim::make_court_rig(court, {}, 1);
     const sim::CourtScene scene = sim::make_court_scene(rig.court, {}, 1);
     Site violet_site = read_site(kExampleSite);
-    violet_site.colours.reference_ball = Rgb::from_bgr(sim::kVioletReferenceBgr);
+    violet_site.colours.reference_ball = Rgb::from_bgr(sim::kVioletBgr);
     for (std::size_t c = 0; c < rig.cameras.size(); ++c) {
       SCOPED_TRACE(std::string(sim::court_surface_name(surface)) + " camera " + std::to_string(c));
       const sim::CourtCamera& truth = rig.cameras[c];

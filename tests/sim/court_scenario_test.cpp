@@ -243,13 +243,13 @@ TEST(CourtScenario, SurfacesPaintTheCourtEachItsOwnColourAndChooseTheReferenceCo
   // Orange reference balls but on the floors of orange's hues; the scene draws the court's.
   TennisCourtSpec red;
   set_court_surface(red, CourtSurface::red);
-  EXPECT_EQ(red.reference_ball_bgr, kVioletReferenceBgr);
+  EXPECT_EQ(red.reference_ball_bgr, kVioletBgr);
   set_court_surface(red, CourtSurface::blue);
   EXPECT_EQ(red.reference_ball_bgr, TennisCourtSpec().reference_ball_bgr);
   set_court_surface(red, CourtSurface::wood);
   for (const SceneSphere& ball : make_court_scene(red, {}, 1).balls) {
     if (ball.kind != ObjectKind::reference_ball) continue;
-    EXPECT_EQ(ball.bgr, kVioletReferenceBgr);
+    EXPECT_EQ(ball.bgr, kVioletBgr);
   }
   EXPECT_FALSE(court_surface_named("grass"));
   // A blue back marker but on a blue court (it is of the court's hues); the robot wears the
@@ -259,10 +259,10 @@ TEST(CourtScenario, SurfacesPaintTheCourtEachItsOwnColourAndChooseTheReferenceCo
     EXPECT_EQ(red.robot_back_marker_bgr, kBlueMarkerBgr);
   }
   set_court_surface(red, CourtSurface::blue);
-  EXPECT_EQ(red.robot_back_marker_bgr, kVioletReferenceBgr);
+  EXPECT_EQ(red.robot_back_marker_bgr, kVioletBgr);
   EXPECT_EQ(red.robot_front_marker_bgr, kPinkMarkerBgr);
   const RobotBox robot = make_court_scene(red, {}, 1).robot;
-  EXPECT_EQ(robot.back_marker().bgr, kVioletReferenceBgr);
+  EXPECT_EQ(robot.back_marker().bgr, kVioletBgr);
   EXPECT_EQ(robot.front_marker().bgr, kPinkMarkerBgr);
 }
 

@@ -21,10 +21,26 @@ void HsvRange::validate(const char* name) const {
   }
 }
 
-int opencv_hue(const cv::Vec3b& bgr) {
+namespace {
+
+cv::Vec3b hsv_of(const cv::Vec3b& bgr) {
   cv::Mat3b pixel(1, 1, bgr), hsv;
   cv::cvtColor(pixel, hsv, cv::COLOR_BGR2HSV);
-  return hsv(0, 0)[0];
+  return hsv(0, 0);
+}
+
+}  // namespace
+
+bool HsvRange::contains_bgr(const cv::Vec3b& bgr) const {
+  const cv::Vec3b hsv = hsv_of(bgr);
+  for (int c = 0; c < 3; ++c) {
+    if (hsv[c] < min[static_cast<size_t>(c)] || hsv[c] > max[static_cast<size_t>(c)]) return false;
+  }
+  return true;
+}
+
+int opencv_hue(const cv::Vec3b& bgr) {
+  return hsv_of(bgr)[0];
 }
 
 HsvRange hue_moved(const HsvRange& range, const cv::Vec3b& from_bgr, const cv::Vec3b& to_bgr) {

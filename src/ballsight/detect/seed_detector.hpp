@@ -19,13 +19,16 @@ struct HsvRange {
 
   /// Throws InputError naming `name` when a bound is out of range or min > max.
   void validate(const char* name) const;
+  /// Whether the 8-bit BGR colour converts to HSV inside the box.
+  bool contains_bgr(const cv::Vec3b& bgr) const;
 };
 
 /// The hue of an 8-bit BGR colour in OpenCV's 8-bit HSV scale (0-179).
 int opencv_hue(const cv::Vec3b& bgr);
 
 /// `range` moved along the hue axis by the hue difference from `from_bgr` to `to_bgr`: a box
-/// chosen around one colour, for another (its hue bounds clamped to 0-179, S and V kept).
+/// chosen around one colour, for another (its hue bounds clamped to 0-179, S and V kept; a box
+/// cannot cross hue 0, so a red colour's may miss half of its hues: check with contains_bgr).
 HsvRange hue_moved(const HsvRange& range, const cv::Vec3b& from_bgr, const cv::Vec3b& to_bgr);
 
 struct SeedDetectorOptions {

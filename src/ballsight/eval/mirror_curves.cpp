@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <opencv2/imgproc.hpp>
+#include <optional>
+#include <span>
 
 #include "ballsight/camera/omni_rig.hpp"
+#include "ballsight/core/error.hpp"
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/chart.hpp"
 
@@ -50,6 +54,8 @@ std::optional<double> MirrorCurve::radius_sampled_at(double d) const {
 }
 
 std::vector<MirrorCurve> simulated_mirror_curves(double min_m, double max_m, double step_m) {
+  require(min_m >= 0.0 && max_m >= min_m && step_m > 0.0, "mirror curve distances",
+          "expected 0 <= min <= max and a positive step");
   std::vector<MirrorCurve> curves;
   for (const MirrorKind kind : kKinds) {
     const OmniRig rig(with_mirror(OmniRigParams{}, kind));
@@ -126,10 +132,12 @@ cv::Mat plot_mirror_curves(const std::vector<MirrorCurve>& curves) {
       }
     }
   }
-  const int half = static_cast<int>(legend.size() + 1) / 2;
+  const std::size_t half = (legend.size() + 1) / 2;
   const std::span<const LegendEntry> entries(legend);
-  draw_legend(figure, {kMargin + 10, kHeight + kMargin + 60}, entries.first(half));
-  draw_legend(figure, {2 * kMargin + kWidth + 10, kHeight + kMargin + 60}, entries.subspan(half));
+  if (half > 0) draw_legend(figure, {kMargin + 10, kHeight + kMargin + 60}, entries.first(half));
+  if (legend.size() > half) {
+    draw_legend(figure, {2 * kMargin + kWidth + 10, kHeight + kMargin + 60}, entries.subspan(half));
+  }
   return figure;
 }
 

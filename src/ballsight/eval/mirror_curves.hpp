@@ -20,14 +20,14 @@ struct MirrorCurve {
   std::vector<double> distance_m;  // increasing
   std::vector<double> radius_px;   // from the image centre (a real set's) or principal point
 
-  /// The radius at `distance_m`: linear between the curve's points; nullopt outside them.
-  std::optional<double> radius_at(double distance_m) const;
-  /// The radius where the curve has a point within 1 mm of `distance_m`, else nullopt.
-  std::optional<double> radius_sampled_at(double distance_m) const;
+  /// The radius at distance `d_m`: linear between the curve's points; nullopt outside them.
+  std::optional<double> radius_at(double d_m) const;
+  /// The radius where the curve has a point within 1 mm of `d_m`, else nullopt.
+  std::optional<double> radius_sampled_at(double d_m) const;
 };
 
 /// Every simulated mirror kind (camera/mirror_tracer.hpp), from `min_m` to `max_m` every `step_m`
-/// (points the mirror does not image left out).
+/// (points the mirror does not image left out). Throws InputError for a bad range or step.
 std::vector<MirrorCurve> simulated_mirror_curves(double min_m = 0.3, double max_m = 7.0,
                                                  double step_m = 0.05);
 

@@ -1,5 +1,7 @@
 #include "ballsight/pipeline/site_setup.hpp"
 
+#include <string>
+
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/detect/seed_detector.hpp"
@@ -51,14 +53,32 @@ BallsightPipelineOptions ballsight_options_for_site(const Site& site) {
   return options;
 }
 
+namespace {
+
+// The report's marker box moved from its own colour to the site's; InputError naming `key` when
+// the moved box does not hold the site's colour or was cut at hue 0 or 179.
+HsvRange marker_box(const HsvRange& box, const Rgb& plain, const Rgb& colour, const char* key) {
+  const HsvRange moved = hue_moved(box, plain.bgr(), colour.bgr());
+  const bool whole = moved.max[0] - moved.min[0] == box.max[0] - box.min[0];
+  require(whole && moved.contains_bgr(colour.bgr()), key,
+          "the report's HSV box moved to this colour (H " + std::to_string(moved.min[0]) + "-" +
+              std::to_string(moved.max[0]) + ", S >= " + std::to_string(moved.min[1]) +
+              ", V >= " + std::to_string(moved.min[2]) +
+              ") does not hold it: too grey, pale or dark, or red across hue 0; choose a "
+              "saturated colour away from red for the report's method");
+  return moved;
+}
+
+}  // namespace
+
 SeedPipelineOptions seed_options_for_site(const Site& site) {
   SeedPipelineOptions options;
   // The markers' boxes follow the site's marker colours.
   const SiteColours plain;
-  options.detector.front_marker = hue_moved(options.detector.front_marker, plain.robot_front.bgr(),
-                                            site.colours.robot_front.bgr());
-  options.detector.back_marker = hue_moved(options.detector.back_marker, plain.robot_back.bgr(),
-                                           site.colours.robot_back.bgr());
+  options.detector.front_marker = marker_box(options.detector.front_marker, plain.robot_front,
+                                             site.colours.robot_front, "colours.robot_front");
+  options.detector.back_marker = marker_box(options.detector.back_marker, plain.robot_back,
+                                            site.colours.robot_back, "colours.robot_back");
   options.world.merge_distance_m = site.robot.collector_width_m;
   options.world.robot.marker_height_m = site.robot.marker_height_m;
   return options;

@@ -23,6 +23,7 @@ BallsightPipelineOptions ballsight_options_for_site(const Site& site);
 /// The same for a service's sequence of frame sets: balls hidden by the robot remembered.
 BallsightPipelineOptions service_pipeline_options(const Site& site);
 /// The report's pipeline for the site: its marker boxes moved to the site's marker colours.
+/// Throws InputError naming the colour when its box would not hold it (grey, or red).
 SeedPipelineOptions seed_options_for_site(const Site& site);
 
 /// The camera's source: a file (one frame), a folder (its images in name order), a video device

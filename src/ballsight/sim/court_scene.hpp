@@ -12,6 +12,7 @@
 
 #include "ballsight/core/geometry.hpp"
 #include "ballsight/core/raycast_box.hpp"
+#include "ballsight/sim/colours.hpp"
 #include "ballsight/sim/image_effects.hpp"
 
 namespace ballsight::sim {
@@ -23,9 +24,6 @@ std::string_view object_kind_name(ObjectKind kind);
 
 inline constexpr double kTennisBallRadiusM = 0.0335;
 inline constexpr double kReferenceBallRadiusM = 0.02;
-inline const cv::Vec3b kTennisBallBgr{45, 250, 225};  // fluorescent yellow
-inline const cv::Vec3b kPinkMarkerBgr{180, 80, 255};  // the robot's front marker, hue 326 deg
-inline const cv::Vec3b kBlueMarkerBgr{220, 80, 30};   // its back marker, hue 224 deg
 
 /// A sphere in the scene; `id` numbers the objects of one kind from 0.
 struct SceneSphere {

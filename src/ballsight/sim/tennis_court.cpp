@@ -49,10 +49,10 @@ std::optional<CourtSurface> court_surface_named(std::string_view name) {
 void set_court_surface(TennisCourtSpec& court, CourtSurface surface) {
   const TennisCourtSpec plain;
   court.reference_ball_bgr = surface == CourtSurface::red || surface == CourtSurface::wood
-                                 ? kVioletReferenceBgr
+                                 ? kVioletBgr
                                  : plain.reference_ball_bgr;
   court.robot_back_marker_bgr =
-      surface == CourtSurface::blue ? kVioletReferenceBgr : plain.robot_back_marker_bgr;
+      surface == CourtSurface::blue ? kVioletBgr : plain.robot_back_marker_bgr;
   switch (surface) {
     case CourtSurface::green:
       court.court_bgr = plain.court_bgr, court.surround_bgr = plain.surround_bgr;

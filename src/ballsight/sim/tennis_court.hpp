@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
-#include "ballsight/sim/court_scene.hpp"
+#include "ballsight/sim/colours.hpp"
 
 namespace ballsight::sim {
 
@@ -82,18 +82,17 @@ struct TennisCourtSpec {
 /// wooden floor (a darker wood around it).
 enum class CourtSurface { green, blue, red, concrete, wood };
 
-inline const cv::Vec3b kVioletReferenceBgr{230, 40, 140};  // hue 272 degrees
-
 /// "green", "blue", "red", "concrete", "wood".
 std::string_view court_surface_name(CourtSurface surface);
 /// The surface of that name, or nullopt.
 std::optional<CourtSurface> court_surface_named(std::string_view name);
-/// Paints the court and its run-off with `surface` (albedo; the lines stay white). Green is the
-/// simulator's default court. On a red or wooden court the reference balls are violet
-/// (kVioletReferenceBgr): orange lies within those floors' hues; violet (272 degrees of hue)
-/// stands about 50 degrees from both robot markers (pink 326, blue 224) and 110 from the red
-/// court's teal run-off (162). On a blue court (hue 209) the robot's back marker is violet: a
-/// blue one (224) is lost in the court's blob.
+/// Paints the court and its run-off with `surface` (albedo; the lines stay white) and sets the
+/// colours the site chooses for it: `reference_ball_bgr` and `robot_back_marker_bgr` are reset
+/// on every call (set colours of one's own after it). Green is the simulator's default court.
+/// On a red or wooden court the reference balls are violet (kVioletBgr): orange lies within
+/// those floors' hues; violet (272 degrees of hue) stands about 50 degrees from both robot
+/// markers (pink 326, blue 224) and 110 from the red court's teal run-off (162). On a blue court
+/// (hue 209) the robot's back marker is violet: a blue one (224) is lost in the court's blob.
 void set_court_surface(TennisCourtSpec& court, CourtSurface surface);
 
 /// Albedo of the floor at `p_in_field`, box-filtered over a footprint of half-sizes
