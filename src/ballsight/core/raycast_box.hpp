@@ -67,4 +67,12 @@ inline std::optional<BoxHit> intersect_floor_box(const Vec3& origin, const Vec3&
   return BoxHit{t_near, normal};
 }
 
+/// Whether the box stands between `eye` and `point` (the segment from one to the other meets it).
+inline bool box_hides(const Vec3& eye, const Vec3& point, const FloorBox& box) {
+  const double distance = (point - eye).norm();
+  if (!(distance > 0.0)) return false;
+  const std::optional<BoxHit> hit = intersect_floor_box(eye, (point - eye) / distance, box);
+  return hit && hit->t < distance;
+}
+
 }  // namespace ballsight

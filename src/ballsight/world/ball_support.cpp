@@ -35,15 +35,9 @@ MissReason explain_miss(const FieldCamera& camera, const Vec3& center_in_field, 
   const double distance = (center_in_field - eye).norm();
   const double r = apparent_radius(camera, distance, radius_m);
   if (r < options.min_radius_px) return MissReason::too_small;
-  if (robot_pose) {
-    const FloorBox body{*robot_pose,
-                        Vec2(0.5 * robot.length_m + options.robot_margin_m,
-                             0.5 * robot.width_m + options.robot_margin_m),
-                        robot.height_m + options.robot_margin_m};
-    const std::optional<BoxHit> hit =
-        intersect_floor_box(eye, (center_in_field - eye) / distance, body);
-    if (hit && hit->t < distance) return MissReason::behind_robot;
-  }
+  if (robot_pose &&
+      box_hides(eye, center_in_field, robot.body(*robot_pose, options.robot_margin_m)))
+    return MissReason::behind_robot;
   if (options.net && options.net->hides(eye, center_in_field)) return MissReason::behind_net;
   const double same_place = std::max(options.min_same_place_px, options.same_place_radii * r);
   // A detection right there, or a blob (of several touching balls) reaching over it.

@@ -109,8 +109,18 @@ WorldModel build_world_model(
   std::vector<FusedBall> fused;
   const std::vector<FusedObject> refined = refine_clusters(
       balls, fuse_observations(balls, options.fusion), options.ball_radius_m, options.clusters);
-  for (const FusedObject& object :
-       fit_clusters_to_pixels(balls, refined, detections, options.ball_radius_m, options.pixel_fit))
+  // Pixels where the robot's body stands in front of the balls' plane: no evidence either way.
+  HiddenPixel hidden;
+  if (model.robot) {
+    const FloorBox body = options.robot.body(model.robot->pose, options.support.robot_margin_m);
+    hidden = [&cameras, body, &options](int camera, const Vec2& pixel) {
+      const FieldCamera& c = cameras[static_cast<size_t>(camera)];
+      const std::optional<Vec3> on_plane = c.point_at_height(pixel, options.ball_radius_m);
+      return on_plane && box_hides(c.center_in_field(), *on_plane, body);
+    };
+  }
+  for (const FusedObject& object : fit_clusters_to_pixels(
+           balls, refined, detections, options.ball_radius_m, options.pixel_fit, hidden))
     fused.push_back({object.position_m, object.covariance_m2, object.cameras});
   const std::vector<bool> kept =
       supported_balls(fused, cameras, detections, options.ball_radius_m,

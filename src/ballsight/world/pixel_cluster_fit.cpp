@@ -33,6 +33,7 @@ struct View {
   Eigen::Matrix2d pixel_per_plane = Eigen::Matrix2d::Identity();
   double radius_px = 0.0;      // a ball's disc in the coverage model
   std::vector<float> visible;  // per pixel: share left uncovered by the balls outside the group
+  std::vector<bool> hidden;    // per pixel, if not empty: in the fit or not (HiddenPixel)
 
   Vec2 pixel(const Vec2& x) const { return origin_px + pixel_per_plane * (x - origin_m); }
   bool contains(const Vec2& q) const {
@@ -95,6 +96,7 @@ class CoverageModel {
         for (int x = 0; x < p.width; ++x) {
           const Vec2 pixel(p.x + x, p.y + y);
           const auto k = static_cast<size_t>(y * p.width + x);
+          if (!v.hidden.empty() && v.hidden[k]) continue;
           double free = v.visible[k];
           size_t rims = 0;
           for (size_t i = 0; i < balls.size(); ++i) {
@@ -316,7 +318,7 @@ std::vector<std::vector<int>> fit_groups(
 std::vector<FusedObject> fit_clusters_to_pixels(
     const std::vector<FieldObservation>& observations, const std::vector<FusedObject>& balls,
     const std::vector<std::optional<std::vector<PixelDetection>>>& detections, double ball_radius_m,
-    const PixelFitOptions& options) {
+    const PixelFitOptions& options, const HiddenPixel& hidden) {
   options.validate();
   if (!options.enabled) return balls;
   std::vector<FusedObject> out;
@@ -372,6 +374,13 @@ std::vector<FusedObject> fit_clusters_to_pixels(
     // Balls outside the group that fall into its patches cover their share there.
     for (View& v : views) {
       const CoveragePatch& p = *v.patch;
+      if (hidden) {
+        v.hidden.assign(p.coverage.size(), false);
+        for (int y = 0; y < p.height; ++y)
+          for (int x = 0; x < p.width; ++x)
+            v.hidden[static_cast<size_t>(y * p.width + x)] =
+                hidden(v.camera, Vec2(p.x + x, p.y + y));
+      }
       v.visible.assign(p.coverage.size(), 1.0f);
       for (size_t b = 0; b < balls.size(); ++b) {
         if (std::find(group.begin(), group.end(), static_cast<int>(b)) != group.end()) continue;

@@ -9,6 +9,7 @@
 // a ball is added or removed where that changes the squared coverage residual by more than a
 // per-ball penalty measured on isolated single balls (docs/court-vision.md).
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -41,13 +42,18 @@ struct PixelFitOptions {
   void validate() const;
 };
 
+/// Whether camera `camera`'s pixel shows something in front of the balls' plane (the robot's
+/// body) that would hide a ball there: such pixels say nothing about the balls.
+using HiddenPixel = std::function<bool(int camera, const Vec2& pixel)>;
+
 /// `balls` (fused from `observations`) after refitting each group whose blobs may hold more or
 /// fewer balls than it has (several balls, or a blob split in parts) to the coverage patches of
 /// its observations' detections; `detections[c]` are camera c's (nullopt: no frame), indexed by
-/// FieldObservation::camera and ::detection. Other groups are returned unchanged.
+/// FieldObservation::camera and ::detection. Patch pixels `hidden` (if given) are left out of the
+/// fit. Other groups are returned unchanged.
 std::vector<FusedObject> fit_clusters_to_pixels(
     const std::vector<FieldObservation>& observations, const std::vector<FusedObject>& balls,
     const std::vector<std::optional<std::vector<PixelDetection>>>& detections, double ball_radius_m,
-    const PixelFitOptions& options);
+    const PixelFitOptions& options, const HiddenPixel& hidden = {});
 
 }  // namespace ballsight

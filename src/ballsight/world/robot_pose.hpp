@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/core/raycast_box.hpp"
 #include "ballsight/world/observation_fusion.hpp"
 
 namespace ballsight {
@@ -28,6 +29,10 @@ struct RobotModel {
   /// Throws InputError naming the first invalid field.
   void validate() const;
   double marker_spacing_m() const { return front_marker_x_m - back_marker_x_m; }
+  /// The body at `pose`, grown by `margin_m` on every side and on top.
+  FloorBox body(const Pose2D& pose, double margin_m = 0.0) const {
+    return {pose, Vec2(0.5 * length_m + margin_m, 0.5 * width_m + margin_m), height_m + margin_m};
+  }
 };
 
 /// Pose of the reference point from the two markers' field positions.
