@@ -70,6 +70,12 @@ BallColours default_ball_colours() {
       {"optic yellow in shade", HueBand{45.0, 85.0, 0.0, 0.7, 40.0}, yellow_growth});
   model.colours.push_back(
       {"stage orange", HueBand{5.0, 40.0, 0.0, 0.55, 90.0}, HueBand{0.0, 50.0, 0.0, 0.35, 40.0}});
+  // A far orange ball (2-3 px radius) in a JPEG has its chroma averaged with the floor's by the
+  // 4:2:0 subsampling: its core keeps the red-orange hue at 0.4-0.7 saturation, its sunlit top
+  // 0.15-0.3. Only bright red-orange is let down so far: dry leaves, cardboard and wood lie at
+  // 25-40 deg with that saturation, a red court's paint below 5 deg, and a warm-lit line is dim.
+  model.colours.push_back({"stage orange, far", HueBand{5.0, 20.0, 0.0, 0.45, 100.0},
+                           HueBand{5.0, 22.0, 0.0, 0.2, 100.0}});
   return model;
 }
 

@@ -180,8 +180,9 @@ Appearance appearance(const cv::Mat& bgr, const cv::Mat1b& classes, const ColorC
 
 // A small ball (a few pixels: its shape says little) stands apart from everything of a ball
 // colour: weeds, leaves and foliage come in fields of specks. Its wide ring
-// (r + max(3, 0.3 r) to r + max(12, 0.6 r)) holds almost no pixel of a ball colour (a seed
-// colour, or a growth colour of the ball's own hue family, kAlikeHueDeg) apart from other balls:
+// (r + max(3, 0.3 r) to r + max(12, 0.6 r)) holds almost no pixel of a ball colour of the
+// ball's own hue family (kAlikeHueDeg: orange specks are no field of yellow leaves; a seed or a
+// growth colour) apart from other balls:
 // those found in other blobs (balls lie in groups; two small balls a few radii apart each hold
 // the other in their rings), those kept already (best score first) and those of its own clump.
 // The circles a blob that is no clump is split into (a painted line, a leaf) do not excuse each
@@ -221,9 +222,10 @@ bool stands_apart(const cv::Mat& bgr, const cv::Mat1b& classes, const PhotoBall&
       });
       if (in_other) continue;
       ++count;
+      if (!of_hue_family(row[x], hue_deg_of_ball)) continue;
       if (is_seed(row_classes[x])) {
         ++seeds;
-      } else if ((row_classes[x] & kBallGrowClass) != 0 && of_hue_family(row[x], hue_deg_of_ball)) {
+      } else if ((row_classes[x] & kBallGrowClass) != 0) {
         ++alike;
         if (x > 0 && y > 0 && x + 1 < bgr.cols && y + 1 < bgr.rows) {
           alike_light += brightness(row[x]);
