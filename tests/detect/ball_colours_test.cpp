@@ -35,7 +35,9 @@ TEST(BallColours, FileRoundTrips) {
     EXPECT_EQ(back.colours[i].seed.hue_min_deg, colours.colours[i].seed.hue_min_deg);
     EXPECT_EQ(back.colours[i].grow.min_saturation, colours.colours[i].grow.min_saturation);
     EXPECT_EQ(back.colours[i].seed.min_value, colours.colours[i].seed.min_value);
+    EXPECT_EQ(back.colours[i].far, colours.colours[i].far);
   }
+  EXPECT_TRUE(back.colours.back().far);  // the far orange
 }
 
 TEST(BallColours, ErrorsNameTheFileAndTheField) {
@@ -53,6 +55,11 @@ TEST(BallColours, ErrorsNameTheFileAndTheField) {
   json["colours"][0]["seed"]["hue_deg"] = {20, 120};  // wider than its growth band
   write_file_atomic(path, json.dump());
   EXPECT_NE(error_of([&] { read_ball_colours(path); }).find("within the grow band"),
+            std::string::npos);
+  json = ball_colours_json(default_ball_colours());
+  json["colours"][0]["far"] = "yes";
+  write_file_atomic(path, json.dump());
+  EXPECT_NE(error_of([&] { read_ball_colours(path); }).find(path + ".colours[0].far"),
             std::string::npos);
   json["format"] = "something else";
   write_file_atomic(path, json.dump());

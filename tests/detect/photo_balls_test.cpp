@@ -185,6 +185,20 @@ TEST(PhotoBalls, IgnoresASmallLeafInLeafLitter) {
   expect_found(detector.detect(image), {ball});
 }
 
+// The far orange's washed-out colour seeds far balls only: a disc of it 3 px in radius is a ball,
+// one of 20 px (a larger ball keeps its colour) is not (and is too small to be a floor).
+TEST(PhotoBalls, AWashedOutOrangeSeedsOnlyAFarBall) {
+  cv::Mat image = court({400, 200});
+  const cv::Scalar washed_out(105, 126, 210);  // hue 12 deg, saturation 0.5
+  const DrawnBall far{Vec2(40.3, 50.2), 3.0};
+  cv::circle(image, {161, 50}, 20, washed_out, -1, cv::LINE_AA);
+  cv::circle(image, {645, 803}, 48, washed_out, -1, cv::LINE_AA, 4);
+  PhotoBallDetector detector;
+  const std::vector<PhotoBall> found = detector.detect(image);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NE(nearest(found, far), nullptr);
+}
+
 // What a small ball must stand apart from is its own hue family: a few red-orange specks of a
 // seed colour around a yellow ball (on the simulator's red court under warm lamps, the line edges
 // that the floor's colours do not take out) are no field of yellow leaves; the same specks in

@@ -75,7 +75,7 @@ BallColours default_ball_colours() {
   // 0.15-0.3. Only bright red-orange is let down so far: dry leaves, cardboard and wood lie at
   // 25-40 deg with that saturation, a red court's paint below 5 deg, and a warm-lit line is dim.
   model.colours.push_back({"stage orange, far", HueBand{5.0, 20.0, 0.0, 0.45, 100.0},
-                           HueBand{5.0, 22.0, 0.0, 0.2, 100.0}});
+                           HueBand{5.0, 22.0, 0.0, 0.2, 100.0}, true});
   return model;
 }
 
@@ -83,7 +83,9 @@ ColorClassTable ball_colour_table(const BallColours& colours) {
   colours.validate("ball colours");
   std::vector<HueClassRule> rules;
   for (const BallColour& colour : colours.colours) {
-    rules.push_back({static_cast<ColorClassMask>(kBallSeedClass | kBallGrowClass), colour.seed});
+    rules.push_back({static_cast<ColorClassMask>((colour.far ? kFarBallSeedClass : kBallSeedClass) |
+                                                 kBallGrowClass),
+                     colour.seed});
     rules.push_back({kBallGrowClass, colour.grow});
   }
   return hue_class_table(rules);
@@ -91,10 +93,12 @@ ColorClassTable ball_colour_table(const BallColours& colours) {
 
 nlohmann::json ball_colours_json(const BallColours& colours) {
   nlohmann::json list = nlohmann::json::array();
-  for (const BallColour& colour : colours.colours)
-    list.push_back({{"name", colour.name},
-                    {"seed", band_json(colour.seed)},
-                    {"grow", band_json(colour.grow)}});
+  for (const BallColour& colour : colours.colours) {
+    nlohmann::json item = {
+        {"name", colour.name}, {"seed", band_json(colour.seed)}, {"grow", band_json(colour.grow)}};
+    if (colour.far) item["far"] = true;
+    list.push_back(item);
+  }
   return {{"format", kFormat}, {"version", kVersion}, {"colours", list}};
 }
 
@@ -110,6 +114,10 @@ BallColours ball_colours_from_json(const nlohmann::json& json, const std::string
     colour.name = json_string(list[i], "name", at);
     colour.seed = band_from_json(json_member(list[i], "seed", at), at + ".seed");
     colour.grow = band_from_json(json_member(list[i], "grow", at), at + ".grow");
+    if (list[i].contains("far")) {
+      require(list[i]["far"].is_boolean(), at + ".far", "expected true or false");
+      colour.far = list[i]["far"].get<bool>();
+    }
     colours.colours.push_back(colour);
   }
   colours.validate(where);

@@ -5,8 +5,8 @@
 // with a yellow band) is one blob: every colour's growth band is one class.
 //
 // Saved as JSON: {"format": "ballsight-ball-colours", "version": 1, "colours": [{"name": ..,
-// "seed": BAND, "grow": BAND}]}, BAND = {"hue_deg": [min, max], "min_saturation": 0-1,
-// "min_value": 0-255} (a hue band with min > max wraps through 0).
+// "seed": BAND, "grow": BAND, "far": true (optional)}]}, BAND = {"hue_deg": [min, max],
+// "min_saturation": 0-1, "min_value": 0-255} (a hue band with min > max wraps through 0).
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -21,6 +21,9 @@ struct BallColour {
   std::string name;
   HueBand seed;  // a ball's blob holds at least one pixel of it
   HueBand grow;  // the blob grows through it
+  /// Seeds far balls only, of at most kFarBallMaxRadiusPx: the washed-out colour of a ball a few
+  /// pixels wide (a JPEG's chroma at half resolution), which a larger ball keeps.
+  bool far = false;
 };
 
 struct BallColours {
@@ -31,13 +34,18 @@ struct BallColours {
 };
 
 /// Tennis balls out of the box: optic yellow (hue 40-95 deg, its shade and sunlit top 30-110),
-/// optic yellow in a hard shadow (darker, as saturated) and the orange of stage balls (hue 5-40
-/// deg). Chosen from the colours of balls, not tuned on any test photo (docs/detect-balls.md).
+/// optic yellow in a hard shadow (darker, as saturated), the orange of stage balls (hue 5-40
+/// deg) and a far stage ball's washed-out orange. The first three were chosen from the colours of
+/// balls; the far orange's bands were set looking at the real labelled photos
+/// (docs/detect-balls.md).
 BallColours default_ball_colours();
+
+inline constexpr double kFarBallMaxRadiusPx = 4.0;
 
 /// Class bits of a ball colour table.
 inline constexpr ColorClassMask kBallSeedClass = 1;
-inline constexpr ColorClassMask kBallGrowClass = 2;  // set for seed colours too
+inline constexpr ColorClassMask kBallGrowClass = 2;     // set for seed colours too
+inline constexpr ColorClassMask kFarBallSeedClass = 4;  // a far colour's seed (BallColour::far)
 
 /// The table of every colour's seed and growth bands (a seed colour is always a growth colour).
 ColorClassTable ball_colour_table(const BallColours& colours);

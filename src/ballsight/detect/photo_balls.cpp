@@ -72,8 +72,15 @@ constexpr int kMaxFloorPasses = 3;
 // record of grown pixels, and a blob across k bands is grown k times).
 constexpr int kMinBandRows = 64;
 
+constexpr ColorClassMask kAnySeed = kBallSeedClass | kFarBallSeedClass;
+
 bool is_seed(ColorClassMask classes) {
-  return (classes & kBallSeedClass) != 0;
+  return (classes & kAnySeed) != 0;
+}
+
+// The seed classes of a ball of `radius_px`: a far colour's only for a far ball.
+ColorClassMask seed_classes(double radius_px) {
+  return radius_px <= kFarBallMaxRadiusPx ? kAnySeed : kBallSeedClass;
 }
 
 struct Appearance {
@@ -131,6 +138,7 @@ Appearance appearance(const cv::Mat& bgr, const cv::Mat1b& classes, const ColorC
   const double smooth = std::min(inner, r - 1.0);
   const int step = std::max(1, static_cast<int>(r / 12.0));
   const Vec2& c = circle.center_px;
+  const ColorClassMask seeds_of_this_size = seed_classes(r);
   const int x0 = std::max(0, static_cast<int>(std::floor(c.x() - ring_out)));
   const int y0 = std::max(0, static_cast<int>(std::floor(c.y() - ring_out)));
   const int x1 = std::min(bgr.cols - 1, static_cast<int>(std::ceil(c.x() + ring_out)));
@@ -151,7 +159,7 @@ Appearance appearance(const cv::Mat& bgr, const cv::Mat1b& classes, const ColorC
           ++inside;
           residual += laplacian_residual(bgr, x, y);
         }
-        if (is_seed(row_classes[x])) {
+        if ((row_classes[x] & seeds_of_this_size) != 0) {
           ++seeds;
           const double h = hue_deg(row[x]) * std::numbers::pi / 180.0;
           hue_sum += saturation(row[x]) * Vec2(std::cos(h), std::sin(h));
@@ -333,7 +341,7 @@ bool PhotoBallDetector::exclude_floor_colours(const cv::Mat& bgr) {
   if (cells.empty()) return false;
   if (!floor_excluded_) floor_table_ = base();
   for (const std::size_t cell : cells)
-    floor_table_->remove_classes(cell, kBallSeedClass | kBallGrowClass);
+    floor_table_->remove_classes(cell, kAnySeed | kBallGrowClass);
   floor_excluded_ = true;
   return true;
 }
@@ -346,7 +354,7 @@ void PhotoBallDetector::scan_band(const cv::Mat& bgr, cv::Range rows, Band& band
   band.blobs = 0;
   const int begin = rows.start * bgr.cols, end = rows.end * bgr.cols;
   const ColorClassMask* classes = classes_.ptr<ColorClassMask>(0);
-  constexpr std::uint64_t kSeedBytes = 0x0101010101010101ULL * kBallSeedClass;
+  constexpr std::uint64_t kSeedBytes = 0x0101010101010101ULL * kAnySeed;
   for (int seed = begin; seed < end; ++seed) {
     // Most pixels are of no seed colour: eight at a time.
     std::uint64_t eight = 0;
