@@ -40,6 +40,7 @@ struct BallColours {
 /// (docs/detect-balls.md).
 BallColours default_ball_colours();
 
+/// The largest ball, in pixels of radius, whose seed a far colour is (BallColour::far).
 inline constexpr double kFarBallMaxRadiusPx = 4.0;
 
 /// Class bits of a ball colour table.
