@@ -21,8 +21,9 @@ struct BallColour {
   std::string name;
   HueBand seed;  // a ball's blob holds at least one pixel of it
   HueBand grow;  // the blob grows through it
-  /// Seeds far balls only, of at most kFarBallMaxRadiusPx: the washed-out colour of a ball a few
-  /// pixels wide (a JPEG's chroma at half resolution), which a larger ball keeps.
+  /// Seeds far balls only: its seed counts in the seed share of circles of at most
+  /// kFarBallMaxRadiusPx. The washed-out colour of a ball a few pixels wide (a JPEG's chroma at
+  /// half resolution), which a larger ball keeps.
   bool far = false;
 };
 
@@ -40,8 +41,9 @@ struct BallColours {
 /// (docs/detect-balls.md).
 BallColours default_ball_colours();
 
-/// The largest ball, in pixels of radius, whose seed a far colour is (BallColour::far).
-inline constexpr double kFarBallMaxRadiusPx = 4.0;
+/// The largest ball, in pixels of radius, whose seed a far colour is (BallColour::far): a ball of
+/// 3-4 px whose pale top grows can be fitted with a circle of more than 4 px (docs/RESULTS.md).
+inline constexpr double kFarBallMaxRadiusPx = 8.0;
 
 /// Class bits of a ball colour table.
 inline constexpr ColorClassMask kBallSeedClass = 1;
