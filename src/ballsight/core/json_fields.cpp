@@ -31,6 +31,12 @@ int json_int(const nlohmann::json& object, const std::string& key, const std::st
   return value.get<int>();
 }
 
+bool json_bool(const nlohmann::json& object, const std::string& key, const std::string& where) {
+  const nlohmann::json& value = json_member(object, key, where);
+  require(value.is_boolean(), where + "." + key, "expected true or false");
+  return value.get<bool>();
+}
+
 std::string json_string(const nlohmann::json& object, const std::string& key,
                         const std::string& where) {
   const nlohmann::json& value = json_member(object, key, where);

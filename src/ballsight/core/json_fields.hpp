@@ -16,6 +16,8 @@ double json_number(const nlohmann::json& object, const std::string& key, const s
 /// An integer in [min, max].
 int json_int(const nlohmann::json& object, const std::string& key, const std::string& where,
              int min, int max);
+/// A boolean.
+bool json_bool(const nlohmann::json& object, const std::string& key, const std::string& where);
 /// A string.
 std::string json_string(const nlohmann::json& object, const std::string& key,
                         const std::string& where);

@@ -114,10 +114,7 @@ BallColours ball_colours_from_json(const nlohmann::json& json, const std::string
     colour.name = json_string(list[i], "name", at);
     colour.seed = band_from_json(json_member(list[i], "seed", at), at + ".seed");
     colour.grow = band_from_json(json_member(list[i], "grow", at), at + ".grow");
-    if (list[i].contains("far")) {
-      require(list[i]["far"].is_boolean(), at + ".far", "expected true or false");
-      colour.far = list[i]["far"].get<bool>();
-    }
+    if (list[i].contains("far")) colour.far = json_bool(list[i], "far", at);
     colours.colours.push_back(colour);
   }
   colours.validate(where);

@@ -230,7 +230,10 @@ bool stands_apart(const cv::Mat& bgr, const cv::Mat1b& classes, const PhotoBall&
       });
       if (in_other) continue;
       ++count;
-      if (!of_hue_family(row[x], hue_deg_of_ball)) continue;
+      // Most ring pixels are of no ball colour: their hue is not asked.
+      if ((row_classes[x] & (kAnySeed | kBallGrowClass)) == 0 ||
+          !of_hue_family(row[x], hue_deg_of_ball))
+        continue;
       if (is_seed(row_classes[x])) {
         ++seeds;
       } else if ((row_classes[x] & kBallGrowClass) != 0) {
