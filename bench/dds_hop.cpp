@@ -19,7 +19,7 @@
 #include "ballsight/dds/detection_messages.hpp"
 #include "ballsight/dds/topic_io.hpp"
 #include "ballsight/eval/court_metrics.hpp"
-#include "ballsight/net/navigation_hub.hpp"
+#include "ballsight/service/navigation_hub.hpp"
 
 namespace {
 

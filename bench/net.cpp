@@ -23,9 +23,10 @@
 #include <boost/beast/websocket.hpp>
 #include <thread>
 
-#include "ballsight/eval/simulated_service.hpp"
+#include "ballsight/net/http_robot_link.hpp"
 #include "ballsight/net/http_server.hpp"
-#include "ballsight/net/robot_link.hpp"
+#include "ballsight/net/service_api.hpp"
+#include "ballsight/service/simulated_service.hpp"
 
 namespace {
 
@@ -88,9 +89,9 @@ RobotLinkOptions link_to(unsigned short port) {
 void BM_PublishToReceive(benchmark::State& state) {
   NavigationHub hub;
   LocalService service(hub);
-  std::vector<std::unique_ptr<RobotLink>> links;
+  std::vector<std::unique_ptr<HttpRobotLink>> links;
   for (int c = 0; c < state.range(0); ++c) {
-    links.push_back(std::make_unique<RobotLink>(link_to(service.server->port())));
+    links.push_back(std::make_unique<HttpRobotLink>(link_to(service.server->port())));
   }
   while (service.server->clients().size() < links.size())
     std::this_thread::sleep_for(milliseconds(1));
@@ -185,12 +186,12 @@ void BM_WholeChain(benchmark::State& state) {
   SimulatedServiceOptions options;
   SimulatedCourtService simulated(options);
   NavigationHub hub;
-  ApiContext context = simulated.api_context(hub);
+  ApiContext context = api_context(simulated, hub);
   HttpServerOptions o;
   o.port = 0;
   o.token = kToken;
   HttpServer server(o, context);
-  RobotLink link(link_to(server.port()));
+  HttpRobotLink link(link_to(server.port()));
   std::atomic<bool> stop{false};
   std::thread loop([&] { simulated.run(hub, stop); });
   std::vector<double> ms;

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/net/robot_link.hpp"
+#include "ballsight/net/http_robot_link.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const nlohmann::json j =

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "ballsight/eval/loop_truth.hpp"
+#include "ballsight/service/loop_truth.hpp"
 #include "fuzz_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

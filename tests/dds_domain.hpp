@@ -7,7 +7,7 @@
 #include <string>
 
 #include "ballsight/dds/domain.hpp"
-#include "ballsight/net/navigation_hub.hpp"
+#include "ballsight/service/navigation_hub.hpp"
 
 namespace ballsight::test {
 

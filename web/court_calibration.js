@@ -5,6 +5,7 @@
 import { ImageView } from './image_view.js';
 import { $, ApiError, api, circle as circleOn, download, makeGuarded, pageShortcut,
          showError, zoomKey, zoomOnWheel } from './page_support.js';
+import { onPointerDrag } from './pointer_drag.js';
 import { PointHistory } from './point_history.js';
 
 const API = '/api/v1/court-calibration';
@@ -191,8 +192,6 @@ function renderTable(pose) {
 
 // --- pointer and keys ------------------------------------------------------------------------
 
-let drag = null;  // {start, last, moved}
-
 function referenceAtCanvas(cx, cy) {
   const pose = state.posedFor === history.points ? state.pose : null;
   if (!pose) return null;
@@ -207,45 +206,34 @@ function referenceAtCanvas(cx, cy) {
   return best;
 }
 
-canvas.addEventListener('pointerdown', (event) => {
-  if (!state.still) return;
-  canvas.focus();
-  const [cx, cy] = view.canvasFromClient(event.clientX, event.clientY);
-  drag = { start: [cx, cy], last: [cx, cy], moved: false };
-  canvas.setPointerCapture(event.pointerId);
-});
-
-canvas.addEventListener('pointermove', (event) => {
-  if (!drag) return;
-  const [cx, cy] = view.canvasFromClient(event.clientX, event.clientY);
-  if (Math.hypot(cx - drag.start[0], cy - drag.start[1]) > 3) drag.moved = true;
-  if (!drag.moved) return;
-  view.panBy(cx - drag.last[0], cy - drag.last[1]);
-  drag.last = [cx, cy];
-  render();
-});
-
-canvas.addEventListener('pointerup', (event) => {
-  if (!drag) return;
-  const moved = drag.moved;
-  drag = null;
-  if (moved) return;
-  const [cx, cy] = view.canvasFromClient(event.clientX, event.clientY);
-  const [x, y] = view.imageFromCanvas(cx, cy);
-  const inImage = x >= -0.5 && y >= -0.5 && x < state.still.width - 0.5 && y < state.still.height - 0.5;
-  if (!inImage) {
-    // Outside the image: nothing to place or learn there.
-  } else if (state.colourMode) {
-    state.clicks.push([x, y]);
-  } else if (state.selected) {
-    const reference = state.selected;
-    state.selected = null;
-    place(reference, x, y);
-    return;
-  } else {
-    state.selected = referenceAtCanvas(cx, cy);
-  }
-  render();
+onPointerDrag(canvas, view, {
+  begin() {
+    if (!state.still) return null;
+    canvas.focus();
+    return {};
+  },
+  move(drag, cx, cy, dx, dy) {
+    view.panBy(dx, dy);
+    render();
+  },
+  end(drag, cx, cy, moved) {
+    if (moved) return;
+    const [x, y] = view.imageFromCanvas(cx, cy);
+    const inImage = x >= -0.5 && y >= -0.5 && x < state.still.width - 0.5 && y < state.still.height - 0.5;
+    if (!inImage) {
+      // Outside the image: nothing to place or learn there.
+    } else if (state.colourMode) {
+      state.clicks.push([x, y]);
+    } else if (state.selected) {
+      const reference = state.selected;
+      state.selected = null;
+      place(reference, x, y);
+      return;
+    } else {
+      state.selected = referenceAtCanvas(cx, cy);
+    }
+    render();
+  },
 });
 
 zoomOnWheel(view, render);
@@ -323,14 +311,17 @@ async function start() {
   $('cameras').innerHTML = state.site.cameras
     .map((c) => `<button type="button" data-camera="${escapeHtml(c.name)}">${escapeHtml(c.name)}</button>`).join('');
   if (!state.site.cameras.length) return;
-  for (let attempt = 0; ; attempt += 1) {  // a service just started has no frame yet
-    try {
-      await takeStill(state.site.cameras[0].name);
-      return;
-    } catch (e) {
-      if (attempt >= 20 || !String(e.message).includes('no frame')) throw e;
-      await new Promise((resolve) => setTimeout(resolve, 500));
-    }
+  await firstFrameSet();
+  await takeStill(state.site.cameras[0].name);
+}
+
+/// Waits (10 s at most) until the service has published a frame set: a service just started has
+/// no frame to make a still of yet.
+async function firstFrameSet() {
+  for (let attempt = 0; attempt < 40; attempt += 1) {
+    const health = await api('GET', '/api/v1/health');
+    if (health.frame_sets > 0) return;
+    await new Promise((resolve) => setTimeout(resolve, 250));
   }
 }
 

@@ -2,21 +2,16 @@
 // stream (/api/v1/stream, docs/robot-link.md), and the service's health. What is drawn is also in
 // window.ballsightDashboard ({seq, balls, robot, route}), for tests and the browser's console.
 import { drawCourtMap, drawSparkline } from "/web/court_map.js";
+import { $, api, showError, socketUrl } from "/web/page_support.js";
 
 const LATENCY_POINTS = 60;
 const RECONNECT_MS = [250, 500, 1000, 2000, 4000];
 const CAMERA_PERIOD_MS = 2000; // each camera's frame, at a low rate
+const HEALTH_WAIT_MS = 250; // for the first health document, before the first frames are asked
 const MARKER_COLOURS = { ball: "#ffe14d", robot_front_marker: "#ff4d4d", robot_back_marker: "#4da3ff" };
 
-const $ = (id) => document.getElementById(id);
-const state = { site: null, update: null, latencies: [], serviceId: "", seq: 0, retries: 0 };
+const state = { site: null, update: null, health: null, latencies: [], serviceId: "", seq: 0, retries: 0 };
 window.ballsightDashboard = { seq: 0, balls: [], robot: null, route: null, cameras: {} };
-
-function showError(message) {
-  const box = $("error");
-  box.textContent = message;
-  box.hidden = !message;
-}
 
 function fixed(value, digits) {
   return typeof value === "number" && Number.isFinite(value) ? value.toFixed(digits) : "-";
@@ -38,6 +33,7 @@ function showUpdate(update) {
 }
 
 function showHealth(health) {
+  state.health = health;
   $("frame-sets").textContent = String(health.frame_sets ?? "-");
   $("rate").textContent = `${fixed(health.frame_sets_per_s, 1)} /s`;
   $("pipeline").textContent = `${fixed(health.pipeline_ms, 1)} ms, plan ${fixed(health.plan_ms, 1)} ms`;
@@ -56,11 +52,11 @@ function showHealth(health) {
 function connect() {
   const query = new URLSearchParams({ topics: "navigation,health", after: String(state.seq) });
   if (state.serviceId) query.set("service", state.serviceId);
-  const socket = new WebSocket(`ws://${location.host}/api/v1/stream?${query}`);
+  const socket = new WebSocket(socketUrl(`/api/v1/stream?${query}`));
   socket.onopen = () => {
     state.retries = 0;
     $("connection").textContent = "live";
-    showError("");
+    showError("error", null);
   };
   socket.onmessage = (event) => {
     const message = JSON.parse(event.data);
@@ -122,51 +118,50 @@ async function showCameraView(name, figure) {
   window.ballsightDashboard.cameras[name] = { seq: view.seq, width: view.width, height: view.height, detections: view.detections };
 }
 
+/// Whether the service has published a frame of camera `name` (its health says so): before that
+/// it has no view to give, and the panel keeps saying "no frame yet".
+function hasFrame(name) {
+  if (!(state.health?.frame_sets > 0)) return false;
+  const camera = (state.health.cameras ?? []).find((c) => c.name === name);
+  return !camera || camera.frames === undefined || camera.frames > 0;
+}
+
 async function refreshCameras() {
   const figures = $("camera-views").querySelectorAll("figure");
   for (const [i, name] of state.site.cameras.entries()) {
+    if (!hasFrame(name)) continue;
     try {
       await showCameraView(name, figures[i]);
     } catch (error) {
       figures[i].querySelector("figcaption").textContent = `${name}: ${error.message}`;
     }
   }
-  setTimeout(refreshCameras, CAMERA_PERIOD_MS);
+  setTimeout(refreshCameras, state.health ? CAMERA_PERIOD_MS : HEALTH_WAIT_MS);
 }
 
-function showPlannerError(message) {
-  $("planner-error").textContent = message;
-  $("planner-error").hidden = !message;
-}
-
-async function plannerRequest(init) {
-  const response = await fetch("/api/v1/planner", init);
-  const answer = await response.json();
-  if (!response.ok) throw new Error(`${answer.where}: ${answer.error}`);
+/// GET (no `planner`) or PUT /api/v1/planner; shows the service's choice.
+async function plannerRequest(planner) {
+  const answer = planner === undefined
+    ? await api("GET", "/api/v1/planner")
+    : await api("PUT", "/api/v1/planner", { planner }, { token: $("token").value });
   $("planner").value = answer.planner;
   return answer;
 }
 
 $("use-planner").addEventListener("click", async () => {
-  showPlannerError("");
+  showError("planner-error", null);
   try {
-    await plannerRequest({
-      method: "PUT",
-      headers: { "Content-Type": "application/json", Authorization: `Bearer ${$("token").value}` },
-      body: JSON.stringify({ planner: $("planner").value }),
-    });
+    await plannerRequest($("planner").value);
   } catch (error) {
-    showPlannerError(error.message);
+    showError("planner-error", error);
   }
 });
 
 async function start() {
   try {
-    const response = await fetch("/api/v1/site");
-    if (!response.ok) throw new Error(`/api/v1/site: ${response.status} ${await response.text()}`);
-    state.site = await response.json();
+    state.site = await api("GET", "/api/v1/site");
   } catch (error) {
-    showError(`cannot read the site: ${error.message}`);
+    showError("error", `cannot read the site: ${error.message}`);
     $("connection").textContent = "offline";
     return;
   }
@@ -174,7 +169,7 @@ async function start() {
   connect();
   cameraPanels();
   refreshCameras();
-  plannerRequest({}).catch((error) => showPlannerError(error.message));
+  plannerRequest().catch((error) => showError("planner-error", error));
 }
 
 start();

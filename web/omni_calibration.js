@@ -4,6 +4,7 @@
 import { ImageView } from './image_view.js';
 import { $, ApiError, api, circle as circleOn, download, makeGuarded, pageShortcut,
          showError, zoomKey, zoomOnWheel } from './page_support.js';
+import { onPointerDrag } from './pointer_drag.js';
 import { PointHistory } from './point_history.js';
 import { drawRadialPlot } from './radial_plot.js';
 
@@ -233,7 +234,7 @@ async function addPointAt(x, y) {
 
 // --- pointer and keys ------------------------------------------------------------------------
 
-let drag = null;  // {kind: 'point'|'center'|'pan', index, start: [cx, cy], moved}
+let drag = null;  // while the pointer is down: {kind: 'point'|'center'|'pan', index, preview}
 
 function pointAtCanvas(cx, cy) {
   let best = -1, bestD = GRAB_PX;
@@ -245,45 +246,36 @@ function pointAtCanvas(cx, cy) {
   return best;
 }
 
-canvas.addEventListener('pointerdown', (event) => {
-  if (!state.frame) return;
-  canvas.focus();
-  const [cx, cy] = view.canvasFromClient(event.clientX, event.clientY);
-  const index = pointAtCanvas(cx, cy);
-  const [ccx, ccy] = view.canvasFromImage(state.center[0], state.center[1]);
-  const kind = index >= 0 ? 'point' : Math.hypot(ccx - cx, ccy - cy) <= GRAB_PX + 3 ? 'center' : 'pan';
-  drag = { kind, index, start: [cx, cy], last: [cx, cy], moved: false, preview: null };
-  if (index >= 0) state.selected = index;
-  canvas.setPointerCapture(event.pointerId);
-  render();
-});
-
-canvas.addEventListener('pointermove', (event) => {
-  if (!drag) return;
-  const [cx, cy] = view.canvasFromClient(event.clientX, event.clientY);
-  if (Math.hypot(cx - drag.start[0], cy - drag.start[1]) > 3) drag.moved = true;
-  if (!drag.moved) return;
-  const [x, y] = view.imageFromCanvas(cx, cy);
-  if (drag.kind === 'pan') view.panBy(cx - drag.last[0], cy - drag.last[1]);
-  if (drag.kind === 'center') setCenter(x, y);
-  if (drag.kind === 'point') drag.preview = [x, y];  // one change, recorded on release
-  drag.last = [cx, cy];
-  render();
-});
-
-canvas.addEventListener('pointerup', (event) => {
-  if (!drag) return;
-  const d = drag;
-  drag = null;
-  const [cx, cy] = view.canvasFromClient(event.clientX, event.clientY);
-  if (d.kind === 'point' && d.preview) {
-    history.update(d.index, { x_px: d.preview[0], y_px: d.preview[1] });
-  } else if (d.kind === 'pan' && !d.moved) {
+onPointerDrag(canvas, view, {
+  begin(cx, cy) {
+    if (!state.frame) return null;
+    canvas.focus();
+    const index = pointAtCanvas(cx, cy);
+    const [ccx, ccy] = view.canvasFromImage(state.center[0], state.center[1]);
+    const kind = index >= 0 ? 'point' : Math.hypot(ccx - cx, ccy - cy) <= GRAB_PX + 3 ? 'center' : 'pan';
+    drag = { kind, index, preview: null };
+    if (index >= 0) state.selected = index;
+    render();
+    return drag;
+  },
+  move(d, cx, cy, dx, dy) {
     const [x, y] = view.imageFromCanvas(cx, cy);
-    guarded('markers-error', () => addPointAt(x, y));
-    return;
-  }
-  render();
+    if (d.kind === 'pan') view.panBy(dx, dy);
+    if (d.kind === 'center') setCenter(x, y);
+    if (d.kind === 'point') d.preview = [x, y];  // one change, recorded on release
+    render();
+  },
+  end(d, cx, cy, moved) {
+    drag = null;
+    if (d.kind === 'point' && d.preview) {
+      history.update(d.index, { x_px: d.preview[0], y_px: d.preview[1] });
+    } else if (d.kind === 'pan' && !moved) {
+      const [x, y] = view.imageFromCanvas(cx, cy);
+      guarded('markers-error', () => addPointAt(x, y));
+      return;
+    }
+    render();
+  },
 });
 
 zoomOnWheel(view, render);

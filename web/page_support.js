@@ -1,5 +1,6 @@
-// What the calibration pages share: requests to the service's API with its errors as messages,
-// errors shown beside the control that caused them, downloads, and zoom by wheel and keys.
+// What the pages share: requests to the service's API with its errors as messages, its
+// WebSocket's URL, errors shown beside the control that caused them, downloads, and zoom by
+// wheel and keys.
 
 export const $ = (id) => document.getElementById(id);
 
@@ -28,6 +29,14 @@ export async function api(method, path, body, { as = 'json', type, token } = {})
   return response.json();
 }
 
+/// The URL of the service's WebSocket at `path` (with its query) on this page's own host: wss
+/// when the page came over https, ws otherwise.
+export function socketUrl(path) {
+  const scheme = location.protocol === 'https:' ? 'wss:' : 'ws:';
+  return `${scheme}//${location.host}${path}`;
+}
+
+/// Shows `error` (an Error or a message) in the element `id`; hides it for none.
 export function showError(id, error) {
   const el = $(id);
   el.textContent = error ? String(error.message || error) : '';

@@ -4,6 +4,7 @@
 
 #include "ballsight/eval/demo.hpp"
 #include "commands.hpp"
+#include "loop_demo.hpp"
 #include "option_parsing.hpp"
 
 namespace ballsight::app {
@@ -35,9 +36,9 @@ void add_demo_command(CLI::App& app) {
   cmd->add_flag("!--no-faults", args->options.loop_faults,
                 "Closed loop: skip the run with a camera failure and restarts");
   cmd->callback([args] {
-    const DemoResult result = run_demo(args->options, args->out, [](const std::string& line) {
-      std::cout << "ballsight demo: " << line << std::endl;
-    });
+    const DemoResult result = run_demo(
+        args->options, args->out, run_loop_demo,
+        [](const std::string& line) { std::cout << "ballsight demo: " << line << std::endl; });
     std::cout << "ballsight demo: " << result.images_written << " images; report "
               << result.report_html.string() << "\n";
   });

@@ -7,6 +7,7 @@
 
 #include "ballsight/core/csv_fields.hpp"
 #include "ballsight/eval/loop_eval.hpp"
+#include "ballsight/net/loopback_robot_link.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -19,6 +20,10 @@ struct EvalLoopArgs {
   bool json = false;
 };
 
+std::unique_ptr<RobotLink> connect_over_loopback(CourtService& service, NavigationHub& hub) {
+  return std::make_unique<LoopbackRobotLink>(service, hub);
+}
+
 void run_eval_loop(const EvalLoopArgs& args) {
   eval::LoopEvalOptions options = args.options;
   if (!args.systems.empty()) {
@@ -26,12 +31,13 @@ void run_eval_loop(const EvalLoopArgs& args) {
       options.systems.emplace_back(item.text);
     }
   }
-  const std::vector<eval::LoopRun> runs = eval::run_loop_eval(options, [](const eval::LoopRun& r) {
-    std::fprintf(stderr, "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m%s\n",
-                 r.system.c_str(), static_cast<unsigned long long>(r.seed),
-                 r.clustered ? "clustered" : "uniform", r.collected, r.balls, r.time_s,
-                 r.distance_m, r.never_overlapped ? "" : " (overlapped the net or fence!)");
-  });
+  const std::vector<eval::LoopRun> runs =
+      eval::run_loop_eval(options, connect_over_loopback, [](const eval::LoopRun& r) {
+        std::fprintf(stderr, "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m%s\n",
+                     r.system.c_str(), static_cast<unsigned long long>(r.seed),
+                     r.clustered ? "clustered" : "uniform", r.collected, r.balls, r.time_s,
+                     r.distance_m, r.never_overlapped ? "" : " (overlapped the net or fence!)");
+      });
   const nlohmann::json j = eval::loop_eval_json(runs);
   if (args.json) {
     std::cout << j.dump(2) << "\n";

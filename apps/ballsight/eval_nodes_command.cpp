@@ -22,7 +22,7 @@
 #include "ballsight/dds/detection_messages.hpp"
 #include "ballsight/dds/topic_io.hpp"
 #include "ballsight/eval/court_metrics.hpp"
-#include "ballsight/eval/simulated_court.hpp"
+#include "ballsight/service/simulated_court.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 

@@ -11,8 +11,8 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
-#include "ballsight/eval/tsplib.hpp"
 #include "ballsight/plan/planner.hpp"
+#include "ballsight/plan/tsplib.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 

@@ -94,7 +94,7 @@ HttpService::HttpService(const HttpServiceArgs& args, CourtService& service, Nav
     : omni_(omni_options(args, court)),
       court_calibration_(court_calibration_options(service, court)),
       started_(std::chrono::steady_clock::now()),
-      context_(service.api_context(hub)) {
+      context_(api_context(service, hub)) {
   const ListenAddress address = listen_address(args.listen);
   HttpServerOptions options;
   options.address = address.host;

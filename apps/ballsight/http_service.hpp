@@ -13,9 +13,10 @@
 
 #include "ballsight/net/api.hpp"
 #include "ballsight/net/court_calibration_api.hpp"
-#include "ballsight/net/court_service.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "ballsight/net/omni_calibration_api.hpp"
+#include "ballsight/net/service_api.hpp"
+#include "ballsight/service/court_service.hpp"
 
 namespace ballsight::app {
 

@@ -6,8 +6,8 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/net/navigation_hub.hpp"
 #include "ballsight/pipeline/capture.hpp"
+#include "ballsight/service/navigation_hub.hpp"
 
 namespace ballsight::app {
 

@@ -4,8 +4,8 @@
 #include <memory>
 #include <string>
 
+#include "ballsight/calib/lut_inspect.hpp"
 #include "ballsight/camera/image_file.hpp"
-#include "ballsight/eval/lut_inspect.hpp"
 #include "ballsight/eval/lut_plot.hpp"
 #include "commands.hpp"
 

@@ -1,5 +1,5 @@
 // `ballsight robot`: the simulated collector's controller as its own program
-// (net/collector_robot.hpp). It stops when the service has seen no ball for a while (all
+// (robot/collector_robot.hpp). It stops when the service has seen no ball for a while (all
 // collected), on SIGINT/SIGTERM, or after --max-time seconds.
 
 #include <atomic>
@@ -11,7 +11,8 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
-#include "ballsight/net/collector_robot.hpp"
+#include "ballsight/net/http_robot_link.hpp"
+#include "ballsight/robot/collector_robot.hpp"
 #include "commands.hpp"
 
 namespace ballsight::app {
@@ -39,7 +40,7 @@ void run_robot(const RobotArgs& args) {
   options.websocket = !args.long_poll;
   std::signal(SIGINT, stop_robot);
   std::signal(SIGTERM, stop_robot);
-  RobotLink link(options);
+  HttpRobotLink link(options);
   const CollectorResult r = run_collector(
       link, args.collector, g_stop,
       [](const std::string& line) { std::cout << "ballsight robot: " << line << std::endl; });

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/eval/simulated_service.hpp"
-#include "ballsight/net/site_service.hpp"
+#include "ballsight/service/simulated_service.hpp"
+#include "ballsight/service/site_service.hpp"
 #include "commands.hpp"
 #include "http_service.hpp"
 #include "option_parsing.hpp"

@@ -11,6 +11,7 @@
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "example_site.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight::test {
@@ -23,7 +24,8 @@ using test::kExampleSite;
 
 TEST(CalibrateCameraCli, OpenCVsSamplePhotos) {
   if (!fs::exists(kOpenCVSamples / "left01.jpg")) {
-    GTEST_SKIP() << kOpenCVSamples << " absent: install Debian's opencv-doc (scripts/setup does)";
+    BALLSIGHT_SKIP() << kOpenCVSamples
+                     << " absent: install Debian's opencv-doc (scripts/setup does)";
   }
   const TempDir temp;
   const CliResult r =

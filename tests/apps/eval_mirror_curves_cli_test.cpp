@@ -9,6 +9,7 @@
 
 #include "apps/run_cli.hpp"
 #include "shared_data.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
@@ -17,8 +18,8 @@ namespace {
 TEST(EvalMirrorCurvesCli, DrawsTheSimulatedMirrorsBesideEveryRealSet) {
   const auto data = test::shared_data_dir();
   if (!std::filesystem::exists(data / "real/omni/tribots-2005")) {
-    GTEST_SKIP() << "no " << data / "real/omni"
-                 << " (../shared/data absent)";
+    BALLSIGHT_SKIP() << "no " << data / "real/omni"
+                     << " (../shared/data absent)";
   }
   const test::TempDir dir;
   const test::CliResult r = test::run_cli({"eval", "mirror-curves", "--data", data.string(),

@@ -8,7 +8,7 @@
 
 #include "apps/run_cli.hpp"
 #include "ballsight/core/angle.hpp"
-#include "ballsight/eval/loop_truth.hpp"
+#include "ballsight/service/loop_truth.hpp"
 #include "ballsight/sim/robot_motion.hpp"
 #include "serve_process.hpp"
 #include "temp_dir.hpp"

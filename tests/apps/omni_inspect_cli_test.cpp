@@ -12,6 +12,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/little_endian.hpp"
 #include "shared_data.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
@@ -92,7 +93,7 @@ TEST_F(OmniInspectCli, ReportsAHandWrittenBallsightTable) {
 
 TEST_F(OmniInspectCli, FindsTheRealIrisTablesNonMonotonicRegionAndPlotsIt) {
   const auto tables = test::iris_px2cm_tables();
-  if (tables.empty()) GTEST_SKIP() << "no iris px2cm tables in " << test::shared_data_dir();
+  if (tables.empty()) BALLSIGHT_SKIP() << "no iris px2cm tables in " << test::shared_data_dir();
   const fs::path png = dir / "inspect.png";
   const test::CliResult r = inspect(
       {tables.front().string(), "--format", "iris-px2cm", "--json", "--plot", png.string()});

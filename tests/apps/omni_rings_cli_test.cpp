@@ -15,6 +15,7 @@
 #include "ballsight/calib/sample_csv.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "shared_data.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
@@ -82,7 +83,7 @@ TEST(OmniRingsCli, BadInputIsOneLineAndLeavesTheOutput) {
 TEST(OmniRingsCli, AStraightLineGivesSamplesAtItsDistanceOverTheCosine) {
   const auto dir = test::shared_data_dir() / "real/omni/minhoteam/images";
   if (!std::filesystem::exists(dir / "line_at_1.00m.png")) {
-    GTEST_SKIP() << "no " << dir << " (../shared/data absent)";
+    BALLSIGHT_SKIP() << "no " << dir << " (../shared/data absent)";
   }
   const test::TempDir tmp;
   const std::string out = (tmp / "line.csv").string();
@@ -109,8 +110,8 @@ TEST(OmniRingsCli, AStraightLineGivesSamplesAtItsDistanceOverTheCosine) {
 TEST(EvalOmniRealCli, BallsightBeatsThePolynomialOnTheRealSets) {
   const auto data = test::shared_data_dir();
   if (!std::filesystem::exists(data / "real/omni/tribots-2005")) {
-    GTEST_SKIP() << "no " << data / "real/omni"
-                 << " (../shared/data absent)";
+    BALLSIGHT_SKIP() << "no " << data / "real/omni"
+                     << " (../shared/data absent)";
   }
   const test::CliResult r = test::run_cli(
       {"eval", "omni-real", "--data", data.string(), "--methods", "poly,ballsight", "--json"});

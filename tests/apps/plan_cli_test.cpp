@@ -9,6 +9,7 @@
 
 #include "apps/run_cli.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight::test {
@@ -148,7 +149,7 @@ TEST(EvalPlanCli, SmallSizesMeetTheExactOptimum) {
 
 TEST(EvalTsplibCli, PublishedOptimaWithinOnePercent) {
   if (!fs::exists("/usr/share/doc/glpk-utils/examples/tsp/bench.txt")) {
-    GTEST_SKIP() << "glpk-utils' TSPLIB examples missing";
+    BALLSIGHT_SKIP() << "glpk-utils' TSPLIB examples missing";
   }
   const CliResult r = run_cli({"eval", "tsplib", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;

@@ -11,7 +11,7 @@
 #include "apps/run_cli.hpp"
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/core/file_io.hpp"
-#include "ballsight/eval/loop_truth.hpp"
+#include "ballsight/service/loop_truth.hpp"
 #include "http_request.hpp"
 #include "simulated_site.hpp"
 #include "temp_dir.hpp"

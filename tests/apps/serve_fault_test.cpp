@@ -7,7 +7,7 @@
 #include <string>
 
 #include "ballsight/core/file_io.hpp"
-#include "ballsight/net/robot_link.hpp"
+#include "ballsight/net/http_robot_link.hpp"
 #include "serve_process.hpp"
 #include "temp_dir.hpp"
 
@@ -41,7 +41,7 @@ TEST(ServeFault, TheRobotsClientOutlivesAKilledService) {
   options.port = port;
   options.token = read_file(token_file).substr(0, 32);
   options.backoff = {milliseconds(50), milliseconds(500), 2.0};
-  RobotLink link(options);
+  HttpRobotLink link(options);
   std::optional<LinkUpdate> before = next_of(link, "");
   ASSERT_TRUE(before);
   std::uint64_t seq = before->seq;
@@ -58,9 +58,12 @@ TEST(ServeFault, TheRobotsClientOutlivesAKilledService) {
       std::make_unique<ServeProcess>(serve_args("127.0.0.1:" + std::to_string(port), token_file));
   ASSERT_EQ(service->port(), port);
   std::optional<LinkUpdate> after;
-  while ((after = next_of(link, "")) && after->service_id == before->service_id) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while ((after = next_of(link, "")) && after->service_id == before->service_id &&
+         std::chrono::steady_clock::now() < until) {
   }
   ASSERT_TRUE(after) << link.status().last_error;
+  ASSERT_NE(after->service_id, before->service_id) << "no update of the restarted service in 60 s";
   EXPECT_GE(link.status().reconnects, 1);
   // Followed from the new run's latest update, then on without a gap.
   const std::optional<LinkUpdate> then = next_of(link, after->service_id);

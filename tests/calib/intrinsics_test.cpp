@@ -15,6 +15,7 @@
 #include "ballsight/sim/chessboard.hpp"
 #include "ballsight/sim/chessboard_poses.hpp"
 #include "ballsight/sim/court_rig.hpp"
+#include "skip.hpp"
 
 namespace ballsight {
 namespace {
@@ -142,7 +143,7 @@ TEST(Intrinsics, TooFewViewsIsAnInputError) {
 TEST(Intrinsics, RealPhotosOfOpenCVsSample) {
   const std::filesystem::path dir = "/usr/share/doc/opencv-doc/examples/data";
   if (!std::filesystem::exists(dir / "left01.jpg")) {
-    GTEST_SKIP() << dir << " absent: install Debian's opencv-doc (scripts/setup does)";
+    BALLSIGHT_SKIP() << dir << " absent: install Debian's opencv-doc (scripts/setup does)";
   }
   const ChessboardPattern pattern{9, 6, 0.025};
   const ChessboardImages images =

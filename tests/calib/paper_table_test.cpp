@@ -9,6 +9,7 @@
 #include "ballsight/calib/omni_model_fit.hpp"
 #include "ballsight/calib/sample_csv.hpp"
 #include "shared_data.hpp"
+#include "skip.hpp"
 
 namespace ballsight {
 namespace {
@@ -16,7 +17,7 @@ namespace {
 TEST(PaperTableI, EveryMethodFitsAndPredicts) {
   const std::filesystem::path path =
       test::shared_data_dir() / "paper-tables" / "table1_training_samples.csv";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path << " (shared data absent)";
+  if (!std::filesystem::exists(path)) BALLSIGHT_SKIP() << "no " << path << " (shared data absent)";
   const std::vector<PolarSample> samples = read_polar_samples_csv(path);
   ASSERT_EQ(samples.size(), 17u);
   const OmniImage image = omni_image_for_samples(samples, std::nullopt, std::nullopt);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ballsight/core/error.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
@@ -93,7 +94,7 @@ TEST(CameraFile, UsesOpenCVKeyNamesAndOpenCVCanReadIt) {
 TEST(CameraFile, ReadsOpenCVsOwnCalibrationSample) {
   const std::filesystem::path sample =
       "/usr/share/doc/opencv-doc/examples/data/left_intrinsics.yml";
-  if (!std::filesystem::exists(sample)) GTEST_SKIP() << sample << " absent (Debian opencv-doc)";
+  if (!std::filesystem::exists(sample)) BALLSIGHT_SKIP() << sample << " absent (Debian opencv-doc)";
   const CameraCalibration c = read_camera_file(sample);
   EXPECT_EQ(c.intrinsics.width, 640);
   EXPECT_EQ(c.intrinsics.height, 480);

@@ -12,6 +12,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "camera/rig_tables.hpp"
 #include "shared_data.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
@@ -44,7 +45,7 @@ RadialDistanceCm true_radial_cm(const OmniRig& rig, const Vec2& center) {
 
 TEST(IrisLut, ReadsRealTablesAsRawLittleEndianInt16) {
   const auto tables = iris_px2cm_tables();
-  if (tables.empty()) GTEST_SKIP() << "no iris px2cm tables in " << test::shared_data_dir();
+  if (tables.empty()) BALLSIGHT_SKIP() << "no iris px2cm tables in " << test::shared_data_dir();
   for (const fs::path& path : tables) {
     SCOPED_TRACE(path.string());
     const IrisLut lut = read_iris_lut(path, IrisLutKind::px2cm);

@@ -4,6 +4,7 @@
 
 #include "ballsight/dds/court_messages.hpp"
 #include "dds_domain.hpp"
+#include "wait_until.hpp"
 
 namespace ballsight::dds {
 namespace {
@@ -51,7 +52,8 @@ TEST(CourtTopics, EveryUpdateReachesSubscribersAndLateJoinersGetTheLatestRoute) 
   EXPECT_EQ(pose.position, Vec2(0.5, 0.5));
 
   const std::uint64_t seq = hub.publish(update_with_balls(5));
-  while (topics.written() < 2) std::this_thread::sleep_for(10ms);
+  ASSERT_TRUE(test::wait_until([&] { return topics.written() >= 2; }))
+      << "the second update was never written";
   // Late joiners (with the transient-local QoS of the latest values).
   Reader<BallArrayMsg> estimates(participant, "ball_estimates", {true, 1});
   Reader<PathMsg> route(participant, "route", {true, 1});

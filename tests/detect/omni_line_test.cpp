@@ -18,6 +18,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/statistics.hpp"
 #include "shared_data.hpp"
+#include "skip.hpp"
 
 namespace ballsight {
 namespace {
@@ -119,7 +120,7 @@ TEST(OmniLine, NoLineNearTheDirectionGivenIsAnError) {
 TEST(OmniLine, MinhoTeamFramesAgreeWithEachOtherAndTheTeamsProfile) {
   const auto dir = test::shared_data_dir() / "real/omni/minhoteam";
   if (!std::filesystem::exists(dir / "mirror_profiles.csv")) {
-    GTEST_SKIP() << "no " << dir << " (../shared/data absent)";
+    BALLSIGHT_SKIP() << "no " << dir << " (../shared/data absent)";
   }
   std::map<double, double> profile;  // cm -> px, profile 4
   std::ifstream csv(dir / "mirror_profiles.csv");

@@ -12,6 +12,7 @@
 #include "ballsight/core/conventions.hpp"
 #include "ballsight/core/error.hpp"
 #include "shared_data.hpp"
+#include "skip.hpp"
 
 namespace ballsight {
 namespace {
@@ -115,7 +116,7 @@ TEST(OmniRings, TooManyRingsAskedIsAnError) {
 TEST(OmniRings, AgreesWithTheCncMslLineDetector) {
   const auto dir = test::shared_data_dir() / "real/omni/cnc-msl-nase-2016-03";
   if (!std::filesystem::exists(dir / "clearedLP_nase_2016-03-30.txt")) {
-    GTEST_SKIP() << "no " << dir << " (../shared/data absent)";
+    BALLSIGHT_SKIP() << "no " << dir << " (../shared/data absent)";
   }
   std::ifstream rows(dir / "clearedLP_nase_2016-03-30.txt");
   std::vector<double> thetas;

@@ -9,6 +9,7 @@
 
 #include "ballsight/core/error.hpp"
 #include "shared_data.hpp"
+#include "skip.hpp"
 
 namespace ballsight {
 namespace {
@@ -67,7 +68,7 @@ TEST(TennisReal, BallsightBeatsTheReportOnRealPhotos) {
   options.data_dir = test::shared_data_dir();
   options.timing_runs = 1;
   if (load_labelled_photo_sets(options.data_dir).empty())
-    GTEST_SKIP() << "no labelled photos under " << options.data_dir / "real" / "tennis";
+    BALLSIGHT_SKIP() << "no labelled photos under " << options.data_dir / "real" / "tennis";
   const TennisRealResult result = run_tennis_real(options);
   ASSERT_EQ(result.methods.size(), 2u);
   const BoxMatch& ballsight = result.methods[0].total;

@@ -13,6 +13,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/pipeline/omni_calibration.hpp"
 #include "ballsight/sim/omni_dataset.hpp"
+#include "wait_until.hpp"
 
 namespace ballsight {
 namespace {
@@ -182,10 +183,13 @@ TEST(OmniCalibrationApi, BadRequestsNameWhatIsWrong) {
                              "image": {"width": 64, "height": 64},
                              "points": [{"x_px": 40, "y_px": 32, "distance_cm": 100}]})",
                          202);
-  while (fit["state"] == "running") {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    fit = f.call_json("GET", "/api/v1/omni/fits/" + fit["fit"].get<std::string>(), "", 200);
-  }
+  ASSERT_TRUE(test::wait_until(
+      [&] {
+        fit = f.call_json("GET", "/api/v1/omni/fits/" + fit["fit"].get<std::string>(), "", 200);
+        return fit["state"] != "running";
+      },
+      std::chrono::minutes(2), std::chrono::milliseconds(10)))
+      << "the fit still runs after 2 minutes";
   EXPECT_EQ(fit["state"], "failed");
   EXPECT_FALSE(fit["error"].get<std::string>().empty());
 }

@@ -1,33 +1,32 @@
 // The robot's client against the real server on 127.0.0.1: every update once and in order, over
 // the stream or by long-polling; writes reach the service; the link survives the service going
 // away and coming back, on the same run (resumed) or a new one (followed from its start).
-#include "ballsight/net/robot_link.hpp"
-
 #include <gtest/gtest.h>
 
 #include <thread>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/net/http_robot_link.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "sample_update.hpp"
 
 namespace ballsight {
 namespace {
 
-constexpr const char* kToken = "0123456789abcdef0123";
+constexpr const char* kLinkToken = "0123456789abcdef0123";
 using std::chrono::milliseconds;
 
 HttpServerOptions server_options(unsigned short port = 0) {
   HttpServerOptions o;
   o.port = port;
-  o.token = kToken;
+  o.token = kLinkToken;
   return o;
 }
 
 RobotLinkOptions link_options(unsigned short port, bool websocket) {
   RobotLinkOptions o;
   o.port = port;
-  o.token = kToken;
+  o.token = kLinkToken;
   o.websocket = websocket;
   o.poll_wait = milliseconds(500);
   o.backoff = {milliseconds(20), milliseconds(200), 2.0};
@@ -62,7 +61,7 @@ TEST_P(RobotLinkTransports, EveryUpdateOnceInOrderAndWritesReachTheService) {
   ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
   HttpServer server(server_options(), context);
   hub.publish(update(0.5));
-  RobotLink link(link_options(server.port(), GetParam()));
+  HttpRobotLink link(link_options(server.port(), GetParam()));
   const std::optional<LinkUpdate> first = link.next(milliseconds(5000));
   ASSERT_TRUE(first);
   EXPECT_EQ(first->seq, 1u);
@@ -96,7 +95,7 @@ TEST_P(RobotLinkTransports, ResumesAfterTheServiceComesBackAndFollowsANewRun) {
   auto server = std::make_unique<HttpServer>(server_options(), context);
   const unsigned short port = server->port();
   hub.publish(update(0));
-  RobotLink link(link_options(port, GetParam()));
+  HttpRobotLink link(link_options(port, GetParam()));
   EXPECT_EQ(take(link, 1), range(1, 1));  // a new client starts at the latest
   for (int k = 0; k < 4; ++k) hub.publish(update(k));
   EXPECT_EQ(take(link, 4), range(2, 5));

@@ -2,7 +2,7 @@
 // A navigation update for the net layer's tests: the robot at `robot`, one ball at (3, 4), a
 // route from the robot over the ball.
 
-#include "ballsight/net/navigation_hub.hpp"
+#include "ballsight/service/navigation_hub.hpp"
 
 namespace ballsight::test {
 

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "ballsight/net/http_server.hpp"
+#include "wait_until.hpp"
 
 namespace ballsight {
 namespace {
@@ -51,6 +52,13 @@ asio::awaitable<void> read_stream(unsigned short port, Received& out, std::uint6
     co_await beast::get_lowest_layer(ws).async_connect(
         tcp::endpoint(asio::ip::make_address("127.0.0.1"), port), asio::use_awaitable);
     co_await ws.async_handshake("127.0.0.1", "/api/v1/stream", asio::use_awaitable);
+    // Every read has a deadline: a reader that hears nothing for 30 s fails.
+    websocket::stream_base::timeout deadline{};
+    deadline.handshake_timeout = std::chrono::seconds(30);
+    deadline.idle_timeout = std::chrono::seconds(30);
+    deadline.keep_alive_pings = false;
+    beast::get_lowest_layer(ws).expires_never();
+    ws.set_option(deadline);
     beast::flat_buffer buffer;
     while (out.seqs.empty() || out.seqs.back() < last) {
       co_await ws.async_read(buffer, asio::use_awaitable);
@@ -88,8 +96,14 @@ TEST(ServiceLoad, HundredClientsAtThirtyHertzGetEveryUpdateAndAStalledOneHoldsUp
     asio::co_spawn(io, read_stream(server.port(), r, kUpdates), asio::detached);
   }
   std::thread clients([&] { io.run(); });
-  while (server.clients().size() < kClients + 1)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const bool all_connected =
+      test::wait_until([&] { return server.clients().size() >= kClients + 1; });
+  if (!all_connected) {  // the readers end; the assertion below says why
+    io.stop();
+    clients.join();
+  }
+  ASSERT_TRUE(all_connected) << server.clients().size() << " of " << kClients + 1
+                             << " clients connected";
 
   // The pipeline: 30 updates a second, each publish timed.
   const auto start = Clock::now();

@@ -49,16 +49,42 @@ export async function launchBrowser(t) {
   return { bin, browser };
 }
 
-/** Collects the page's errors, failed requests and requests to any host but `origin`. */
-export function watchPage(page, origin) {
+/**
+ * Collects the page's errors, its console's errors and warnings, failed requests and requests to
+ * any host but `origin`. A page shows no console error or warning in normal use; the one a test
+ * provokes on purpose is Chromium's note of an API answer with a status of `allowStatuses` (the
+ * page shows that error beside its control, and the test checks it there).
+ */
+export async function watchPage(page, origin, { allowStatuses = [] } = {}) {
   const errors = [];
-  const ws = origin.replace(/^http:/, "ws:");
+  // The tests read canvas pixels with window.pixelAt(canvas, x, y) -> [r, g, b, a]: through a
+  // 1x1 canvas made for reading, so that the page's own canvases are never read back (Chromium
+  // warns of repeated getImageData on a canvas not made for it).
+  await page.addInitScript(() => {
+    window.pixelAt = (canvas, x, y) => {
+      const scratch = document.createElement("canvas");
+      scratch.width = scratch.height = 1;
+      const ctx = scratch.getContext("2d", { willReadFrequently: true });
+      ctx.drawImage(canvas, x, y, 1, 1, 0, 0, 1, 1);
+      return Array.from(ctx.getImageData(0, 0, 1, 1).data);
+    };
+  });
+  const ws = origin.replace(/^http/, "ws");
   page.on("pageerror", (e) => errors.push(e.message));
+  page.on("console", (message) => {
+    if (message.type() !== "error" && message.type() !== "warning") return;
+    const status = /the server responded with a status of (\d+)/.exec(message.text());
+    if (status && allowStatuses.includes(Number(status[1]))) return;
+    errors.push(`console ${message.type()}: ${message.text()} (${message.location().url})`);
+  });
   page.on("requestfailed", (r) => errors.push(`request failed: ${r.url()}`));
   page.on("request", (r) => {
     const url = r.url();
-    if (!url.startsWith(origin) && !url.startsWith(ws) && !url.startsWith("blob:"))
+    if (!url.startsWith(origin) && !url.startsWith(ws) && !url.startsWith("blob:") && !url.startsWith("data:"))
       errors.push(`request to another host: ${url}`);
+  });
+  page.on("response", (r) => {
+    if (r.status() === 404 && !allowStatuses.includes(404)) errors.push(`404: ${r.url()}`);
   });
   return errors;
 }

@@ -54,7 +54,7 @@ test("the court calibration page in Chromium", { timeout: 240_000 }, async (t) =
   const dir = mkdtempSync(join(tmpdir(), "ballsight-court-page-"));
   t.after(() => rmSync(dir, { recursive: true, force: true }));
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
-  const pageErrors = watchPage(page, origin);
+  const pageErrors = await watchPage(page, origin, { allowStatuses: [422] }); // the bad input's answers
   await page.goto(`${origin}/court-calibration`);
   await page.evaluate(() => window.ballsightCourt.ready);
   const site = await (await fetch(`${origin}/api/v1/court-calibration/site`)).json();

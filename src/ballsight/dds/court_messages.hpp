@@ -12,7 +12,7 @@
 
 #include "ballsight/dds/message_arena.hpp"
 #include "ballsight/dds/message_types.hpp"
-#include "ballsight/net/navigation_hub.hpp"
+#include "ballsight/service/navigation_hub.hpp"
 
 namespace ballsight::dds {
 

@@ -10,7 +10,7 @@
 #include "ballsight/dds/frame_sets.hpp"
 #include "ballsight/dds/message_types.hpp"
 #include "ballsight/dds/topic_io.hpp"
-#include "ballsight/net/court_service.hpp"
+#include "ballsight/service/court_service.hpp"
 
 namespace ballsight::dds {
 

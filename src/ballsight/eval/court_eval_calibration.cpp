@@ -78,36 +78,6 @@ CalibrationImages render_calibration_images(const sim::CourtRig& rig, int views,
   return images;
 }
 
-Site simulated_site(const sim::CourtRig& rig) {
-  Site site;
-  site.court.length_m = rig.court.length_m;
-  site.court.width_m = rig.court.doubles_width_m;
-  site.court.area_length_m = rig.court.surround_length_m;
-  site.court.area_width_m = rig.court.surround_width_m;
-  site.court.net = rig.court.net.enabled;
-  site.court.net_posts_outside_m = rig.court.net.post_outside_doubles_m;
-  site.court.net_height_posts_m = rig.court.net.post_height_m;
-  site.court.net_height_centre_m = rig.court.net.centre_height_m;
-  site.robot.collector_width_m = 0.70;  // the report's collector (section 7.8)
-  const std::vector<Vec3> references = sim::reference_ball_positions(rig.court);
-  for (size_t i = 0; i < references.size(); ++i)
-    site.reference_balls.push_back({"reference " + std::to_string(i), references[i].head<2>()});
-  site.colours.reference_ball = Rgb::from_bgr(rig.court.reference_ball_bgr);
-  site.colours.robot_front = Rgb::from_bgr(rig.court.robot_front_marker_bgr);
-  site.colours.robot_back = Rgb::from_bgr(rig.court.robot_back_marker_bgr);
-  for (size_t c = 0; c < rig.cameras.size(); ++c) {
-    // The pole's corner, from the camera's side of the court (its rough place on the site plan).
-    const Vec3 center = rig.cameras[c].center_in_field();
-    const Vec3 hint(std::copysign(0.5 * rig.court.surround_length_m, center.x()),
-                    std::copysign(0.5 * rig.court.surround_width_m, center.y()), 5.0);
-    SiteCamera camera;
-    camera.name = "camera " + std::to_string(c);
-    camera.position_hint_m = hint;
-    site.cameras.push_back(camera);
-  }
-  return site;
-}
-
 HsvRange report_reference_box(const Rgb& colour) {
   const int hue = opencv_hue(colour.bgr());
   return {{std::max(0, hue - 12), 70, 40}, {std::min(179, hue + 12), 255, 255}};

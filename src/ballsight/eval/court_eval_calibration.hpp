@@ -17,6 +17,7 @@
 
 #include "ballsight/camera/field_camera.hpp"
 #include "ballsight/detect/seed_detector.hpp"
+#include "ballsight/service/simulated_court.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/world/site.hpp"
 
@@ -31,11 +32,6 @@ struct CalibrationImages {
 /// robot parked on it), rendered with sensor noise `noise_sigma`; deterministic for a seed.
 CalibrationImages render_calibration_images(const sim::CourtRig& rig, int views, double noise_sigma,
                                             std::uint64_t seed);
-
-/// The site file a user of the simulated court would write: court size, the reference balls'
-/// floor positions, the colours, and each camera's pole corner as a rough position hint (5 m
-/// high, at the corner of the run-off area; not the simulator's exact pose).
-Site simulated_site(const sim::CourtRig& rig);
 
 /// The report's HSV box for reference balls of the site's colour: its OpenCV hue (0-179) +-12,
 /// saturation and value from 70 and 40 (0-22 for the orange table-tennis balls).

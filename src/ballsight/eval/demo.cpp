@@ -11,7 +11,6 @@
 #include "ballsight/calib/polynomial_model.hpp"
 #include "ballsight/camera/ground_map_io.hpp"
 #include "ballsight/camera/image_file.hpp"
-#include "ballsight/core/child_process.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
@@ -224,6 +223,7 @@ std::string loop_section(const std::vector<LoopDemoRun>& runs, const fs::path& o
 }
 
 DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
+                    const LoopDemoRunner& run_loop,
                     const std::function<void(const std::string&)>& progress) {
   options.validate();
   ensure_directory(out_dir);
@@ -293,9 +293,8 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
   loop.balls = options.loop_balls;
   loop.max_time_s = options.loop_max_time_s;
   loop.faults = options.loop_faults;
-  loop.program = own_executable();
   const auto loop_start = Clock::now();
-  const std::vector<LoopDemoRun> runs = run_loop_demo(loop, out_dir, progress);
+  const std::vector<LoopDemoRun> runs = run_loop(loop, out_dir, progress);
   std::vector<Figure> loop_figs;
   const std::string loop_results = loop_section(runs, out_dir, loop_figs);
   const std::string loop_intro =

@@ -3,12 +3,15 @@
 // It renders both simulated rigs, calibrates the omni camera from the markers it finds and places
 // the ball in every frame (ballsight's pipeline beside the paper's), and calibrates and runs both
 // court methods against the truth, plans a collection route, and closes the loop: the service
-// and the robot as two processes collect a simulated court's balls (eval/loop_demo.hpp).
+// and the robot as two processes collect a simulated court's balls (`run_loop`: the command line
+// starts them, apps/ballsight/loop_demo.hpp).
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
+
+#include "ballsight/eval/loop_demo.hpp"
 
 namespace ballsight {
 
@@ -31,8 +34,10 @@ struct DemoResult {
 
 /// Runs the demo into `out_dir` (created if missing): omni/ and court/ data sets, report.html and
 /// report.md.
-/// `progress` hears what the demo is doing (the closed loop's simulated time, balls left).
+/// `run_loop` runs the closed loop's systems; `progress` hears what the demo is doing (the closed
+/// loop's simulated time, balls left).
 DemoResult run_demo(const DemoOptions& options, const std::filesystem::path& out_dir,
+                    const LoopDemoRunner& run_loop,
                     const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace ballsight

@@ -1,10 +1,8 @@
 #pragma once
-// The demo's closed loop (`ballsight demo`): for each system (eval/loop_eval.hpp) the navigation
-// service on the simulated court (`ballsight serve --sim`) and the robot (`ballsight robot`) as
-// two processes talking over loopback HTTP/WebSocket, until every ball is collected, the robot
-// sees none left, or the time limit. A last run repeats ballsight's with faults: a camera dies,
-// the service is killed and started again (the court resumes from its record), the robot is
-// killed and started again. Each run is scored on the court's record (eval/loop_truth.hpp).
+// The demo's closed loop (`ballsight demo`) as values: what a run of one system was and its score
+// on the court's record (service/loop_truth.hpp), and the runs side by side. Running them (the
+// service and the robot as two processes) is the command line's business:
+// apps/ballsight/loop_demo.hpp.
 
 #include <cstdint>
 #include <filesystem>
@@ -12,16 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "ballsight/eval/loop_truth.hpp"
+#include "ballsight/service/loop_truth.hpp"
 
 namespace ballsight {
 
 struct LoopDemoOptions {
   std::uint64_t seed = 1;
   int balls = 20;
-  double max_time_s = 150.0;      // simulated, per run
-  bool faults = true;             // the fourth run, with a camera failure and both restarts
-  std::filesystem::path program;  // ballsight itself (own_executable())
+  double max_time_s = 150.0;  // simulated, per run
+  bool faults = true;         // the fourth run, with a camera failure and both restarts
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -41,9 +38,9 @@ struct LoopDemoRun {
 };
 
 /// Runs every system into out_dir/loop/<name>/; `progress` hears a line now and then.
-std::vector<LoopDemoRun> run_loop_demo(const LoopDemoOptions& options,
-                                       const std::filesystem::path& out_dir,
-                                       const std::function<void(const std::string&)>& progress);
+using LoopDemoRunner = std::function<std::vector<LoopDemoRun>(
+    const LoopDemoOptions& options, const std::filesystem::path& out_dir,
+    const std::function<void(const std::string&)>& progress)>;
 
 /// The runs side by side: balls collected, time to collect all, distance, latency, gaps.
 std::string loop_demo_table(const std::vector<LoopDemoRun>& runs);

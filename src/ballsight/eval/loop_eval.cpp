@@ -6,10 +6,9 @@
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
-#include "ballsight/eval/loop_truth.hpp"
 #include "ballsight/eval/wall_clock.hpp"
-#include "ballsight/net/collector_robot.hpp"
-#include "ballsight/net/http_server.hpp"
+#include "ballsight/robot/collector_robot.hpp"
+#include "ballsight/service/loop_truth.hpp"
 
 namespace ballsight::eval {
 
@@ -23,7 +22,7 @@ const std::vector<LoopSystem>& loop_systems() {
 }
 
 LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
-                 const std::filesystem::path& record) {
+                 const RobotConnector& connect, const std::filesystem::path& record) {
   SimulatedServiceOptions options;
   options.truth_out = record;
   options.seed = scene.seed;
@@ -34,21 +33,13 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   options.lockstep = true;
   SimulatedCourtService service(options);
   NavigationHub hub;
-  ApiContext context = service.api_context(hub);
-  HttpServerOptions server_options;
-  server_options.port = 0;
-  server_options.token = random_hex(32);
-  HttpServer server(server_options, context);
-  RobotLinkOptions link_options;
-  link_options.port = server.port();
-  link_options.token = server_options.token;
-  RobotLink link(link_options);
+  const std::unique_ptr<RobotLink> link = connect(service, hub);
   const Pose2D start = service.robot_start();
   std::atomic<bool> stop{false};
   std::thread court([&] { service.run(hub, stop); });
   std::atomic<bool> robot_done{false};
   std::thread robot([&] {
-    run_collector(link, {}, stop);
+    run_collector(*link, {}, stop);
     robot_done = true;
   });
   // Until the court is empty, out of time (simulated), or the robot sees no ball left.
@@ -60,8 +51,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   stop = true;
   robot.join();
   court.join();
-  link.stop();
-  server.stop();
+  link->stop();
 
   // The court is stopped from here, at wall-clock moments: a run is scored on its first
   // max_time_s simulated seconds, the same ticks every time.
@@ -86,7 +76,7 @@ void LoopEvalOptions::validate() const {
   }
 }
 
-std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options,
+std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotConnector& connect,
                                    const std::function<void(const LoopRun&)>& progress) {
   options.validate();
   std::vector<LoopRun> runs;
@@ -106,7 +96,7 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options,
               ? std::filesystem::path()
               : options.record_dir / (system.name + "-" + std::to_string(scene.seed) + ".jsonl");
       if (!record.empty()) ensure_directory(options.record_dir);
-      runs.push_back(run_loop(system, scene, options.max_time_s, record));
+      runs.push_back(run_loop(system, scene, options.max_time_s, connect, record));
       if (progress) progress(runs.back());
     }
   }

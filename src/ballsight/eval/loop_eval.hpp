@@ -2,17 +2,20 @@
 // `ballsight eval loop`: the closed loop on simulated scenes, per system: the report's pipeline
 // with its priority planner ("report"), ballsight's pipeline with the priority planner
 // ("ballsight-priority"), and ballsight's pipeline and planner ("ballsight"). Each run is the real
-// loop in one process: the simulated court service, the HTTP server on a free loopback port and
-// the collector driving over RobotLink, scored on the court's recorded truth.
+// loop in one process: the simulated court service and the collector driving over a RobotLink
+// (`ballsight eval loop`: API v1 on a free loopback port, net/loopback_robot_link.hpp), scored on
+// the court's recorded truth.
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "ballsight/eval/simulated_service.hpp"
+#include "ballsight/robot/robot_link.hpp"
+#include "ballsight/service/simulated_service.hpp"
 
 namespace ballsight::eval {
 
@@ -46,10 +49,15 @@ struct LoopRun {
   bool never_overlapped = true;  // the net and the fence (checked on every tick's true pose)
 };
 
+/// How the robot reaches the service in a run: a link to `service`'s updates in `hub` that owns
+/// whatever carries it (stopping the link stops that too).
+using RobotConnector =
+    std::function<std::unique_ptr<RobotLink>(CourtService& service, NavigationHub& hub)>;
+
 /// One scene, one system, until every ball is collected or `max_time_s` of simulated time.
-/// `record`: where the court's record goes (eval/loop_truth.hpp), empty for nowhere.
+/// `record`: where the court's record goes (service/loop_truth.hpp), empty for nowhere.
 LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
-                 const std::filesystem::path& record = {});
+                 const RobotConnector& connect, const std::filesystem::path& record = {});
 
 struct LoopEvalOptions {
   std::uint64_t seed = 1;
@@ -64,7 +72,7 @@ struct LoopEvalOptions {
 };
 
 /// Every system on every scene; `progress` hears each run as it ends.
-std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options,
+std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotConnector& connect,
                                    const std::function<void(const LoopRun&)>& progress = {});
 
 /// {"systems": {"<name>": {"collected_fraction", "time_s_mean", "distance_m_mean",

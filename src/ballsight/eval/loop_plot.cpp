@@ -13,12 +13,12 @@ namespace ballsight {
 namespace {
 
 constexpr double kPixelsPerM = 32.0;
-constexpr int kColormap = cv::COLORMAP_VIRIDIS;
+constexpr int kTimeColormap = cv::COLORMAP_VIRIDIS;
 
 cv::Scalar colormap_colour(double share) {
   cv::Mat1b v(1, 1, static_cast<uchar>(std::clamp(share, 0.0, 1.0) * 255.0));
   cv::Mat c;
-  cv::applyColorMap(v, c, kColormap);
+  cv::applyColorMap(v, c, kTimeColormap);
   const cv::Vec3b bgr = c.at<cv::Vec3b>(0, 0);
   return {static_cast<double>(bgr[0]), static_cast<double>(bgr[1]), static_cast<double>(bgr[2])};
 }
@@ -81,7 +81,7 @@ cv::Mat draw_loop_map(const LoopTruth& truth, const std::string& title, int rout
   cv::arrowedLine(image, px(truth.robot_start.position),
                   px(truth.robot_start.position + 1.2 * forward), cv::Scalar(20, 20, 20), 3,
                   cv::LINE_AA, 0, 0.3);
-  draw_color_bar(image, {width - bar + 20, top + 20, 20, height - top - 80}, kColormap, 0.0, end_s,
+  draw_color_bar(image, {width - bar + 20, top + 20, 20, height - top - 80}, kTimeColormap, 0.0, end_s,
                  "collected (s)");
   cv::rectangle(image, {0, 0, image.cols, top}, cv::Scalar::all(255), cv::FILLED);
   draw_text(image, title, {10, 24}, 0.6);

@@ -1,5 +1,5 @@
 #pragma once
-// Pictures of a closed-loop run (eval/loop_truth.hpp): the court from above with the robot's true
+// Pictures of a closed-loop run (service/loop_truth.hpp): the court from above with the robot's true
 // path, the published route at a few moments, and the balls coloured by when they were collected
 // (grey with a red cross: never); and the per-update latency at the robot.
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ballsight/eval/loop_truth.hpp"
+#include "ballsight/service/loop_truth.hpp"
 
 namespace ballsight {
 

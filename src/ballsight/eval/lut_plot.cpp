@@ -15,7 +15,7 @@ namespace {
 
 constexpr int kWidth = 1500;
 constexpr int kHeight = 730;
-constexpr int kColormap = cv::COLORMAP_TURBO;
+constexpr int kDistanceColormap = cv::COLORMAP_TURBO;
 const cv::Scalar kMarker(40, 40, 220);
 const cv::Scalar kInvalid(235, 235, 235);
 
@@ -107,7 +107,7 @@ void draw_heat_map(cv::Mat& figure, const InspectedLut& lut, const LutInspection
   const double scale = std::min(box.width / static_cast<double>(image.cols),
                                 box.height / static_cast<double>(image.rows));
   const cv::Size size(static_cast<int>(image.cols * scale), static_cast<int>(image.rows * scale));
-  cv::Mat coloured = colorize(image, kColormap, 0.0, max_cm, kInvalid);
+  cv::Mat coloured = colorize(image, kDistanceColormap, 0.0, max_cm, kInvalid);
   cv::Mat resized;
   cv::resize(coloured, resized, size, 0.0, 0.0, cv::INTER_NEAREST);
   const cv::Rect area(box.x, box.y, size.width, size.height);
@@ -135,7 +135,7 @@ void draw_heat_map(cv::Mat& figure, const InspectedLut& lut, const LutInspection
             {box.x, box.y - 12}, 0.6);
   draw_text(figure, "white circle: monotonic limit; grey: no value",
             {box.x, area.y + area.height + 22}, 0.45);
-  draw_color_bar(figure, cv::Rect(box.x + box.width + 25, box.y, 22, area.height), kColormap, 0.0,
+  draw_color_bar(figure, cv::Rect(box.x + box.width + 25, box.y, 22, area.height), kDistanceColormap, 0.0,
                  max_cm, "cm");
 }
 

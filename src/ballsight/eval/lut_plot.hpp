@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <opencv2/core.hpp>
 
-#include "ballsight/eval/lut_inspect.hpp"
+#include "ballsight/calib/lut_inspect.hpp"
 
 namespace ballsight {
 

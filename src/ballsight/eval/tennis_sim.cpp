@@ -149,10 +149,12 @@ std::string tennis_sim_table(const TennisSimResult& result) {
     row(method.method, "all", method.total);
   }
   out << "\nrecall by ball radius, px (balls)\n" << std::left << std::setw(11) << "method";
-  for (const RadiusRecall& range : recall_by_radius({}, kRadiusEdges))
-    out << std::right << std::setw(13)
-        << fixed(range.min_radius_px, 0) +
-               (std::isfinite(range.max_radius_px) ? "-" + fixed(range.max_radius_px, 0) : "+");
+  for (const RadiusRecall& range : recall_by_radius({}, kRadiusEdges)) {
+    std::string label = fixed(range.min_radius_px, 0);
+    label += std::isfinite(range.max_radius_px) ? "-" : "+";
+    if (std::isfinite(range.max_radius_px)) label += fixed(range.max_radius_px, 0);
+    out << std::right << std::setw(13) << label;
+  }
   out << "\n";
   for (const TennisSimMethod& method : result.methods) {
     out << std::left << std::setw(11) << method.method << std::right;

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "ballsight/core/field_rect.hpp"
-#include "ballsight/net/camera_view.hpp"
-#include "ballsight/net/navigation_hub.hpp"
 #include "ballsight/plan/planning_problem.hpp"
+#include "ballsight/service/camera_view.hpp"
+#include "ballsight/service/navigation_hub.hpp"
 #include "ballsight/world/site.hpp"
 
 namespace ballsight {

@@ -14,19 +14,6 @@
 
 namespace ballsight {
 
-DrivableCourt drivable_court(const SiteCourt& court) {
-  DrivableCourt out;
-  out.area_max_m = Vec2(court.area_length_m / 2.0, court.area_width_m / 2.0);
-  out.area_min_m = -out.area_max_m;
-  if (court.net) {
-    out.net = CourtNet{court.width_m / 2.0 + court.net_posts_outside_m, court.net_clearance_m,
-                       court.net_post_clearance_m, court.net_travel_clearance_m};
-  } else {
-    out.net.reset();
-  }
-  return out;
-}
-
 PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
                                       std::vector<Vec2> balls) {
   PlanningProblem problem;

@@ -14,9 +14,6 @@
 
 namespace ballsight {
 
-/// The fenced area (centred on the court) and the net of a site.
-DrivableCourt drivable_court(const SiteCourt& court);
-
 /// A problem on the site: its court, the robot's limits and collector; `robot` is the pose of the
 /// robot's reference point (the collector mouth is `robot.collector_x_m` ahead of it).
 PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,

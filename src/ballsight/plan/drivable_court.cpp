@@ -170,4 +170,17 @@ DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2
   return path;
 }
 
+DrivableCourt drivable_court(const SiteCourt& court) {
+  DrivableCourt out;
+  out.area_max_m = Vec2(court.area_length_m / 2.0, court.area_width_m / 2.0);
+  out.area_min_m = -out.area_max_m;
+  if (court.net) {
+    out.net = CourtNet{court.width_m / 2.0 + court.net_posts_outside_m, court.net_clearance_m,
+                       court.net_post_clearance_m, court.net_travel_clearance_m};
+  } else {
+    out.net.reset();
+  }
+  return out;
+}
+
 }  // namespace ballsight

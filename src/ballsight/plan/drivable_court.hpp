@@ -13,6 +13,7 @@
 
 #include "ballsight/core/field_rect.hpp"
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/core/site_court.hpp"
 
 namespace ballsight {
 
@@ -67,6 +68,9 @@ struct DrivablePath {
   std::array<Vec2, 4> via{};
   int via_count = 0;
 };
+
+/// The fenced area (centred on the court) and the net of a site's court.
+DrivableCourt drivable_court(const SiteCourt& court);
 
 /// Shortest path between two points of the area outside the net's reach keep-out.
 DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2& b);

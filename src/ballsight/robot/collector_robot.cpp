@@ -1,0 +1,86 @@
+#include "ballsight/robot/collector_robot.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "ballsight/core/angle.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/plan/drivable_court.hpp"
+
+namespace ballsight {
+
+FollowerOptions follower_for_site(const Site& site) {
+  FollowerOptions f;
+  f.mouth_ahead_m = site.robot.collector_x_m;
+  f.max_speed_mps = site.robot.max_speed_mps;
+  f.max_turn_rate_rps = rad_from_deg(site.robot.turn_rate_dps);
+  if (const std::optional<CourtNet> net = drivable_court(site.court).net) {
+    f.back_off_zone = net->lane();
+  }
+  return f;
+}
+
+void CollectorOptions::validate() const {
+  follow.validate();
+  require(done_after >= 1, "done_after", "must be at least 1");
+  require(std::isfinite(max_time_s) && max_time_s >= 0.0, "max_time_s", "must not be negative");
+}
+
+CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
+                              const std::atomic<bool>& stop,
+                              const std::function<void(const std::string&)>& progress) {
+  options.validate();
+  PathFollower follower(options.follow);
+  std::vector<Vec2> planned;  // the route's waypoints being followed
+  CollectorResult result;
+  int empty = 0;
+  const auto started = std::chrono::steady_clock::now();
+  while (!stop) {
+    if (options.max_time_s > 0.0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+            options.max_time_s) {
+      break;
+    }
+    const std::optional<LinkUpdate> u = link.next(std::chrono::milliseconds(500));
+    if (!u) continue;
+    ++result.updates;
+    result.latency_ms.push_back(static_cast<double>(u->received_ns - u->capture_time_ns) * 1e-6);
+    result.seqs.push_back(u->seq);
+    FollowCommand command;
+    if (u->robot) {
+      if (u->waypoints_m != planned) {
+        planned = u->waypoints_m;
+        follower.set_path(planned);
+      }
+      command = follower.command(*u->robot);
+    }
+    const std::optional<nlohmann::json> drove =
+        link.drive_simulated(u->seq, command.speed_mps, deg_from_rad(command.turn_rate_rps));
+    if (drove) result.sim_time_s = drove->value("time_s", result.sim_time_s);
+    const int taken = drove ? drove->value("collected", 0) : 0;
+    if (taken > 0 && u->robot) {
+      const Pose2D& p = *u->robot;
+      const Vec2 mouth = p.position + options.follow.mouth_ahead_m *
+                                          Vec2(std::cos(p.heading_rad), std::sin(p.heading_rad));
+      link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken), mouth));
+      result.collected += taken;
+    }
+    link.acknowledge(u->seq);  // last: the update is dealt with, its collected balls reported
+    if (progress && result.updates % 100 == 0) {
+      progress("update " + std::to_string(u->seq) + ", " + std::to_string(u->balls_m.size()) +
+               " balls seen, " + std::to_string(result.collected) + " collected, simulated time " +
+               std::to_string(static_cast<int>(result.sim_time_s)) + " s");
+    }
+    empty = u->balls_m.empty() && u->visits_m.empty() ? empty + 1 : 0;
+    if (empty >= options.done_after) {
+      result.done = true;
+      break;
+    }
+  }
+  const LinkStatus status = link.status();
+  result.gaps = status.gaps;
+  result.reconnects = status.reconnects;
+  return result;
+}
+
+}  // namespace ballsight

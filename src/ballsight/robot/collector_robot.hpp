@@ -1,0 +1,50 @@
+#pragma once
+// The simulated collector's controller (`ballsight robot`, `eval loop`): for every navigation
+// update it steers the collector's mouth along the route (path_follower.hpp), sends its
+// wheels' command to the simulated court (PUT /api/v1/sim/drive), acknowledges the update and
+// reports the balls its collector took (the collector's sensor counts them; they were at its
+// mouth). It knows only what the service sends.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ballsight/robot/path_follower.hpp"
+#include "ballsight/robot/robot_link.hpp"
+#include "ballsight/world/site.hpp"
+
+namespace ballsight {
+
+/// The follower for a site's robot and court: its mouth, speeds, and the net's lane to back off.
+FollowerOptions follower_for_site(const Site& site);
+
+struct CollectorOptions {
+  FollowerOptions follow = follower_for_site(Site{});  // mouth 0.30 m ahead, 1 m/s, 90 deg/s
+  int done_after = 10;      // updates in a row with no ball and no route: all collected
+  double max_time_s = 0.0;  // wall time; 0: no limit
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+struct CollectorResult {
+  bool done = false;  // stopped because no ball was left (not by time or `stop`)
+  int updates = 0;
+  int collected = 0;  // as the collector's sensor counted them
+  std::uint64_t gaps = 0;
+  int reconnects = 0;
+  double sim_time_s = 0.0;  // the simulated court's clock at the last command
+  /// Per update, in arrival order: frames captured -> update parsed here (wall ms, UTC clocks
+  /// of one machine), and its sequence number.
+  std::vector<double> latency_ms;
+  std::vector<std::uint64_t> seqs;
+};
+
+/// Drives until done, `stop`, or the time limit; `progress` hears a line every 100 updates.
+CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
+                              const std::atomic<bool>& stop,
+                              const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace ballsight

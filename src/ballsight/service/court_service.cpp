@@ -1,0 +1,191 @@
+#include "ballsight/service/court_service.hpp"
+
+#include "ballsight/core/error.hpp"
+#include "ballsight/service/update_planner.hpp"
+
+namespace ballsight {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+double smoothed_rate(double previous_hz, double sample_hz) {
+  return previous_hz == 0.0 ? sample_hz : 0.8 * previous_hz + 0.2 * sample_hz;
+}
+
+std::vector<std::string> CourtService::camera_names() const {
+  std::vector<std::string> names;
+  for (const SiteCamera& c : site().cameras) names.push_back(c.name);
+  return names;
+}
+
+PlannerKind CourtService::planner() const {
+  return publisher().planner().kind;
+}
+
+void CourtService::set_planner(PlannerKind kind, NavigationHub& hub) {
+  PlannerOptions options = publisher().planner();
+  options.kind = kind;
+  publisher().set_planner(options);
+  republish(hub);
+}
+
+std::vector<FieldCamera> CourtService::cameras() const {
+  return publisher().cameras();
+}
+
+std::optional<CameraView> CourtService::camera_view(std::size_t index) const {
+  return publisher().camera_view(index);
+}
+
+UpdatePublisher::UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
+                                 const PlannerOptions& planner)
+    : site_(site),
+      pipeline_(std::move(pipeline)),
+      planner_(planner),
+      views_(pipeline_->cameras().size()),
+      next_planner_(planner) {
+  planner_.validate();
+}
+
+std::vector<FieldCamera> UpdatePublisher::cameras() const {
+  const std::lock_guard lock(pipeline_mutex_);
+  return pipeline_->cameras();
+}
+
+void UpdatePublisher::replace_pipeline(std::unique_ptr<CourtPipeline> pipeline) {
+  const std::lock_guard lock(pipeline_mutex_);
+  require(pipeline->cameras().size() == pipeline_->cameras().size(), "pipeline",
+          "is for another number of cameras");
+  pipeline_ = std::move(pipeline);
+}
+
+std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
+                                       NavigationHub& hub) {
+  return publish_result(frames, capture_ns, hub,
+                        [&](CourtPipeline& pipeline) { return pipeline.process(frames); });
+}
+
+std::uint64_t UpdatePublisher::publish_detections(const CameraDetectionLists& detections,
+                                                  std::int64_t capture_ns, NavigationHub& hub) {
+  return publish_result({}, capture_ns, hub, [&](CourtPipeline& pipeline) {
+    FrameSetResult result;
+    result.detections = detections;
+    result.camera_errors.resize(detections.size());
+    result.world = pipeline.fuse(detections);
+    return result;
+  });
+}
+
+std::uint64_t UpdatePublisher::publish_result(
+    const std::vector<cv::Mat>& frames, std::int64_t capture_ns, NavigationHub& hub,
+    const std::function<FrameSetResult(CourtPipeline&)>& run) {
+  const auto started = Clock::now();
+  FrameSetResult result;
+  try {
+    const std::lock_guard pipeline_lock(pipeline_mutex_);
+    result = run(*pipeline_);
+  } catch (const std::exception& e) {  // a bad frame must not end the service: say so, go on
+    const std::lock_guard lock(mutex_);
+    ++failed_;
+    last_error_ = std::string("pipeline: ") + e.what();
+    return 0;
+  }
+  const double pipeline_ms = ms_since(started);
+  std::vector<CameraView> views(frames.size());
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    views[k].frame = frames[k];
+    views[k].capture_ns = capture_ns;
+    if (k < result.detections.size() && result.detections[k]) {
+      views[k].detections = std::move(*result.detections[k]);  // not needed past the world model
+    }
+  }
+  std::vector<Vec2> seen;
+  for (const FusedBall& b : result.world.balls) seen.push_back(b.position_m);
+  hub.confirm_collected(seen);
+  const std::lock_guard plan_lock(plan_mutex_);
+  last_world_ = std::move(result.world);
+  last_capture_ns_ = capture_ns;
+  const auto plan_started = Clock::now();
+  // The views are there before anyone hears of the update.
+  const std::uint64_t seq = plan_and_publish(hub, [&](std::uint64_t published_seq) {
+    const std::lock_guard lock(mutex_);
+    for (std::size_t k = 0; k < views.size() && k < views_.size(); ++k) {
+      if (views[k].frame.empty()) continue;  // a missing frame: the camera's last view stays
+      views[k].seq = published_seq;
+      views_[k] = std::move(views[k]);
+    }
+  });
+  const double plan_ms = ms_since(plan_started);
+  const std::lock_guard lock(mutex_);
+  ++frame_sets_;
+  pipeline_ms_ = pipeline_ms;
+  plan_ms_ = plan_ms;
+  const auto now = Clock::now();
+  if (last_) {
+    const double hz = 1.0 / std::max(1e-6, std::chrono::duration<double>(now - *last_).count());
+    rate_hz_ = smoothed_rate(rate_hz_, hz);
+  }
+  last_ = now;
+  return seq;
+}
+
+void UpdatePublisher::republish(NavigationHub& hub) {
+  const std::lock_guard plan_lock(plan_mutex_);
+  if (last_capture_ns_ == 0) return;  // nothing seen yet
+  plan_and_publish(hub);
+}
+
+std::uint64_t UpdatePublisher::plan_and_publish(
+    NavigationHub& hub, const std::function<void(std::uint64_t)>& published) {
+  std::string error;
+  NavigationUpdate update;
+  try {
+    update = plan_update(site_, last_world_, last_capture_ns_, hub,
+                         previous_ ? &*previous_ : nullptr, planner_);
+  } catch (const InputError& e) {  // e.g. a pose the cameras put inside the net
+    error = e.what();
+    update.capture_time_ns = last_capture_ns_;
+    update.world = last_world_;
+  }
+  previous_ = update.route;
+  const std::uint64_t seq = hub.publish(std::move(update), published);
+  const std::lock_guard lock(mutex_);
+  last_error_ = error;
+  return seq;
+}
+
+void UpdatePublisher::set_planner(const PlannerOptions& planner) {
+  planner.validate();
+  {
+    const std::lock_guard lock(mutex_);
+    next_planner_ = planner;
+  }
+  const std::lock_guard plan_lock(plan_mutex_);
+  planner_ = planner;
+  previous_.reset();  // another planner starts afresh, not from the other one's route
+}
+
+PlannerOptions UpdatePublisher::planner() const {
+  const std::lock_guard lock(mutex_);
+  return next_planner_;
+}
+
+std::optional<CameraView> UpdatePublisher::camera_view(std::size_t index) const {
+  const std::lock_guard lock(mutex_);
+  return index < views_.size() ? views_[index] : std::nullopt;
+}
+
+nlohmann::json UpdatePublisher::health() const {
+  const std::lock_guard lock(mutex_);
+  return {{"frame_sets", frame_sets_},    {"pipeline_ms", pipeline_ms_},
+          {"plan_ms", plan_ms_},          {"frame_sets_per_s", rate_hz_},
+          {"frame_sets_failed", failed_}, {"last_error", last_error_}};
+}
+
+}  // namespace ballsight

@@ -1,0 +1,166 @@
+#include "ballsight/service/navigation_hub.hpp"
+
+#include <algorithm>
+#include <random>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+std::int64_t utc_now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+std::string random_hex(int digits) {
+  std::random_device random;
+  constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (int i = 0; i < digits; ++i) out += kHex[random() % 16];
+  return out;
+}
+
+NavigationHub::NavigationHub() : service_id_(random_hex(16)) {}
+
+std::uint64_t NavigationHub::publish(NavigationUpdate update,
+                                     const std::function<void(std::uint64_t)>& before_listeners) {
+  std::uint64_t seq = 0;
+  {
+    const std::lock_guard lock(mutex_);
+    seq = next_seq_++;
+    update.seq = seq;
+    update.published_ns = utc_now_ns();
+    recent_.push_back(std::move(update));
+    if (recent_.size() > kKept) recent_.pop_front();
+  }
+  if (before_listeners) before_listeners(seq);
+  const std::lock_guard lock(listeners_mutex_);
+  for (const auto& [id, listener] : listeners_) listener(seq);
+  return seq;
+}
+
+int NavigationHub::add_listener(std::function<void(std::uint64_t)> listener) {
+  const std::lock_guard lock(listeners_mutex_);
+  listeners_.emplace_back(next_listener_, std::move(listener));
+  return next_listener_++;
+}
+
+void NavigationHub::remove_listener(int id) {
+  const std::lock_guard lock(listeners_mutex_);
+  std::erase_if(listeners_, [id](const auto& l) { return l.first == id; });
+}
+
+std::optional<NavigationUpdate> NavigationHub::latest() const {
+  const std::lock_guard lock(mutex_);
+  if (recent_.empty()) return std::nullopt;
+  return recent_.back();
+}
+
+namespace {
+
+/// Where the first update newer than `after` is in `recent` (sequence numbers are consecutive);
+/// recent.size() when there is none.
+std::size_t first_index_after(const std::deque<NavigationUpdate>& recent, std::uint64_t after) {
+  if (recent.empty() || recent.back().seq <= after) return recent.size();
+  const std::uint64_t first = recent.front().seq;
+  return static_cast<std::size_t>(after + 1 > first ? after + 1 - first : 0);
+}
+
+}  // namespace
+
+std::optional<NavigationUpdate> NavigationHub::first_after(std::uint64_t after) const {
+  const std::lock_guard lock(mutex_);
+  const std::size_t i = first_index_after(recent_, after);
+  if (i == recent_.size()) return std::nullopt;
+  return recent_[i];
+}
+
+std::optional<NavigationUpdate> NavigationHub::find(std::uint64_t seq) const {
+  std::optional<NavigationUpdate> u = seq > 0 ? first_after(seq - 1) : std::nullopt;
+  if (u && u->seq != seq) u.reset();
+  return u;
+}
+
+std::vector<NavigationUpdate> NavigationHub::all_after(std::uint64_t after) const {
+  const std::lock_guard lock(mutex_);
+  const auto first =
+      recent_.begin() + static_cast<std::ptrdiff_t>(first_index_after(recent_, after));
+  return {first, recent_.end()};
+}
+
+std::uint64_t NavigationHub::latest_seq() const {
+  const std::lock_guard lock(mutex_);
+  return newest_seq();
+}
+
+void NavigationHub::acknowledge(std::uint64_t seq) {
+  const std::lock_guard lock(mutex_);
+  const std::uint64_t newest = newest_seq();
+  require(seq >= 1 && seq <= newest, "seq",
+          "update " + std::to_string(seq) + " was not published (latest " + std::to_string(newest) +
+              ")");
+  acknowledged_ = std::max(acknowledged_, seq);
+}
+
+std::uint64_t NavigationHub::acknowledged() const {
+  const std::lock_guard lock(mutex_);
+  return acknowledged_;
+}
+
+void NavigationHub::set_robot(const Pose2D& pose) {
+  const std::lock_guard lock(mutex_);
+  robot_ = External<Pose2D>{pose, utc_now_ns()};
+}
+
+std::optional<External<Pose2D>> NavigationHub::robot() const {
+  const std::lock_guard lock(mutex_);
+  return robot_;
+}
+
+void NavigationHub::set_balls(std::vector<Vec2> balls) {
+  const std::lock_guard lock(mutex_);
+  balls_ = External<std::vector<Vec2>>{std::move(balls), utc_now_ns()};
+}
+
+std::optional<External<std::vector<Vec2>>> NavigationHub::balls() const {
+  const std::lock_guard lock(mutex_);
+  return balls_;
+}
+
+void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
+  const std::lock_guard lock(mutex_);
+  collected_.insert(collected_.end(), positions.begin(), positions.end());
+  if (collected_.size() > kMaxCollected) {
+    collected_.erase(
+        collected_.begin(),
+        collected_.begin() + static_cast<std::ptrdiff_t>(collected_.size() - kMaxCollected));
+  }
+}
+
+namespace {
+
+bool near_any(const Vec2& p, const std::vector<Vec2>& list) {
+  return std::any_of(list.begin(), list.end(), [&](const Vec2& q) {
+    return (q - p).norm() < NavigationHub::kCollectedMatchM;
+  });
+}
+
+}  // namespace
+
+bool NavigationHub::was_collected(const Vec2& p) const {
+  const std::lock_guard lock(mutex_);
+  return near_any(p, collected_);
+}
+
+void NavigationHub::confirm_collected(const std::vector<Vec2>& seen) {
+  const std::lock_guard lock(mutex_);
+  std::erase_if(collected_, [&](const Vec2& c) { return !near_any(c, seen); });
+}
+
+std::vector<Vec2> NavigationHub::collected() const {
+  const std::lock_guard lock(mutex_);
+  return collected_;
+}
+
+}  // namespace ballsight

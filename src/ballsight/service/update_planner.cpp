@@ -1,0 +1,49 @@
+#include "ballsight/service/update_planner.hpp"
+
+#include <algorithm>
+
+#include "ballsight/pipeline/planning_input.hpp"
+#include "ballsight/plan/planner.hpp"
+
+namespace ballsight {
+
+NavigationUpdate plan_update(const Site& site, const WorldModel& world, std::int64_t capture_ns,
+                             const NavigationHub& hub, const Route* previous,
+                             const PlannerOptions& options) {
+  NavigationUpdate update;
+  update.capture_time_ns = capture_ns;
+  update.world = world;
+  std::optional<Pose2D> robot;
+  std::int64_t robot_ns = 0;
+  if (world.robot) {
+    robot = world.robot->pose;
+    robot_ns = capture_ns;
+  }
+  if (const auto external = hub.robot(); external && external->set_ns > robot_ns) {
+    robot = external->value;
+  }
+  std::vector<Vec2> balls;
+  for (const FusedBall& b : world.balls) balls.push_back(b.position_m);
+  if (const auto external = hub.balls(); external && external->set_ns > capture_ns) {
+    balls = external->value;
+  }
+  std::erase_if(balls, [&](const Vec2& b) { return hub.was_collected(b); });
+  // Two detections closer than a ball's radius would be one ball twice: keep the first.
+  std::vector<Vec2> distinct;
+  for (const Vec2& b : balls) {
+    if (std::none_of(distinct.begin(), distinct.end(),
+                     [&](const Vec2& d) { return (d - b).norm() < site.ball_radius_m; })) {
+      distinct.push_back(b);
+    }
+  }
+  if (!robot) {
+    update.route.planner = std::string(planner_name(options.kind));
+    return update;
+  }
+  PlannerOptions planner = options;
+  planner.previous = previous;
+  update.route = plan(site_planning_problem(site, *robot, std::move(distinct)), planner);
+  return update;
+}
+
+}  // namespace ballsight

@@ -1,0 +1,22 @@
+#pragma once
+// From a world model to the update the service publishes: the route is planned from the robot as
+// the cameras saw it (or as a client set it, if that is newer), over the balls the cameras saw
+// (or a client's list, if newer) less those the robot reported collected, warm-started from the
+// previous route so that the robot's target does not flap.
+
+#include <cstdint>
+
+#include "ballsight/plan/planning_problem.hpp"
+#include "ballsight/service/navigation_hub.hpp"
+#include "ballsight/world/site.hpp"
+#include "ballsight/world/world_model.hpp"
+
+namespace ballsight {
+
+/// The update for `world` (captured at `capture_ns`, UTC); `previous` is the last published route
+/// (nullptr for the first). With no robot pose known the route is empty.
+NavigationUpdate plan_update(const Site& site, const WorldModel& world, std::int64_t capture_ns,
+                             const NavigationHub& hub, const Route* previous,
+                             const PlannerOptions& options);
+
+}  // namespace ballsight
