@@ -55,9 +55,10 @@ endfunction()
 # the other layers their ordinary library, so that a test of calib, say, runs the sanitized calib,
 # camera and core under the ordinary simulator. The command and every other test link the
 # ordinary libraries: instrumented, the simulator's rendering made the whole suite three times
-# slower (docs/RESULTS.md, "Sanitizers"). The ordinary copies name a plain archive, which CMake
-# cannot order by its dependencies: a layer's DEPS list higher layers before lower ones, the order
-# the linker must read them in. Call it after the last ballsight_layer().
+# slower (docs/RESULTS.md, "Sanitizers"). The ordinary copies are imported archives that carry
+# their layer's dependencies, so that CMake puts every archive before the ones it needs (a plain
+# archive file could not be ordered: with service/ and robot/ beside pipeline/, test_net's link
+# put the world layer before the pipeline's archive). Call it after the last ballsight_layer().
 function(ballsight_sanitized_layers)
   get_property(layers GLOBAL PROPERTY BALLSIGHT_LAYERS)
   foreach(name ${layers})
@@ -74,11 +75,16 @@ function(ballsight_sanitized_layers)
       target_compile_options(${copy} PRIVATE -O1)
       set_target_properties(${copy} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 6
                                                BALLSIGHT_SANITIZED ON)
-    else()  # the ordinary library's archive (none for a header-only layer)
+    elseif(sources)  # the ordinary library's archive, with its dependencies for the linker
+      add_library(${copy} STATIC IMPORTED GLOBAL)
+      get_target_property(dir ballsight_${name} BINARY_DIR)
+      set_target_properties(${copy} PROPERTIES
+        IMPORTED_LOCATION
+          ${dir}/${CMAKE_STATIC_LIBRARY_PREFIX}ballsight_${name}${CMAKE_STATIC_LIBRARY_SUFFIX}
+        INTERFACE_LINK_LIBRARIES "${deps}"
+        INTERFACE_INCLUDE_DIRECTORIES ${PROJECT_SOURCE_DIR}/src)
+    else()  # a header-only layer
       add_library(${copy} INTERFACE)
-      if(sources)
-        target_link_libraries(${copy} INTERFACE $<TARGET_FILE:ballsight_${name}>)
-      endif()
       target_link_libraries(${copy} INTERFACE ${deps})
       target_include_directories(${copy} INTERFACE ${PROJECT_SOURCE_DIR}/src)
     endif()
