@@ -81,8 +81,8 @@ cv::Mat draw_loop_map(const LoopTruth& truth, const std::string& title, int rout
   cv::arrowedLine(image, px(truth.robot_start.position),
                   px(truth.robot_start.position + 1.2 * forward), cv::Scalar(20, 20, 20), 3,
                   cv::LINE_AA, 0, 0.3);
-  draw_color_bar(image, {width - bar + 20, top + 20, 20, height - top - 80}, kTimeColormap, 0.0, end_s,
-                 "collected (s)");
+  draw_color_bar(image, {width - bar + 20, top + 20, 20, height - top - 80}, kTimeColormap, 0.0,
+                 end_s, "collected (s)");
   cv::rectangle(image, {0, 0, image.cols, top}, cv::Scalar::all(255), cv::FILLED);
   draw_text(image, title, {10, 24}, 0.6);
   draw_legend(image, {10, 32}, legend);

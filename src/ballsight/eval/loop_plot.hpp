@@ -1,7 +1,7 @@
 #pragma once
-// Pictures of a closed-loop run (service/loop_truth.hpp): the court from above with the robot's true
-// path, the published route at a few moments, and the balls coloured by when they were collected
-// (grey with a red cross: never); and the per-update latency at the robot.
+// Pictures of a closed-loop run (service/loop_truth.hpp): the court from above with the robot's
+// true path, the published route at a few moments, and the balls coloured by when they were
+// collected (grey with a red cross: never); and the per-update latency at the robot.
 
 #include <opencv2/core.hpp>
 #include <string>

@@ -135,8 +135,8 @@ void draw_heat_map(cv::Mat& figure, const InspectedLut& lut, const LutInspection
             {box.x, box.y - 12}, 0.6);
   draw_text(figure, "white circle: monotonic limit; grey: no value",
             {box.x, area.y + area.height + 22}, 0.45);
-  draw_color_bar(figure, cv::Rect(box.x + box.width + 25, box.y, 22, area.height), kDistanceColormap, 0.0,
-                 max_cm, "cm");
+  draw_color_bar(figure, cv::Rect(box.x + box.width + 25, box.y, 22, area.height),
+                 kDistanceColormap, 0.0, max_cm, "cm");
 }
 
 }  // namespace
