@@ -3,7 +3,6 @@
 // the deadline passes, and the caller fails with what it waited for:
 //   ASSERT_TRUE(test::wait_until([&] { return hub.latest_seq() >= 3; })) << "no third update";
 
-#include <atomic>
 #include <chrono>
 #include <thread>
 
@@ -20,21 +19,5 @@ bool wait_until(Done&& done, std::chrono::milliseconds deadline = std::chrono::s
   }
   return true;
 }
-
-/// Sets `stop` and joins `thread` when it leaves scope: a failed ASSERT ends the test cleanly.
-class StopAndJoin {
- public:
-  StopAndJoin(std::atomic<bool>& stop, std::thread& thread) : stop_(stop), thread_(thread) {}
-  ~StopAndJoin() {
-    stop_ = true;
-    if (thread_.joinable()) thread_.join();
-  }
-  StopAndJoin(const StopAndJoin&) = delete;
-  StopAndJoin& operator=(const StopAndJoin&) = delete;
-
- private:
-  std::atomic<bool>& stop_;
-  std::thread& thread_;
-};
 
 }  // namespace ballsight::test

@@ -15,6 +15,25 @@
 namespace ballsight {
 namespace {
 
+// A simulated service running on a thread of its own until stop_and_join() or the end of the
+// test (so that a failed ASSERT ends it cleanly).
+struct RunningService {
+  explicit RunningService(const SimulatedServiceOptions& options)
+      : service(options), runner([this] { service.run(hub, stop); }) {}
+  ~RunningService() { stop_and_join(); }
+
+  void stop_and_join() {
+    stop = true;
+    if (runner.joinable()) runner.join();
+  }
+  double sim_time() const { return service.health()["sim"]["time_s"].get<double>(); }
+
+  SimulatedCourtService service;
+  NavigationHub hub;
+  std::atomic<bool> stop{false};
+  std::thread runner;  // last: it starts once the rest is built
+};
+
 // A camera fails and returns while nobody drives (the court keeps to the wall clock): the record
 // says both, the health says which camera is dark, and the pipeline goes on without it.
 TEST(SimulatedService, ACameraFailsAndReturns) {
@@ -25,12 +44,9 @@ TEST(SimulatedService, ACameraFailsAndReturns) {
   options.vision_hz = 20.0;
   options.truth_out = dir / "truth.jsonl";
   options.camera_outages = {{2, 0.1, 0.3}, {0, 0.4}};
-  SimulatedCourtService service(options);
-  NavigationHub hub;
-  std::atomic<bool> stop{false};
-  std::thread runner([&] { service.run(hub, stop); });
-  test::StopAndJoin stopper(stop, runner);
-  const auto sim_time = [&] { return service.health()["sim"]["time_s"].get<double>(); };
+  RunningService running(options);
+  const SimulatedCourtService& service = running.service;
+  const auto sim_time = [&] { return running.sim_time(); };
   const auto state = [&](int k) { return service.health()["cameras"][k]["state"]; };
   bool saw_failed = false;
   ASSERT_TRUE(test::wait_until([&] {
@@ -42,8 +58,7 @@ TEST(SimulatedService, ACameraFailsAndReturns) {
       << "the simulated clock stood at " << sim_time() << " s";
   EXPECT_EQ(state(2), "simulated");
   EXPECT_EQ(state(0), "failed");
-  stop = true;
-  runner.join();
+  running.stop_and_join();
   EXPECT_TRUE(saw_failed);
 
   const LoopTruth truth = read_loop_truth(options.truth_out);
@@ -66,12 +81,9 @@ TEST(SimulatedService, InLockstepTheCourtWaitsForEveryAcknowledgement) {
   options.seed = 2;
   options.balls = 3;
   options.lockstep = true;
-  SimulatedCourtService service(options);
-  NavigationHub hub;
-  std::atomic<bool> stop{false};
-  std::thread runner([&] { service.run(hub, stop); });
-  test::StopAndJoin stopper(stop, runner);
-  const auto sim_time = [&] { return service.health()["sim"]["time_s"].get<double>(); };
+  RunningService running(options);
+  SimulatedCourtService& service = running.service;
+  const auto sim_time = [&] { return running.sim_time(); };
   const auto published = [&] { return service.health()["frame_sets"].get<std::uint64_t>(); };
   const Pose2D start = service.robot_start();
   for (std::uint64_t seq = 1; seq <= 3; ++seq) {
@@ -81,11 +93,10 @@ TEST(SimulatedService, InLockstepTheCourtWaitsForEveryAcknowledgement) {
     EXPECT_EQ(published(), seq);
     EXPECT_DOUBLE_EQ(sim_time(), 0.1 * static_cast<double>(seq - 1));
     service.drive(seq, 0.5, 0.0);
-    hub.acknowledge(seq);
+    running.hub.acknowledge(seq);
   }
   ASSERT_TRUE(test::wait_until([&] { return published() >= 4; })) << "update 4 was never published";
-  stop = true;
-  runner.join();
+  running.stop_and_join();
   EXPECT_NEAR(sim_time(), 0.3, 1e-9);
   const std::vector<sim::WorldTick> ticks = service.history();
   ASSERT_EQ(ticks.size(), 3u);
