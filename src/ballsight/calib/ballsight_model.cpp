@@ -257,6 +257,10 @@ void solve(const std::vector<SampleTerm>& terms, const PriorResidual& prior, con
   solver.num_threads = 1;
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
+  // A pass that stops at max_iterations still holds a usable (if unfinished) solution: the next
+  // pass or the cross-validation judges it. One the solver could not make is never taken.
+  require(summary.IsSolutionUsable(), "ballsight fit",
+          "the solver found no usable solution (" + summary.message + ")");
 }
 
 // Mean of (bearing - image angle): where the mount's yaw starts.

@@ -1,8 +1,9 @@
 #include "ballsight/pipeline/court_pipeline.hpp"
 
-#include <future>
+#include <functional>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/pipeline/camera_workers.hpp"
 #include "ballsight/world/hidden_balls.hpp"
 
 namespace ballsight {
@@ -29,18 +30,19 @@ FrameSetResult CourtPipeline::process(const std::vector<cv::Mat>& frames) {
   FrameSetResult result;
   result.detections.resize(all.size());
   result.camera_errors.resize(all.size());
-  std::vector<std::future<std::vector<PixelDetection>>> tasks(all.size());
+  std::vector<std::function<void()>> jobs(all.size());
   for (size_t c = 0; c < all.size(); ++c) {
     result.camera_errors[c] = frame_problem(frames[c], all[c]);
     if (result.camera_errors[c].empty())
-      tasks[c] =
-          std::async(std::launch::async, [this, &frames, c] { return detect(c, frames[c]); });
+      jobs[c] = [this, &frames, &result, c] { result.detections[c] = detect(c, frames[c]); };
   }
-  for (size_t c = 0; c < all.size(); ++c)
-    if (tasks[c].valid()) result.detections[c] = tasks[c].get();
+  std::call_once(workers_once_, [&] { workers_ = std::make_unique<CameraWorkers>(all.size()); });
+  workers_->run(jobs);
   result.world = fuse(result.detections);
   return result;
 }
+
+CourtPipeline::~CourtPipeline() = default;
 
 namespace {
 

@@ -1,10 +1,11 @@
 #pragma once
 // A court method end to end on one frame set: one image per camera -> detections per camera (in
-// parallel, one task per camera, as the tennis-ball-collecting-robot report's section 7.7 does
-// with std::async) -> world model. Two methods behind one interface: the report's pipeline (the
-// baseline) and ballsight's.
+// parallel, a thread per camera, as the tennis-ball-collecting-robot report's section 7.7 does
+// with std::async; here the threads live as long as the pipeline) -> world model. Two methods
+// behind one interface: the report's pipeline (the baseline) and ballsight's.
 
 #include <memory>
+#include <mutex>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -35,13 +36,15 @@ struct FrameSetResult {
   WorldModel world;
 };
 
+class CameraWorkers;
+
 class CourtPipeline {
  public:
-  virtual ~CourtPipeline() = default;
+  virtual ~CourtPipeline();
 
   /// One frame per camera in camera order; an empty Mat is a missing frame. A frame that is not
   /// 8-bit BGR of its camera's calibrated size is not used, and camera_errors says why. The
-  /// cameras are detected in parallel (one task each), then fused.
+  /// cameras are detected in parallel (a long-lived thread each: camera_workers.hpp), then fused.
   FrameSetResult process(const std::vector<cv::Mat>& frames);
   /// The first half on its own (a camera node): camera `camera`'s detections in `frame`, which
   /// frame_problem() accepts. Calls for different cameras may run at once.
@@ -51,6 +54,10 @@ class CourtPipeline {
   virtual WorldModel fuse(const CameraDetectionLists& detections) = 0;
   virtual CourtMethod method() const = 0;
   virtual const std::vector<FieldCamera>& cameras() const = 0;
+
+ private:
+  std::once_flag workers_once_;
+  std::unique_ptr<CameraWorkers> workers_;  // started at the first frame set
 };
 
 struct SeedPipelineOptions {
