@@ -27,7 +27,7 @@ using namespace ballsight;
 
 struct Setup {
   std::vector<FieldCamera> cameras;
-  std::vector<cv::Mat> frames;
+  FrameSet frames;
   BallsightPipelineOptions options;  // the simulated site's: the court's marker colours
 };
 
@@ -48,7 +48,9 @@ Setup render_setup(sim::CourtSurface surface) {
   out.options = ballsight_options_for_site(simulated_site(rig));
   for (const sim::CourtCamera& camera : rig.cameras) {
     out.cameras.push_back({camera.camera, camera.camera_from_field});
-    out.frames.push_back(sim::CourtRenderer(camera, rig.court).render(scene, 3).bgr);
+    out.frames.cameras.push_back({out.frames.cameras.size(),
+                                  sim::CourtRenderer(camera, rig.court).render(scene, 3).bgr, 0,
+                                  0});
   }
   return out;
 }
@@ -101,7 +103,7 @@ BENCHMARK(BM_CourtFrameSetBallsightBlueCourt)
 void BM_CourtDetectorOneFrame(benchmark::State& state) {
   const Setup& s = setup();
   CourtDetector detector(s.cameras[0]);
-  for (auto _ : state) benchmark::DoNotOptimize(detector.detect(s.frames[0]));
+  for (auto _ : state) benchmark::DoNotOptimize(detector.detect(s.frames.cameras[0].image));
   state.SetItemsProcessed(state.iterations());
   state.SetLabel("1920x1080, camera 0");
 }
@@ -111,7 +113,7 @@ void BM_CourtWorldModel(benchmark::State& state) {
   const Setup& s = setup();
   std::vector<std::optional<std::vector<PixelDetection>>> detections;
   for (size_t c = 0; c < s.cameras.size(); ++c)
-    detections.push_back(CourtDetector(s.cameras[c]).detect(s.frames[c]));
+    detections.push_back(CourtDetector(s.cameras[c]).detect(s.frames.cameras[c].image));
   const CourtWorldOptions options;
   for (auto _ : state) benchmark::DoNotOptimize(build_world_model(s.cameras, detections, options));
   state.SetItemsProcessed(state.iterations());
@@ -122,7 +124,7 @@ BENCHMARK(BM_CourtWorldModel)->Unit(benchmark::kMillisecond);
 void BM_SeedDetectorOneFrame(benchmark::State& state) {
   const Setup& s = setup();
   const SeedDetectorOptions options;
-  for (auto _ : state) benchmark::DoNotOptimize(detect_seed(s.frames[0], options));
+  for (auto _ : state) benchmark::DoNotOptimize(detect_seed(s.frames.cameras[0].image, options));
   state.SetItemsProcessed(state.iterations());
   state.SetLabel("1920x1080, camera 0");
 }

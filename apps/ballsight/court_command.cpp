@@ -10,6 +10,7 @@
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/utc_clock.hpp"
 #include "ballsight/pipeline/capture.hpp"
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
@@ -74,17 +75,14 @@ void run_court(const CourtRunArgs& args) {
     capture_list.push_back(captures.back().get());
   }
   for (auto& capture : captures) capture->start();
-  const auto start = CaptureClock::now();
+  const std::int64_t start_ns = utc_now_ns();
   const auto wait = std::chrono::milliseconds(static_cast<int>(1000.0 * args.wait_s));
   for (int index = 0; args.frames == 0 || index < args.frames; ++index) {
     const std::optional<FrameSet> set = next_frame_set(capture_list, wait);
     if (!set) break;
-    std::vector<cv::Mat> frames;
-    for (const std::optional<Frame>& frame : set->frames)
-      frames.push_back(frame ? frame->image : cv::Mat());
-    const FrameSetResult result = pipeline->process(frames);
-    for (size_t c = 0; c < frames.size(); ++c) {
-      if (!frames[c].empty() && !result.camera_errors[c].empty())
+    const FrameSetResult result = pipeline->process(*set);
+    for (size_t c = 0; c < set->cameras.size(); ++c) {
+      if (!set->cameras[c].image.empty() && !result.camera_errors[c].empty())
         std::cerr << "ballsight: camera " << names[c] << ": " << result.camera_errors[c]
                   << "; frame not used\n";
     }
@@ -92,15 +90,14 @@ void run_court(const CourtRunArgs& args) {
       nlohmann::json j = world_model_json(result.world, names);
       j["frame_set"] = index;
       nlohmann::json frames_json = nlohmann::json::object();
-      for (size_t c = 0; c < set->frames.size(); ++c) {
-        const std::optional<Frame>& frame = set->frames[c];
-        frames_json[names[c]] =
-            frame ? nlohmann::json{{"sequence", frame->sequence},
-                                   {"time_ms", std::chrono::duration<double, std::milli>(
-                                                   frame->timestamp - start)
-                                                   .count()},
-                                   {"used", result.camera_errors[c].empty()}}
-                  : nlohmann::json(nullptr);
+      for (const CameraFrame& frame : set->cameras) {
+        frames_json[names[frame.camera]] =
+            frame.image.empty()
+                ? nlohmann::json(nullptr)
+                : nlohmann::json{
+                      {"sequence", frame.sequence},
+                      {"time_ms", 1e-6 * static_cast<double>(frame.capture_time_ns - start_ns)},
+                      {"used", result.camera_errors[frame.camera].empty()}};
       }
       j["frames"] = frames_json;
       std::cout << j.dump() << "\n";

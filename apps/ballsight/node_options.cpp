@@ -6,8 +6,8 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/utc_clock.hpp"
 #include "ballsight/pipeline/capture.hpp"
-#include "ballsight/service/navigation_hub.hpp"
 
 namespace ballsight::app {
 
@@ -73,9 +73,7 @@ void publish_captured(const std::string& program, const std::string& camera,
   capture.start();
   while (!stop) {
     if (std::optional<Frame> frame = capture.frames().pop(std::chrono::milliseconds(100))) {
-      const auto age = std::chrono::duration_cast<std::chrono::nanoseconds>(
-          std::chrono::steady_clock::now() - frame->timestamp);
-      publish(frame->image, frame->sequence, utc_now_ns() - age.count());
+      publish(frame->image, frame->sequence, utc_ns_of(frame->timestamp));
     }
   }
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/utc_clock.hpp"
 
 namespace ballsight {
 namespace {
@@ -113,8 +114,12 @@ TEST(CameraCapture, OtherCamerasContinueWhileOneIsDown) {
   for (int i = 0; i < 3; ++i) {
     const std::optional<FrameSet> set = next_frame_set({&good, &bad}, 50ms);
     ASSERT_TRUE(set.has_value());
-    EXPECT_TRUE(set->frames[0].has_value());
-    EXPECT_FALSE(set->frames[1].has_value());
+    EXPECT_FALSE(set->cameras[0].image.empty());
+    EXPECT_TRUE(set->cameras[1].image.empty());
+    EXPECT_EQ(set->cameras[1].camera, 1u);
+    // Stamped on the UTC clock when the capture thread received it: within the last minute.
+    EXPECT_NEAR(static_cast<double>(set->capture_time_ns()), static_cast<double>(utc_now_ns()),
+                60e9);
   }
   EXPECT_GE(opens_bad.load(), 2);
   EXPECT_EQ(bad.status().state, CaptureState::retrying);

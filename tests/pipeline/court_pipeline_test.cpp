@@ -21,7 +21,7 @@ TEST(CourtPipeline, FrameOfTheWrongSizeIsReportedNotUsed) {
   for (auto& pipeline :
        {make_seed_pipeline(two_cameras()), make_ballsight_pipeline(two_cameras())}) {
     SCOPED_TRACE(court_method_name(pipeline->method()));
-    const FrameSetResult result = pipeline->process({good, wrong});
+    const FrameSetResult result = pipeline->process(frame_set_of({good, wrong}, 1000));
     EXPECT_TRUE(result.camera_errors[0].empty());
     EXPECT_NE(result.camera_errors[1].find("640x480"), std::string::npos)
         << result.camera_errors[1];
@@ -30,15 +30,31 @@ TEST(CourtPipeline, FrameOfTheWrongSizeIsReportedNotUsed) {
     EXPECT_TRUE(result.detections[0].has_value());
     EXPECT_FALSE(result.detections[1].has_value());
     EXPECT_EQ(result.world.cameras, (std::vector<int>{0}));
-    const FrameSetResult missing = pipeline->process({cv::Mat(), good});
+    EXPECT_EQ(result.world.capture_time_ns, 1000);
+    const FrameSetResult missing = pipeline->process(frame_set_of({cv::Mat(), good}, 2000));
     EXPECT_EQ(missing.camera_errors[0], "no frame");
     EXPECT_EQ(missing.world.cameras, (std::vector<int>{1}));
+    EXPECT_EQ(missing.world.capture_time_ns, 2000);
   }
 }
 
 TEST(CourtPipeline, WrongNumberOfFramesIsAnError) {
   const auto pipeline = make_ballsight_pipeline(two_cameras());
-  EXPECT_THROW(pipeline->process({cv::Mat()}), InputError);
+  EXPECT_THROW(pipeline->process(frame_set_of({cv::Mat()}, 0)), InputError);
+  FrameSet swapped = frame_set_of({cv::Mat(), cv::Mat()}, 0);
+  std::swap(swapped.cameras[0], swapped.cameras[1]);
+  EXPECT_THROW(pipeline->process(swapped), InputError);  // not in camera order
+}
+
+// The set is as old as its oldest frame.
+TEST(FrameSet, CaptureTimeIsTheOldestFrames) {
+  FrameSet set = frame_set_of({cv::Mat(2, 2, CV_8UC3), cv::Mat(), cv::Mat(2, 2, CV_8UC3)}, 50);
+  EXPECT_TRUE(set.any());
+  set.cameras[2].capture_time_ns = 40;
+  set.cameras[1].capture_time_ns = 10;  // no image: not counted
+  EXPECT_EQ(set.capture_time_ns(), 40);
+  EXPECT_FALSE(frame_set_of({cv::Mat()}, 5).any());
+  EXPECT_EQ(frame_set_of({cv::Mat()}, 5).capture_time_ns(), 0);
 }
 
 }  // namespace

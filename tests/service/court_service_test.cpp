@@ -31,13 +31,14 @@ TEST(UpdatePublisher, CameraViewsAndANewPipeline) {
   EXPECT_FALSE(publisher.camera_view(0));
   std::vector<cv::Mat> frames(4);
   frames[1] = sim::CourtRenderer(rig.cameras[1], rig.court).render(scene, 3).bgr;
-  const std::uint64_t seq = publisher.publish(frames, 1000, hub);
+  const std::uint64_t seq = publisher.publish(frame_set_of(frames, 1000), hub);
   ASSERT_EQ(seq, 1u);
   const std::optional<CameraView> view = publisher.camera_view(1);
   ASSERT_TRUE(view);
   EXPECT_EQ(view->seq, seq);
   EXPECT_EQ(view->capture_ns, 1000);
-  EXPECT_EQ(view->frame.data, frames[1].data);  // the frame itself, not a copy
+  EXPECT_EQ(hub.latest()->capture_time_ns, 1000);  // the frames', carried by the world model
+  EXPECT_EQ(view->frame.data, frames[1].data);     // the frame itself, not a copy
   EXPECT_GT(view->detections.size(), 3u);
   EXPECT_FALSE(publisher.camera_view(0));  // no frame from it yet
   EXPECT_FALSE(publisher.camera_view(9));
@@ -47,7 +48,7 @@ TEST(UpdatePublisher, CameraViewsAndANewPipeline) {
   publisher.replace_pipeline(make_ballsight_pipeline(moved));
   EXPECT_EQ(publisher.cameras()[1].camera_from_field.translation,
             moved[1].camera_from_field.translation);
-  EXPECT_EQ(publisher.publish(frames, 2000, hub), 2u);
+  EXPECT_EQ(publisher.publish(frame_set_of(frames, 2000), hub), 2u);
   EXPECT_EQ(publisher.camera_view(1)->seq, 2u);
 
   moved.pop_back();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <opencv2/calib3d.hpp>
 
@@ -23,12 +24,15 @@ void IntrinsicsOptions::validate() const {
 
 namespace {
 
-// Sum of squared reprojection errors of a board view posed by PnP under the given intrinsics.
+// Sum of squared reprojection errors of a board view posed by PnP under the given intrinsics;
+// infinite when PnP finds no pose (the intrinsics cannot explain the view at all).
 double board_squared_error(const std::vector<cv::Point3f>& object,
                            const std::vector<cv::Point2f>& corners, const cv::Mat& camera_matrix,
                            const cv::Mat& distortion) {
   cv::Mat rvec, tvec;
-  cv::solvePnP(object, corners, camera_matrix, distortion, rvec, tvec, false, cv::SOLVEPNP_IPPE);
+  if (!cv::solvePnP(object, corners, camera_matrix, distortion, rvec, tvec, false,
+                    cv::SOLVEPNP_IPPE))
+    return std::numeric_limits<double>::infinity();
   cv::solvePnPRefineLM(object, corners, camera_matrix, distortion, rvec, tvec);
   std::vector<cv::Point2f> projected;
   cv::projectPoints(object, rvec, tvec, camera_matrix, distortion, projected);

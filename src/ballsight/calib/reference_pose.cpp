@@ -357,9 +357,10 @@ ReferencePose estimate_reference_pose(const PinholeCamera& camera,
     cv::Mat rvec = cv_vec(pose.rvec()), tvec = cv_vec(pose.translation);
     if (matches.size() > 4) {
       std::vector<int> inliers;
-      cv::solvePnPRansac(object, image, k, distortion, rvec, tvec, true, 200,
-                         static_cast<float>(options.ransac_px), 0.999, inliers,
-                         cv::SOLVEPNP_ITERATIVE);
+      if (!cv::solvePnPRansac(object, image, k, distortion, rvec, tvec, true, 200,
+                              static_cast<float>(options.ransac_px), 0.999, inliers,
+                              cv::SOLVEPNP_ITERATIVE))
+        inliers.clear();  // no consensus: only the balls placed by hand count
       for (std::size_t i = 0; i < matches.size(); ++i) {  // placed by hand: kept
         if (candidates.placed(matches[i].reference) &&
             std::find(inliers.begin(), inliers.end(), static_cast<int>(i)) == inliers.end()) {
@@ -377,8 +378,10 @@ ReferencePose estimate_reference_pose(const PinholeCamera& camera,
       }
       object.swap(object_in);
       image.swap(image_in);
-    } else {
-      cv::solvePnP(object, image, k, distortion, rvec, tvec, true, cv::SOLVEPNP_ITERATIVE);
+    } else if (!cv::solvePnP(object, image, k, distortion, rvec, tvec, true,
+                             cv::SOLVEPNP_ITERATIVE)) {
+      throw InputError("reference balls: no camera pose fits the " +
+                       std::to_string(matches.size()) + " matched (solvePnP found none)");
     }
     cv::solvePnPRefineLM(object, image, k, distortion, rvec, tvec);
     pose = rigid_from_cv(rvec, tvec);

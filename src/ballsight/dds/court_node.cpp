@@ -60,7 +60,7 @@ void CameraFedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
   while (!stop) {
     waitset_.wait(std::chrono::milliseconds(20));
     take_frames(assembler);
-    while (std::optional<FrameSet> set = assembler.next(Clock::now()))
+    while (std::optional<DetectionSet> set = assembler.next(Clock::now()))
       publisher_->publish_detections(set->detections, set->capture_ns, hub);
     const std::lock_guard lock(mutex_);
     late_ = assembler.late_frames();

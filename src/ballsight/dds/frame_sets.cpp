@@ -38,7 +38,7 @@ void FrameSetAssembler::add(std::size_t camera, std::int64_t capture_ns,
   it->second.present[camera] = true;
 }
 
-std::optional<FrameSet> FrameSetAssembler::next(Clock::time_point now) {
+std::optional<DetectionSet> FrameSetAssembler::next(Clock::time_point now) {
   if (pending_.empty()) return std::nullopt;
   auto oldest = pending_.begin();
   const Pending& set = oldest->second;
@@ -52,7 +52,7 @@ std::optional<FrameSet> FrameSetAssembler::next(Clock::time_point now) {
     }
   }
   if (!ready) return std::nullopt;
-  FrameSet out{oldest->first, std::move(oldest->second.detections)};
+  DetectionSet out{oldest->first, std::move(oldest->second.detections)};
   handed_out_ns_ = oldest->first;
   pending_.erase(oldest);
   return out;

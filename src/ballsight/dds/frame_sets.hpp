@@ -22,7 +22,8 @@ struct FrameSetPolicy {
   std::chrono::nanoseconds camera_timeout{std::chrono::seconds(2)};
 };
 
-struct FrameSet {
+/// One frame set as its camera nodes saw it: their detections, not the frames.
+struct DetectionSet {
   std::int64_t capture_ns = 0;  // the first frame's capture time (UTC)
   CameraDetectionLists detections;
 };
@@ -38,7 +39,7 @@ class FrameSetAssembler {
   void add(std::size_t camera, std::int64_t capture_ns,
            std::optional<std::vector<PixelDetection>> detections, Clock::time_point now);
   /// The oldest set that is ready at `now`, oldest first; nullopt while none is.
-  std::optional<FrameSet> next(Clock::time_point now);
+  std::optional<DetectionSet> next(Clock::time_point now);
   /// Frames dropped because they came after their set was handed out.
   std::uint64_t late_frames() const { return late_; }
 

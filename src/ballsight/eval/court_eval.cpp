@@ -158,15 +158,16 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
 
   for (int k = 0; k < options.scenes; ++k) {
     const auto [scene, renders, truth] = scenes.render(options.scenario, k);
-    std::vector<cv::Mat> frames;
-    for (const sim::CourtRender& render : renders) frames.push_back(render.bgr);
+    std::vector<cv::Mat> images;
+    for (const sim::CourtRender& render : renders) images.push_back(render.bgr);
+    const FrameSet frames = frame_set_of(images, 0);  // Mat headers: the pixels are shared
     const std::vector<TruthBall> balls = truth_balls(truth);
     std::vector<FrameSetResult> results;
     std::vector<BallMistake> ballsight_mistakes;
     for (size_t m = 0; m < pipelines.size(); ++m) {
       if (!pipelines[m]) {
         FrameSetResult nothing;
-        nothing.detections.resize(frames.size());
+        nothing.detections.resize(frames.cameras.size());
         results.push_back(std::move(nothing));
         continue;
       }
@@ -190,7 +191,7 @@ CourtEvalReport run_court_eval(const CourtEvalOptions& options) {
     }
     if (options.plot_dir &&
         (k < options.plot_scenes || (options.plot_mistakes && !ballsight_mistakes.empty())))
-      write_pictures(options, rig, k, frames, truth, scene.robot.pose, results, ballsight_mistakes,
+      write_pictures(options, rig, k, images, truth, scene.robot.pose, results, ballsight_mistakes,
                      report.pictures);
   }
   return report;

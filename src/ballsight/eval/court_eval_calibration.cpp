@@ -145,7 +145,8 @@ EvalCalibration calibrate_seed_cameras(const CalibrationImages& images, const Si
       pixels.emplace_back(candidates[m.candidate].x(), candidates[m.candidate].y());
     }
     cv::Mat rvec, tvec;
-    cv::solvePnP(points, pixels, k, distortion, rvec, tvec, false, cv::SOLVEPNP_ITERATIVE);
+    require(cv::solvePnP(points, pixels, k, distortion, rvec, tvec, false, cv::SOLVEPNP_ITERATIVE),
+            "seed calibration camera " + std::to_string(c), "solvePnP found no pose");
     std::vector<cv::Point2d> projected;
     cv::projectPoints(points, rvec, tvec, k, distortion, projected);
     double sum2 = 0.0;

@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/utc_clock.hpp"
 
 namespace ballsight {
 
@@ -199,17 +200,19 @@ std::optional<FrameSet> next_frame_set(const std::vector<CameraCapture*>& camera
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   FrameSet set;
-  bool any = false, all_ended = true;
-  for (CameraCapture* camera : cameras) {
+  bool all_ended = true;
+  for (std::size_t k = 0; k < cameras.size(); ++k) {
+    CameraCapture* camera = cameras[k];
     std::optional<Frame> frame = camera->live()
                                      ? camera->frames().pop_newest()
                                      : camera->frames().pop(std::chrono::milliseconds(0));
-    any |= frame.has_value();
     const CaptureState state = camera->status().state;
     all_ended &= state == CaptureState::finished || state == CaptureState::stopped;
-    set.frames.push_back(std::move(frame));
+    set.cameras.push_back(frame ? CameraFrame{k, std::move(frame->image),
+                                              utc_ns_of(frame->timestamp), frame->sequence}
+                                : CameraFrame{k, {}, 0, 0});
   }
-  if (!any && all_ended) return std::nullopt;
+  if (!set.any() && all_ended) return std::nullopt;
   return set;
 }
 

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "ballsight/pipeline/frame_set.hpp"
 #include "ballsight/pipeline/frame_source.hpp"
 
 namespace ballsight {
@@ -111,14 +112,10 @@ class CameraCapture {
   std::thread thread_;
 };
 
-/// One frame per camera; nullopt where the camera had none.
-struct FrameSet {
-  std::vector<std::optional<Frame>> frames;
-};
-
 /// Waits up to `timeout` until every camera that is still capturing (not finished) has a frame,
 /// then takes one from each: the oldest of a recorded source (every frame in turn), the newest of
-/// a live one. nullopt when every camera has finished and has nothing left.
+/// a live one, stamped with when its capture thread received it (UTC); an empty image where a
+/// camera had none. nullopt when every camera has finished and has nothing left.
 std::optional<FrameSet> next_frame_set(const std::vector<CameraCapture*>& cameras,
                                        std::chrono::milliseconds timeout);
 

@@ -22,23 +22,28 @@ std::string frame_problem(const cv::Mat& frame, const FieldCamera& camera) {
   return "";
 }
 
-FrameSetResult CourtPipeline::process(const std::vector<cv::Mat>& frames) {
+FrameSetResult CourtPipeline::process(const FrameSet& frames) {
   const std::vector<FieldCamera>& all = cameras();
-  require(frames.size() == all.size(), "court pipeline",
+  require(frames.cameras.size() == all.size(), "court pipeline",
           "expected " + std::to_string(all.size()) + " frames (one per camera), got " +
-              std::to_string(frames.size()));
+              std::to_string(frames.cameras.size()));
   FrameSetResult result;
   result.detections.resize(all.size());
   result.camera_errors.resize(all.size());
   std::vector<std::function<void()>> jobs(all.size());
   for (size_t c = 0; c < all.size(); ++c) {
-    result.camera_errors[c] = frame_problem(frames[c], all[c]);
+    const CameraFrame& frame = frames.cameras[c];
+    require(frame.camera == c, "court pipeline",
+            "frame " + std::to_string(c) + " is camera " + std::to_string(frame.camera) +
+                "'s: frames must be in camera order");
+    result.camera_errors[c] = frame_problem(frame.image, all[c]);
     if (result.camera_errors[c].empty())
-      jobs[c] = [this, &frames, &result, c] { result.detections[c] = detect(c, frames[c]); };
+      jobs[c] = [this, &frame, &result, c] { result.detections[c] = detect(c, frame.image); };
   }
   std::call_once(workers_once_, [&] { workers_ = std::make_unique<CameraWorkers>(all.size()); });
   workers_->run(jobs);
   result.world = fuse(result.detections);
+  result.world.capture_time_ns = frames.capture_time_ns();
   return result;
 }
 

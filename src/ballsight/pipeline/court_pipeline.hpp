@@ -15,6 +15,7 @@
 #include "ballsight/core/pixel_detection.hpp"
 #include "ballsight/detect/court_detector.hpp"
 #include "ballsight/detect/seed_detector.hpp"
+#include "ballsight/pipeline/frame_set.hpp"
 #include "ballsight/world/court_world.hpp"
 #include "ballsight/world/seed_world.hpp"
 #include "ballsight/world/world_model.hpp"
@@ -42,10 +43,11 @@ class CourtPipeline {
  public:
   virtual ~CourtPipeline();
 
-  /// One frame per camera in camera order; an empty Mat is a missing frame. A frame that is not
-  /// 8-bit BGR of its camera's calibrated size is not used, and camera_errors says why. The
-  /// cameras are detected in parallel (a long-lived thread each: camera_workers.hpp), then fused.
-  FrameSetResult process(const std::vector<cv::Mat>& frames);
+  /// One frame per camera in camera order; an empty image is a missing frame. A frame that is
+  /// not 8-bit BGR of its camera's calibrated size is not used, and camera_errors says why. The
+  /// cameras are detected in parallel (a long-lived thread each: camera_workers.hpp), then fused;
+  /// the world model carries the set's capture time.
+  FrameSetResult process(const FrameSet& frames);
   /// The first half on its own (a camera node): camera `camera`'s detections in `frame`, which
   /// frame_problem() accepts. Calls for different cameras may run at once.
   virtual std::vector<PixelDetection> detect(std::size_t camera, const cv::Mat& frame) = 0;

@@ -65,25 +65,25 @@ void UpdatePublisher::replace_pipeline(std::unique_ptr<CourtPipeline> pipeline) 
   pipeline_ = std::move(pipeline);
 }
 
-std::uint64_t UpdatePublisher::publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
-                                       NavigationHub& hub) {
-  return publish_result(frames, capture_ns, hub,
+std::uint64_t UpdatePublisher::publish(const FrameSet& frames, NavigationHub& hub) {
+  return publish_result(frames, hub,
                         [&](CourtPipeline& pipeline) { return pipeline.process(frames); });
 }
 
 std::uint64_t UpdatePublisher::publish_detections(const CameraDetectionLists& detections,
                                                   std::int64_t capture_ns, NavigationHub& hub) {
-  return publish_result({}, capture_ns, hub, [&](CourtPipeline& pipeline) {
+  return publish_result({}, hub, [&](CourtPipeline& pipeline) {
     FrameSetResult result;
     result.detections = detections;
     result.camera_errors.resize(detections.size());
     result.world = pipeline.fuse(detections);
+    result.world.capture_time_ns = capture_ns;
     return result;
   });
 }
 
 std::uint64_t UpdatePublisher::publish_result(
-    const std::vector<cv::Mat>& frames, std::int64_t capture_ns, NavigationHub& hub,
+    const FrameSet& frames, NavigationHub& hub,
     const std::function<FrameSetResult(CourtPipeline&)>& run) {
   const auto started = Clock::now();
   FrameSetResult result;
@@ -97,10 +97,10 @@ std::uint64_t UpdatePublisher::publish_result(
     return 0;
   }
   const double pipeline_ms = ms_since(started);
-  std::vector<CameraView> views(frames.size());
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    views[k].frame = frames[k];
-    views[k].capture_ns = capture_ns;
+  std::vector<CameraView> views(frames.cameras.size());
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    views[k].frame = frames.cameras[k].image;
+    views[k].capture_ns = frames.cameras[k].capture_time_ns;
     if (k < result.detections.size() && result.detections[k]) {
       views[k].detections = std::move(*result.detections[k]);  // not needed past the world model
     }
@@ -110,7 +110,6 @@ std::uint64_t UpdatePublisher::publish_result(
   hub.confirm_collected(seen);
   const std::lock_guard plan_lock(plan_mutex_);
   last_world_ = std::move(result.world);
-  last_capture_ns_ = capture_ns;
   const auto plan_started = Clock::now();
   // The views are there before anyone hears of the update.
   const std::uint64_t seq = plan_and_publish(hub, [&](std::uint64_t published_seq) {
@@ -137,7 +136,7 @@ std::uint64_t UpdatePublisher::publish_result(
 
 void UpdatePublisher::republish(NavigationHub& hub) {
   const std::lock_guard plan_lock(plan_mutex_);
-  if (last_capture_ns_ == 0) return;  // nothing seen yet
+  if (!last_world_) return;  // nothing seen yet
   plan_and_publish(hub);
 }
 
@@ -146,12 +145,12 @@ std::uint64_t UpdatePublisher::plan_and_publish(
   std::string error;
   NavigationUpdate update;
   try {
-    update = plan_update(site_, last_world_, last_capture_ns_, hub,
-                         previous_ ? &*previous_ : nullptr, planner_);
+    update = plan_update(site_, *last_world_, hub.reports(), previous_ ? &*previous_ : nullptr,
+                         planner_);
   } catch (const InputError& e) {  // e.g. a pose the cameras put inside the net
     error = e.what();
-    update.capture_time_ns = last_capture_ns_;
-    update.world = last_world_;
+    update.capture_time_ns = last_world_->capture_time_ns;
+    update.world = *last_world_;
   }
   previous_ = update.route;
   const std::uint64_t seq = hub.publish(std::move(update), published);

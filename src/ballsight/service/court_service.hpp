@@ -77,11 +77,10 @@ class UpdatePublisher {
   UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
                   const PlannerOptions& planner);
 
-  /// Frames captured at `capture_ns` (UTC; empty images for missing cameras) -> one update; its
-  /// seq. Reports of collected balls the frames confirm are forgotten. A pipeline failure
-  /// publishes nothing (0) and is counted (health).
-  std::uint64_t publish(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
-                        NavigationHub& hub);
+  /// One frame set -> one update (with the set's capture time); its seq. Reports of collected
+  /// balls the frames confirm are forgotten. A pipeline failure publishes nothing (0) and is
+  /// counted (health).
+  std::uint64_t publish(const FrameSet& frames, NavigationHub& hub);
   /// The same from detections made elsewhere (camera nodes): one list per camera in camera
   /// order, nullopt for a camera without a usable frame; only the pipeline's fusion runs here.
   std::uint64_t publish_detections(const CameraDetectionLists& detections, std::int64_t capture_ns,
@@ -104,8 +103,8 @@ class UpdatePublisher {
   nlohmann::json health() const;
 
  private:
-  std::uint64_t publish_result(const std::vector<cv::Mat>& frames, std::int64_t capture_ns,
-                               NavigationHub& hub,
+  // Runs the pipeline (`run`), keeps each camera's frame of `frames` (if any) as its view.
+  std::uint64_t publish_result(const FrameSet& frames, NavigationHub& hub,
                                const std::function<FrameSetResult(CourtPipeline&)>& run);
   // plan_mutex_ held; the update's seq (`published(seq)` runs before the hub's listeners).
   std::uint64_t plan_and_publish(NavigationHub& hub,
@@ -116,8 +115,7 @@ class UpdatePublisher {
   std::unique_ptr<CourtPipeline> pipeline_;
   std::mutex plan_mutex_;  // guards the planner's use, the last world, its time, the route
   PlannerOptions planner_;
-  WorldModel last_world_;
-  std::int64_t last_capture_ns_ = 0;
+  std::optional<WorldModel> last_world_;  // nullopt before the first frame set
   std::optional<Route> previous_;
   mutable std::mutex mutex_;  // guards the figures below
   std::uint64_t frame_sets_ = 0, failed_ = 0;

@@ -7,12 +7,6 @@
 
 namespace ballsight {
 
-std::int64_t utc_now_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
-
 std::string random_hex(int digits) {
   std::random_device random;
   constexpr char kHex[] = "0123456789abcdef";
@@ -138,24 +132,19 @@ void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
   }
 }
 
-namespace {
-
-bool near_any(const Vec2& p, const std::vector<Vec2>& list) {
-  return std::any_of(list.begin(), list.end(), [&](const Vec2& q) {
-    return (q - p).norm() < NavigationHub::kCollectedMatchM;
-  });
+bool reported_collected(const Vec2& p, const std::vector<Vec2>& collected) {
+  return std::any_of(collected.begin(), collected.end(),
+                     [&](const Vec2& q) { return (q - p).norm() < kCollectedMatchM; });
 }
 
-}  // namespace
-
-bool NavigationHub::was_collected(const Vec2& p) const {
+ClientReports NavigationHub::reports() const {
   const std::lock_guard lock(mutex_);
-  return near_any(p, collected_);
+  return {robot_, balls_, collected_};
 }
 
 void NavigationHub::confirm_collected(const std::vector<Vec2>& seen) {
   const std::lock_guard lock(mutex_);
-  std::erase_if(collected_, [&](const Vec2& c) { return !near_any(c, seen); });
+  std::erase_if(collected_, [&](const Vec2& c) { return !reported_collected(c, seen); });
 }
 
 std::vector<Vec2> NavigationHub::collected() const {

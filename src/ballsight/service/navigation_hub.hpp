@@ -15,13 +15,12 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/core/utc_clock.hpp"
 #include "ballsight/plan/planning_problem.hpp"
 #include "ballsight/world/world_model.hpp"
 
 namespace ballsight {
 
-/// UTC now, nanoseconds since the epoch.
-std::int64_t utc_now_ns();
 /// `digits` random hexadecimal digits (std::random_device).
 std::string random_hex(int digits);
 
@@ -40,6 +39,19 @@ struct External {
   T value;
   std::int64_t set_ns = 0;  // UTC
 };
+
+/// What clients told the service, which a plan weighs against what the cameras saw.
+struct ClientReports {
+  std::optional<External<Pose2D>> robot;             // a pose a client set
+  std::optional<External<std::vector<Vec2>>> balls;  // a ball list a client set
+  std::vector<Vec2> collected;  // balls the robot reported collected, not yet confirmed gone
+};
+
+/// A ball reported collected within this of a ball seen is that ball.
+constexpr double kCollectedMatchM = 0.30;
+
+/// Whether a ball at `p` is one of `collected` (within kCollectedMatchM).
+bool reported_collected(const Vec2& p, const std::vector<Vec2>& collected);
 
 class NavigationHub {
  public:
@@ -85,14 +97,12 @@ class NavigationHub {
   /// they are gone. At most kMaxCollected are kept (the oldest go first).
   void add_collected(const std::vector<Vec2>& positions);
   std::vector<Vec2> collected() const;
-  /// Whether a ball at `p` is one the robot reported collected (within kCollectedMatchM).
-  bool was_collected(const Vec2& p) const;
+  /// The robot pose, ball list and collected balls clients reported, as one consistent value.
+  ClientReports reports() const;
   /// Forgets the reports the cameras have confirmed: no ball `seen` is near them any more.
   void confirm_collected(const std::vector<Vec2>& seen);
 
   static constexpr std::size_t kMaxCollected = 4096;
-  /// A ball reported collected within this of a ball seen is that ball.
-  static constexpr double kCollectedMatchM = 0.30;
 
  private:
   std::uint64_t newest_seq() const { return recent_.empty() ? 0 : recent_.back().seq; }  // locked

@@ -189,8 +189,9 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     }
     std::vector<int> removed;
     if (!driving) {  // no robot drives: balls reported collected are taken off by hand
+      const std::vector<Vec2> collected = hub.collected();
       removed = s.world->remove_balls_if([&](const sim::SceneSphere& b) {
-        return hub.was_collected(b.center_in_field.head<2>());
+        return reported_collected(b.center_in_field.head<2>(), collected);
       });
     }
     // The cameras rendered side by side (the pipeline after them is a few ms).
@@ -217,7 +218,8 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     });
     const std::int64_t capture_ns = utc_now_ns();  // the frames exist from now: "captured"
     s.render_ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
-    const std::uint64_t seq = s.publisher->publish(frames, capture_ns, hub);
+    const std::uint64_t seq =
+        s.publisher->publish(frame_set_of(std::move(frames), capture_ns, tick), hub);
     // A driving robot answers this update with its command; the court waits for it.
     sim::DriveCommand command;
     if (s.options.lockstep) {

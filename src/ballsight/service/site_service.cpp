@@ -48,36 +48,24 @@ void SiteCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {
   }
   while (!stop) {
     const std::optional<FrameSet> set = next_frame_set(list, options_.wait);
-    const bool any =
-        set && std::any_of(set->frames.begin(), set->frames.end(),
-                           [](const std::optional<Frame>& f) { return f.has_value(); });
-    if (!any) {  // every recorded source has ended, or no camera delivered: the last update stays
+    if (!set || !set->any()) {  // every recorded source has ended, or no camera delivered: the
+                                // last update stays
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
       continue;
     }
-    std::vector<cv::Mat> frames;
-    std::optional<CaptureClock::time_point> oldest;
     {
       const std::lock_guard lock(mutex_);
-      for (std::size_t c = 0; c < set->frames.size(); ++c) {
-        const std::optional<Frame>& f = set->frames[c];
-        frames.push_back(f ? f->image : cv::Mat());
-        if (!f) continue;
-        if (!oldest || f->timestamp < *oldest) oldest = f->timestamp;
-        CameraFigures& fig = figures_[c];
-        if (fig.last_frame && f->timestamp > *fig.last_frame) {
-          const double hz =
-              1.0 / std::chrono::duration<double>(f->timestamp - *fig.last_frame).count();
+      for (const CameraFrame& f : set->cameras) {
+        if (f.image.empty()) continue;
+        CameraFigures& fig = figures_[f.camera];
+        if (fig.last_frame_ns && f.capture_time_ns > *fig.last_frame_ns) {
+          const double hz = 1e9 / static_cast<double>(f.capture_time_ns - *fig.last_frame_ns);
           fig.rate_hz = smoothed_rate(fig.rate_hz, hz);
         }
-        fig.last_frame = f->timestamp;
+        fig.last_frame_ns = f.capture_time_ns;
       }
     }
-    // Capture time on the UTC clock: now, less how long ago the oldest frame arrived.
-    const std::int64_t capture_ns =
-        utc_now_ns() -
-        std::chrono::duration_cast<std::chrono::nanoseconds>(CaptureClock::now() - *oldest).count();
-    publisher_->publish(frames, capture_ns, hub);
+    publisher_->publish(*set, hub);
   }
   for (auto& c : captures_) c->stop();
 }
@@ -88,7 +76,7 @@ void SiteCourtService::republish(NavigationHub& hub) {
 
 nlohmann::json SiteCourtService::health() const {
   nlohmann::json cameras = nlohmann::json::array();
-  const auto now = CaptureClock::now();
+  const std::int64_t now_ns = utc_now_ns();
   {
     const std::lock_guard lock(mutex_);
     for (std::size_t c = 0; c < captures_.size(); ++c) {
@@ -100,8 +88,8 @@ nlohmann::json SiteCourtService::health() const {
            {"frames", s.frames},
            {"frames_per_s", fig.rate_hz},
            {"last_frame_age_s",
-            fig.last_frame
-                ? nlohmann::json(std::chrono::duration<double>(now - *fig.last_frame).count())
+            fig.last_frame_ns
+                ? nlohmann::json(1e-9 * static_cast<double>(now_ns - *fig.last_frame_ns))
                 : nlohmann::json(nullptr)},
            {"failures", s.failures_total},
            {"last_error", s.last_error}});

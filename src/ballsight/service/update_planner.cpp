@@ -7,9 +7,10 @@
 
 namespace ballsight {
 
-NavigationUpdate plan_update(const Site& site, const WorldModel& world, std::int64_t capture_ns,
-                             const NavigationHub& hub, const Route* previous,
+NavigationUpdate plan_update(const Site& site, const WorldModel& world,
+                             const ClientReports& reports, const Route* previous,
                              const PlannerOptions& options) {
+  const std::int64_t capture_ns = world.capture_time_ns;
   NavigationUpdate update;
   update.capture_time_ns = capture_ns;
   update.world = world;
@@ -19,15 +20,11 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world, std::int
     robot = world.robot->pose;
     robot_ns = capture_ns;
   }
-  if (const auto external = hub.robot(); external && external->set_ns > robot_ns) {
-    robot = external->value;
-  }
+  if (reports.robot && reports.robot->set_ns > robot_ns) robot = reports.robot->value;
   std::vector<Vec2> balls;
   for (const FusedBall& b : world.balls) balls.push_back(b.position_m);
-  if (const auto external = hub.balls(); external && external->set_ns > capture_ns) {
-    balls = external->value;
-  }
-  std::erase_if(balls, [&](const Vec2& b) { return hub.was_collected(b); });
+  if (reports.balls && reports.balls->set_ns > capture_ns) balls = reports.balls->value;
+  std::erase_if(balls, [&](const Vec2& b) { return reported_collected(b, reports.collected); });
   // Two detections closer than a ball's radius would be one ball twice: keep the first.
   std::vector<Vec2> distinct;
   for (const Vec2& b : balls) {

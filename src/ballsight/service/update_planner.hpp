@@ -13,10 +13,11 @@
 
 namespace ballsight {
 
-/// The update for `world` (captured at `capture_ns`, UTC); `previous` is the last published route
-/// (nullptr for the first). With no robot pose known the route is empty.
-NavigationUpdate plan_update(const Site& site, const WorldModel& world, std::int64_t capture_ns,
-                             const NavigationHub& hub, const Route* previous,
+/// The update for `world` (its capture time the update's) and what clients reported; `previous`
+/// is the last published route (nullptr for the first). With no robot pose known the route is
+/// empty. A function of its arguments only.
+NavigationUpdate plan_update(const Site& site, const WorldModel& world,
+                             const ClientReports& reports, const Route* previous,
                              const PlannerOptions& options);
 
 }  // namespace ballsight

@@ -226,7 +226,12 @@ class GroupFitter {
         b.segment<2>(2 * j) -= w * u * touching;
       }
     }
-    const Eigen::VectorXd x = h.ldlt().solve(b);
+    // h is the prior's diagonal plus positive semi-definite terms: positive definite, solvable
+    // unless an observation was not finite.
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(h);
+    const Eigen::VectorXd x = ldlt.solve(b);
+    require(ldlt.info() == Eigen::Success && x.allFinite(), "cluster refinement",
+            "the balls' normal equations have no finite solution");
     for (Eigen::Index i = 0; i < n; ++i) f.balls[static_cast<size_t>(i)] = x.segment<2>(2 * i);
     f.information = std::move(h);
   }

@@ -1,10 +1,13 @@
 #include "ballsight/world/pixel_cluster_fit.hpp"
 
+#include <ceres/ceres.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/world/cluster_refinement.hpp"
@@ -47,148 +50,169 @@ double disc_share(double d, double radius) {
   return std::clamp(radius + 0.5 - d, 0.0, 1.0);
 }
 
-// J^T J and J^T r of a least-squares problem, accumulated row by row.
-struct NormalEquations {
-  Eigen::MatrixXd h;
-  Eigen::VectorXd g;
-};
-
-// Adds a residual `r` whose derivative by ball index[a]'s position is slope[a] (a < count; zero
-// by the other balls).
-void accumulate(const std::vector<Eigen::Index>& index,
-                const std::vector<Eigen::RowVector2d>& slope, size_t count, double r,
-                NormalEquations& normal) {
-  for (size_t a = 0; a < count; ++a) {
-    normal.g.segment<2>(2 * index[a]) += r * slope[a].transpose();
-    for (size_t b = 0; b < count; ++b)
-      normal.h.block<2, 2>(2 * index[a], 2 * index[b]) += slope[a].transpose() * slope[b];
-  }
-}
-
 class CoverageModel {
  public:
   CoverageModel(std::vector<View> views, double ball_radius_m, const PixelFitOptions& options)
       : views_(std::move(views)), radius_(ball_radius_m), options_(options) {
-    for (const View& v : views_) pixels_ += v.patch->coverage.size();
+    for (const View& v : views_)
+      for (std::size_t k = 0; k < v.patch->coverage.size(); ++k)
+        fitted_ += v.hidden.empty() || !v.hidden[k] ? 1 : 0;
   }
 
   const std::vector<View>& views() const { return views_; }
 
-  // The sum of squared residuals (predicted - observed coverage per patch pixel, then the overlap
-  // constraints) and, if `normal`, the Gauss-Newton normal equations by the balls' positions.
-  double evaluate(const std::vector<Vec2>& balls, NormalEquations* normal) const {
-    const auto n = static_cast<Eigen::Index>(balls.size());
-    if (normal) {
-      normal->h.setZero(2 * n, 2 * n);
-      normal->g.setZero(2 * n);
-    }
-    double sum = 0.0;
+  Eigen::Index residual_count(std::size_t balls) const {
+    return fitted_ + static_cast<Eigen::Index>(balls * (balls - 1) / 2);
+  }
+
+  // The residuals: per fitted patch pixel, predicted - observed coverage; then per pair of balls
+  // their overlap over overlap_sigma_m (0 when apart). `jacobian` (if given): their derivatives by
+  // the balls' positions, a row per residual and two columns per ball.
+  void residuals(const std::vector<Vec2>& balls, Eigen::VectorXd& r,
+                 Eigen::MatrixXd* jacobian) const {
+    r.resize(residual_count(balls.size()));
+    if (jacobian) jacobian->setZero(r.size(), 2 * static_cast<Eigen::Index>(balls.size()));
     std::vector<Vec2> q(balls.size());
-    // Per pixel, the balls whose rim crosses it: index, share and d share / d pixel.
-    std::vector<Eigen::Index> rim(balls.size());
-    std::vector<double> rim_share(balls.size());
-    std::vector<Eigen::RowVector2d> rim_slope(balls.size());
+    std::vector<double> share(balls.size());
+    std::vector<Eigen::RowVector2d> slope(balls.size());  // d share / d ball position
+    Eigen::Index row = 0;
     for (const View& v : views_) {
-      for (size_t i = 0; i < balls.size(); ++i) q[i] = v.pixel(balls[i]);
+      for (std::size_t i = 0; i < balls.size(); ++i) q[i] = v.pixel(balls[i]);
       const double reach2 = (v.radius_px + 0.5) * (v.radius_px + 0.5);  // beyond: share 0
       const CoveragePatch& p = *v.patch;
       for (int y = 0; y < p.height; ++y) {
         for (int x = 0; x < p.width; ++x) {
-          const Vec2 pixel(p.x + x, p.y + y);
-          const auto k = static_cast<size_t>(y * p.width + x);
+          const auto k = static_cast<std::size_t>(y * p.width + x);
           if (!v.hidden.empty() && v.hidden[k]) continue;
+          const Vec2 pixel(p.x + x, p.y + y);
           double free = v.visible[k];
-          size_t rims = 0;
-          for (size_t i = 0; i < balls.size(); ++i) {
+          for (std::size_t i = 0; i < balls.size(); ++i) {
             const Vec2 d = pixel - q[i];
             const double d2 = d.squaredNorm();
-            if (d2 >= reach2) continue;
             const double dist = std::sqrt(d2);
-            const double share = disc_share(dist, v.radius_px);
-            free *= 1.0 - share;
-            if (share >= 1.0 || dist <= 1e-9) continue;
-            rim[rims] = static_cast<Eigen::Index>(i);
-            rim_share[rims] = share;
-            rim_slope[rims++] = (d / dist).transpose() * v.pixel_per_plane;
+            share[i] = d2 >= reach2 ? 0.0 : disc_share(dist, v.radius_px);
+            free *= 1.0 - share[i];
+            // On the rim only (inside the disc the share is 1, outside 0: flat).
+            const bool rim = share[i] > 0.0 && share[i] < 1.0 && dist > 1e-9;
+            slope[i] = rim ? Eigen::RowVector2d((d / dist).transpose() * v.pixel_per_plane)
+                           : Eigen::RowVector2d::Zero();
           }
           const double predicted = options_.coverage_gain * (1.0 - free);
-          const double r = std::min(predicted, 1.0) - p.coverage[k];
-          sum += r * r;
-          if (!normal || predicted >= 1.0) continue;
-          for (size_t a = 0; a < rims; ++a)  // d residual / d ball: the others' free share
-            rim_slope[a] *= options_.coverage_gain * free / (1.0 - rim_share[a]);
-          accumulate(rim, rim_slope, rims, r, *normal);
+          r(row) = std::min(predicted, 1.0) - p.coverage[k];
+          if (jacobian && predicted < 1.0) {
+            for (std::size_t i = 0; i < balls.size(); ++i)  // the others' free share
+              if (share[i] > 0.0 && share[i] < 1.0)
+                jacobian->block<1, 2>(row, 2 * static_cast<Eigen::Index>(i)) =
+                    options_.coverage_gain * free / (1.0 - share[i]) * slope[i];
+          }
+          ++row;
         }
       }
     }
     const double touching = 2.0 * radius_;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      for (Eigen::Index j = i + 1; j < n; ++j) {
-        const Vec2 d = balls[static_cast<size_t>(i)] - balls[static_cast<size_t>(j)];
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      for (std::size_t j = i + 1; j < balls.size(); ++j, ++row) {
+        const Vec2 d = balls[i] - balls[j];
         const double dist = d.norm();
-        if (dist >= touching) continue;
-        const double r = (touching - dist) / options_.overlap_sigma_m;
-        sum += r * r;
-        if (!normal || dist < 1e-9) continue;
-        rim[0] = i, rim[1] = j;
-        rim_slope[0] = -(d / dist).transpose() / options_.overlap_sigma_m;
-        rim_slope[1] = -rim_slope[0];
-        accumulate(rim, rim_slope, 2, r, *normal);
+        r(row) = std::max(0.0, touching - dist) / options_.overlap_sigma_m;
+        if (!jacobian || dist >= touching || dist < 1e-9) continue;
+        const Eigen::RowVector2d s = -(d / dist).transpose() / options_.overlap_sigma_m;
+        jacobian->block<1, 2>(row, 2 * static_cast<Eigen::Index>(i)) = s;
+        jacobian->block<1, 2>(row, 2 * static_cast<Eigen::Index>(j)) = -s;
       }
     }
-    return sum;
   }
 
-  double cost(const std::vector<Vec2>& balls) const { return evaluate(balls, nullptr); }
+  // The sum of squared residuals.
+  double cost(const std::vector<Vec2>& balls) const {
+    Eigen::VectorXd r;
+    residuals(balls, r, nullptr);
+    return r.squaredNorm();
+  }
 
-  // Levenberg-Marquardt from `balls`; returns the final cost, `balls` moved to the optimum.
-  double fit(std::vector<Vec2>& balls, int iterations,
-             Eigen::MatrixXd* information = nullptr) const {
-    NormalEquations normal;
-    double cost = evaluate(balls, &normal);
-    double lambda = 1e-3;
-    for (int it = 0; it < iterations; ++it) {
-      Eigen::MatrixXd damped = normal.h;
-      damped.diagonal() += lambda * (normal.h.diagonal().array() + 1e-6).matrix();
-      const Eigen::VectorXd step = -damped.ldlt().solve(normal.g);
-      std::vector<Vec2> moved = balls;
-      for (size_t i = 0; i < balls.size(); ++i)
-        moved[i] += step.segment<2>(2 * static_cast<Eigen::Index>(i));
-      NormalEquations moved_normal;
-      const double c2 = evaluate(moved, &moved_normal);
-      if (c2 < cost) {
-        balls = std::move(moved);
-        normal = std::move(moved_normal);
-        const bool converged = cost - c2 < 1e-6 * cost + 1e-9 || step.norm() < 1e-5;
-        cost = c2;
-        lambda = std::max(lambda / 4.0, 1e-7);
-        if (converged) break;
-      } else {
-        lambda *= 8.0;
-        if (lambda > 1e6) break;
-      }
-    }
-    if (information) *information = std::move(normal.h);
-    return cost;
+  // Levenberg-Marquardt (Ceres) from `balls`, at most `iterations` steps; returns the final cost
+  // with `balls` moved to the optimum, or nullopt (`balls` as they were) when the solver found no
+  // usable solution. A solve that ran out of steps is usable: each step it took lowered the cost.
+  std::optional<double> fit(std::vector<Vec2>& balls, int iterations) const;
+
+  // J^T J at `balls`: the information the pixels hold about the positions.
+  Eigen::MatrixXd information(const std::vector<Vec2>& balls) const {
+    Eigen::VectorXd r;
+    Eigen::MatrixXd jacobian;
+    residuals(balls, r, &jacobian);
+    return jacobian.transpose() * jacobian;
   }
 
   // Per pixel of the group's patches: the residual variance one ball's fit leaves.
-  double residual_variance(double cost, size_t balls) const {
+  double residual_variance(double cost, std::size_t balls) const {
     const double dof =
-        std::max(1.0, static_cast<double>(pixels_) - 2.0 * static_cast<double>(balls));
+        std::max(1.0, static_cast<double>(fitted_) - 2.0 * static_cast<double>(balls));
     return std::max(cost / dof, 1e-3);
   }
 
  private:
   std::vector<View> views_;
-  size_t pixels_ = 0;
+  Eigen::Index fitted_ = 0;  // patch pixels in the fit (not hidden)
   double radius_;
   const PixelFitOptions& options_;
 };
 
+// The coverage residuals as Ceres sees them: one parameter block of two per ball.
+class CoverageCost final : public ceres::CostFunction {
+ public:
+  CoverageCost(const CoverageModel& model, std::size_t balls) : model_(model), balls_(balls) {
+    set_num_residuals(static_cast<int>(model.residual_count(balls)));
+    mutable_parameter_block_sizes()->assign(balls, 2);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    std::vector<Vec2> balls(balls_);
+    for (std::size_t i = 0; i < balls_; ++i) balls[i] = Vec2(parameters[i][0], parameters[i][1]);
+    Eigen::VectorXd r;
+    Eigen::MatrixXd jacobian;
+    model_.residuals(balls, r, jacobians ? &jacobian : nullptr);
+    Eigen::Map<Eigen::VectorXd>(residuals, r.size()) = r;
+    if (!jacobians) return true;
+    using Block = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+    for (std::size_t i = 0; i < balls_; ++i)
+      if (jacobians[i])
+        Eigen::Map<Block>(jacobians[i], r.size(), 2) =
+            jacobian.middleCols<2>(2 * static_cast<Eigen::Index>(i));
+    return true;
+  }
+
+ private:
+  const CoverageModel& model_;
+  std::size_t balls_;
+};
+
+std::optional<double> CoverageModel::fit(std::vector<Vec2>& balls, int iterations) const {
+  std::vector<Vec2> moved = balls;  // Vec2 is two contiguous doubles: Ceres' blocks
+  std::vector<double*> blocks;
+  for (Vec2& b : moved) blocks.push_back(b.data());
+  ceres::Problem problem;
+  problem.AddResidualBlock(new CoverageCost(*this, moved.size()), nullptr, blocks);
+  // Stops after `iterations` steps, or when a step lowers the cost by less than a millionth or
+  // moves the balls by less than a millionth of their distance from the centre (~10 um).
+  ceres::Solver::Options solver;
+  solver.max_num_iterations = iterations;
+  solver.function_tolerance = solver.parameter_tolerance = 1e-6;
+  solver.linear_solver_type = ceres::DENSE_QR;  // a few balls, a few hundred pixels: dense
+  solver.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  if (!summary.IsSolutionUsable()) return std::nullopt;
+  balls = std::move(moved);
+  return 2.0 * summary.final_cost;  // Ceres' cost is half the sum of squares
+}
+
+// The cost of a hypothesis whose fit the solver could not make: never the best.
+constexpr double kUnusable = std::numeric_limits<double>::infinity();
+
 struct Hypothesis {
   std::vector<Vec2> balls;
-  double cost = std::numeric_limits<double>::max();
+  double cost = kUnusable;
 };
 
 // Where one more ball may start, two kinds. Touching one of the balls, in eight directions:
@@ -251,7 +275,7 @@ Hypothesis with_one_more(const CoverageModel& model, const Hypothesis& current, 
     starts.push_back(std::move(h));
   Hypothesis best;
   for (Hypothesis& h : starts) {
-    h.cost = model.fit(h.balls, options.iterations);
+    h.cost = model.fit(h.balls, options.iterations).value_or(kUnusable);
     if (h.cost < best.cost) best = std::move(h);
   }
   return best;
@@ -267,7 +291,7 @@ Hypothesis with_one_less(const CoverageModel& model, const Hypothesis& current,
     h.cost = model.cost(h.balls);
     if (h.cost < best.cost) best = std::move(h);
   }
-  best.cost = model.fit(best.balls, options.iterations);
+  best.cost = model.fit(best.balls, options.iterations).value_or(kUnusable);
   return best;
 }
 
@@ -394,7 +418,12 @@ std::vector<FusedObject> fit_clusters_to_pixels(
     }
     const CoverageModel model(std::move(views), ball_radius_m, options);
     Hypothesis best = start;
-    best.cost = model.fit(best.balls, options.iterations);
+    const std::optional<double> fitted = model.fit(best.balls, options.iterations);
+    if (!fitted) {  // the solver found no usable solution: the fusion's balls stay
+      keep_group();
+      continue;
+    }
+    best.cost = *fitted;
     const auto remove_unneeded = [&] {
       while (best.balls.size() > 1) {
         Hypothesis fewer = with_one_less(model, best, options);
@@ -414,8 +443,10 @@ std::vector<FusedObject> fit_clusters_to_pixels(
     }
     // A ball added moves its neighbours; one of them may no longer be needed.
     if (best.balls.size() > before_adding) remove_unneeded();
-    Eigen::MatrixXd information;
-    const double cost = model.fit(best.balls, options.iterations, &information);
+    // The last fit moves the balls a ball added or removed moved; it failing leaves them as the
+    // last usable fit had them.
+    const double cost = model.fit(best.balls, options.iterations).value_or(best.cost);
+    const Eigen::MatrixXd information = model.information(best.balls);
     const Eigen::MatrixXd covariance =
         model.residual_variance(cost, best.balls.size()) *
         (information + 1e-9 * Eigen::MatrixXd::Identity(information.rows(), information.cols()))

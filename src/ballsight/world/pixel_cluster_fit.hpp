@@ -5,9 +5,9 @@
 // the blobs' outlines in several views do. A hypothesis of k balls on the plane of the balls'
 // centres is drawn into each camera's coverage patch (discs of the ball's apparent radius, placed
 // by the plane's local affine map at the blob, their union's pixel coverage saturating as the
-// detector's does) and its positions are fitted to the observed coverage by Levenberg-Marquardt;
-// a ball is added or removed where that changes the squared coverage residual by more than a
-// per-ball penalty measured on isolated single balls (docs/court-vision.md).
+// detector's does) and its positions are fitted to the observed coverage by Levenberg-Marquardt
+// (Ceres); a ball is added or removed where that changes the squared coverage residual by more than
+// a per-ball penalty measured on isolated single balls (docs/court-vision.md).
 
 #include <functional>
 #include <optional>

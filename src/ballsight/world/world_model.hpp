@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct WorldModel {
   std::vector<CollectionSite> sites;  // indices into balls
   std::optional<RobotPoseEstimate> robot;
   std::vector<int> cameras;  // cameras whose frames went into this model, ascending
+  /// UTC, when the oldest frame it was made from was captured (0: not known).
+  std::int64_t capture_time_ns = 0;
 };
 
 /// Throws InputError naming `where` unless there is one detection list per camera.

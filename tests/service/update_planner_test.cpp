@@ -1,0 +1,65 @@
+#include "ballsight/service/update_planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include "example_site.hpp"
+
+namespace ballsight {
+namespace {
+
+using test::kExampleSite;
+
+WorldModel seen_world(std::int64_t capture_ns) {
+  WorldModel world;
+  world.capture_time_ns = capture_ns;
+  world.robot.emplace();
+  world.robot->pose = Pose2D{Vec2(-3.0, 2.0), 0.0};
+  for (const Vec2& p : {Vec2(2.0, 1.0), Vec2(4.0, -2.0), Vec2(-1.0, 3.0)}) {
+    FusedBall ball;
+    ball.position_m = p;
+    world.balls.push_back(ball);
+  }
+  return world;
+}
+
+// Whether `route` starts at the robot at `p` (at its collector's mouth, a little ahead of it).
+bool starts_at(const Route& route, const Vec2& p) {
+  return !route.waypoints_m.empty() && (route.waypoints_m.front() - p).norm() < 0.5;
+}
+
+// The update is a function of the values passed: the world's capture time is the update's, what
+// a client set wins only when it is newer than the frames, and balls reported collected are left
+// out of the route (not out of the world model: the cameras still see them).
+TEST(PlanUpdate, WeighsClientReportsByTheFramesTime) {
+  const Site site = read_site(kExampleSite.string());
+  const WorldModel world = seen_world(5000);
+  const NavigationUpdate plain = plan_update(site, world, {}, nullptr, {});
+  EXPECT_EQ(plain.capture_time_ns, 5000);
+  EXPECT_EQ(plain.world.balls.size(), 3u);
+  EXPECT_EQ(plain.route.order.size(), 3u);
+  EXPECT_TRUE(starts_at(plain.route, Vec2(-3.0, 2.0)));
+
+  ClientReports reports;
+  reports.collected = {Vec2(2.1, 1.0)};
+  reports.robot = External<Pose2D>{Pose2D{Vec2(1.0, -1.0), 0.0}, 4000};  // older than the frames
+  const NavigationUpdate older = plan_update(site, world, reports, nullptr, {});
+  EXPECT_EQ(older.route.order.size(), 2u);
+  EXPECT_EQ(older.world.balls.size(), 3u);
+  EXPECT_TRUE(starts_at(older.route, Vec2(-3.0, 2.0)));
+
+  reports.robot->set_ns = 6000;  // newer than the frames: the client's pose
+  reports.balls = External<std::vector<Vec2>>{{Vec2(6.0, 2.0)}, 6000};
+  const NavigationUpdate newer = plan_update(site, world, reports, nullptr, {});
+  EXPECT_TRUE(starts_at(newer.route, Vec2(1.0, -1.0)));
+  EXPECT_EQ(newer.route.order.size(), 1u);
+
+  // No robot pose from anyone: no route, the world model all the same.
+  WorldModel unseen = world;
+  unseen.robot.reset();
+  const NavigationUpdate none = plan_update(site, unseen, {}, nullptr, {});
+  EXPECT_TRUE(none.route.order.empty());
+  EXPECT_EQ(none.world.balls.size(), 3u);
+}
+
+}  // namespace
+}  // namespace ballsight
