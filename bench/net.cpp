@@ -49,7 +49,7 @@ struct LocalService {
     o.port = 0;
     o.token = kToken;
     o.client_queue = 4096;
-    server = std::make_unique<HttpServer>(o, context);
+    server = std::make_unique<HttpServer>(o, api_v1_routes(context), context);
   }
   ApiContext context;
   std::unique_ptr<HttpServer> server;
@@ -193,7 +193,7 @@ void BM_WholeChain(benchmark::State& state, bool at_10_hz) {
   HttpServerOptions o;
   o.port = 0;
   o.token = kToken;
-  HttpServer server(o, context);
+  HttpServer server(o, api_v1_routes(context), context);
   HttpRobotLink link(link_to(server.port()));
   std::atomic<bool> stop{false};
   std::thread loop([&] { simulated.run(hub, stop); });

@@ -2,8 +2,9 @@ cmake_policy(SET CMP0057 NEW)
 # Fails when a source file includes a header of a layer it may not use. The rules are read from
 # docs/architecture.md, the one source of truth: its "## Layers" table (a row per layer, the
 # layers it may use in backticks in the third column) and its "## Exceptions" table (a layer,
-# the layer it may also use, and the file name patterns of the files that may). Every folder of
-# src/ballsight must be a layer of the table and every layer of the table a folder.
+# the layer it may also use, and the patterns of the files that may: paths in the layer's folder,
+# `*` any characters). Every folder of src/ballsight must be a layer of the table and every layer
+# of the table a folder.
 # Run as: cmake -DSOURCE_DIR=<repo> -P cmake/check_layers.cmake
 set(doc ${SOURCE_DIR}/docs/architecture.md)
 file(STRINGS ${doc} lines)
@@ -61,7 +62,7 @@ foreach(layer ${layers})
   file(GLOB_RECURSE files ${SOURCE_DIR}/src/ballsight/${layer}/*.hpp
                           ${SOURCE_DIR}/src/ballsight/${layer}/*.cpp)
   foreach(file ${files})
-    get_filename_component(name ${file} NAME)
+    file(RELATIVE_PATH path_in_layer ${SOURCE_DIR}/src/ballsight/${layer} ${file})
     file(STRINGS ${file} includes REGEX "#include \"ballsight/[a-z]+/")
     foreach(line ${includes})
       string(REGEX MATCH "ballsight/([a-z]+)/" _ "${line}")
@@ -74,7 +75,7 @@ foreach(layer ${layers})
         foreach(pattern ${patterns_${layer}_${used}})
           string(REPLACE "." "\\." regex "${pattern}")
           string(REPLACE "*" ".*" regex "${regex}")
-          if(name MATCHES "^${regex}$")
+          if(path_in_layer MATCHES "^${regex}$")
             set(excepted TRUE)
           endif()
         endforeach()

@@ -104,8 +104,6 @@ HttpService::HttpService(const HttpServiceArgs& args, CourtService& service, Nav
   options.web_root = args.web;
   options.node_modules = args.node_modules;
   options.body_limit = 16u << 20;  // the calibration pages upload images
-  context_.omni = &omni_;
-  context_.court_calibration = &court_calibration_;
   context_.health = [this, &service, &hub] {
     nlohmann::json h = service.health();
     h["uptime_s"] =
@@ -117,7 +115,10 @@ HttpService::HttpService(const HttpServiceArgs& args, CourtService& service, Nav
     h["service_id"] = hub.service_id();
     return h;
   };
-  http_ = std::make_unique<HttpServer>(options, context_);
+  ApiRoutes routes = api_v1_routes(context_);
+  omni_.register_routes(routes);
+  court_calibration_.register_routes(routes);
+  http_ = std::make_unique<HttpServer>(options, std::move(routes), context_);
   server_ = http_.get();
   std::cout << program << ": http://" << options.address << ":" << http_->port()
             << "/api/v1/ (token in " << args.token_file << ")" << std::endl;

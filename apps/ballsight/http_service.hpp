@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "ballsight/net/api.hpp"
-#include "ballsight/net/court_calibration_api.hpp"
+#include "ballsight/net/calibration/court_calibration_api.hpp"
+#include "ballsight/net/calibration/omni_calibration_api.hpp"
 #include "ballsight/net/http_server.hpp"
-#include "ballsight/net/omni_calibration_api.hpp"
 #include "ballsight/net/service_api.hpp"
 #include "ballsight/service/court_service.hpp"
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "ballsight/net/api.hpp"
+#include "ballsight/net/api_routes.hpp"
 
 namespace ballsight::test {
 

@@ -108,7 +108,7 @@ TEST(Foxglove, TheServiceSpeaksItOnItsOwnPort) {
   HttpServerOptions options;
   options.port = 0;
   options.token = "0123456789abcdef0123";
-  HttpServer server(options, context);
+  HttpServer server(options, api_v1_routes(context), context);
   asio::io_context io;
   websocket::stream<asio::ip::tcp::socket> ws(io);
   ws.next_layer().connect({asio::ip::make_address("127.0.0.1"), server.port()});

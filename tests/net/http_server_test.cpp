@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/net/omni_calibration_api.hpp"
+#include "ballsight/net/calibration/omni_calibration_api.hpp"
 #include "sample_update.hpp"
 
 namespace ballsight {
@@ -28,17 +28,19 @@ using tcp = asio::ip::tcp;
 
 constexpr const char* kToken = "0123456789abcdef0123";
 
+/// API v1 and the omni calibration API (its routes run long) behind a server.
 struct Service {
   NavigationHub hub;
   OmniCalibrationApi omni;
-  ApiContext context = [this] {
-    ApiContext c{hub, {"ne"}, SiteCourt{}, 0.0335};
-    c.omni = &omni;
-    return c;
-  }();
+  ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
   HttpServer server;
 
-  explicit Service(HttpServerOptions options = with_token()) : server(options, context) {}
+  explicit Service(HttpServerOptions options = with_token()) : server(options, routes(), context) {}
+  ApiRoutes routes() {
+    ApiRoutes r = api_v1_routes(context);
+    omni.register_routes(r);
+    return r;
+  }
   static HttpServerOptions with_token() {
     HttpServerOptions o;
     o.port = 0;
@@ -221,7 +223,7 @@ TEST(HttpServer, TokenFileIsCreatedPrivateAndReadBack) {
   bad.address = "not-an-address";
   NavigationHub hub;
   ApiContext context{hub, {}, SiteCourt{}, 0.0335};
-  EXPECT_THROW({ HttpServer server(bad, context); }, InputError);
+  EXPECT_THROW({ HttpServer server(bad, api_v1_routes(context), context); }, InputError);
 }
 
 }  // namespace

@@ -80,7 +80,7 @@ TEST(ServiceLoad, HundredClientsAtThirtyHertzGetEveryUpdateAndAStalledOneHoldsUp
   HttpServerOptions options;
   options.port = 0;
   options.token = "0123456789abcdef0123";
-  HttpServer server(options, context);
+  HttpServer server(options, api_v1_routes(context), context);
 
   // The stalled client: a WebSocket that never reads, with a small receive buffer.
   asio::io_context stalled_io;

@@ -12,8 +12,6 @@
 #include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/net/api_request.hpp"
-#include "ballsight/net/court_calibration_api.hpp"
-#include "ballsight/net/omni_calibration_api.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 #include "ballsight/pipeline/world_model_json.hpp"
 
@@ -351,14 +349,6 @@ struct ApiRoute {
 
 }  // namespace
 
-std::string json_text(const json& j) {
-  return j.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-ApiResponse api_error(int status, const std::string& what, const std::string& where) {
-  return {status, json_text(json{{"error", what}, {"where", where}})};
-}
-
 bool is_stream_target(const std::string& target) {
   return split_target(target).path == "/api/v1/stream";
 }
@@ -450,14 +440,6 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       {"/api/v1/openapi.json", {"GET"}, openapi_route},
       {"/api/v1/planner", {"GET", "PUT"}, planner_route},
   };
-  if (OmniCalibrationApi::owns(path)) {
-    return c.omni ? c.omni->handle(request)
-                  : api_error(404, "no omni calibration on this service", path);
-  }
-  if (CourtCalibrationApi::owns(path)) {
-    return c.court_calibration ? c.court_calibration->handle(request)
-                               : api_error(404, "no court calibration on this service", path);
-  }
   return answer_or_error([&] {
     if (path.starts_with("/api/v1/cameras/")) return camera_view_route(request, path, c);
     const auto route = std::find_if(kRoutes.begin(), kRoutes.end(),
@@ -470,10 +452,14 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
   });
 }
 
-bool runs_long(const std::string& target) {
-  const std::string path = split_target(target).path;
-  return OmniCalibrationApi::owns(path) || CourtCalibrationApi::owns(path) ||
-         path.starts_with("/api/v1/cameras/");
+ApiRoutes api_v1_routes(const ApiContext& context) {
+  const auto answer = [&context](const ApiRequest& request) {
+    return handle_api(request, context);
+  };
+  ApiRoutes routes;
+  routes.add({.prefix = "/api/v1/", .handler = answer});
+  routes.add({.prefix = "/api/v1/cameras/", .handler = answer, .runs_long = true});
+  return routes;
 }
 
 }  // namespace ballsight

@@ -1,5 +1,5 @@
 #pragma once
-// API v1 of the navigation service, independent of the transport: one request in, one response
+// API v1 of the navigation service, an API module (api_routes.hpp): one request in, one response
 // out (docs/robot-link.md; the routes are listed by `openapi_document()`). The HTTP server
 // (http_server.hpp) parses the wire and says whether the request carried the token; everything a
 // client sends is checked here, and every bad request gets a 4xx with {"error", "where"}.
@@ -14,35 +14,13 @@
 #include <vector>
 
 #include "ballsight/core/field_rect.hpp"
+#include "ballsight/net/api_routes.hpp"
 #include "ballsight/plan/planning_problem.hpp"
 #include "ballsight/service/camera_view.hpp"
 #include "ballsight/service/navigation_hub.hpp"
 #include "ballsight/world/site.hpp"
 
 namespace ballsight {
-
-class CourtCalibrationApi;
-class OmniCalibrationApi;
-
-struct ApiRequest {
-  std::string method;  // "GET", "PUT", "POST", ...
-  std::string target;  // path and query, e.g. "/api/v1/navigation?after=3&timeout_ms=500"
-  std::string body;
-  bool authorized = false;  // carried the service's bearer token
-};
-
-struct ApiResponse {
-  ApiResponse(int status_ = 200, std::string body_ = {})
-      : status(status_), body(std::move(body_)) {}
-
-  int status;
-  std::string body;  // JSON (or a web page's file: content_type), or empty for 204
-  std::string content_type = "application/json";
-  /// A long-poll with nothing newer than `wait_after` yet: the transport waits up to `wait` for
-  /// an update, then answers with `poll_answer` (204 when none came). Empty: answer now.
-  std::optional<std::uint64_t> wait_after;
-  std::chrono::milliseconds wait{0};
-};
 
 struct ApiContext {
   ApiContext(NavigationHub& hub_, std::vector<std::string> camera_names_, const SiteCourt& court_,
@@ -64,24 +42,14 @@ struct ApiContext {
   std::function<PlannerKind()> planner;
   std::function<void(PlannerKind)> set_planner;
   std::chrono::milliseconds max_wait{30000};  // cap on a long-poll's timeout_ms
-  /// The omni calibration page's API (/api/v1/omni/...); null: none (404).
-  OmniCalibrationApi* omni = nullptr;
-  /// The court calibration page's API (/api/v1/court-calibration/...); null: none (404).
-  CourtCalibrationApi* court_calibration = nullptr;
 };
-
-/// `j` as JSON text; bytes that are not UTF-8 (a client's, a camera's message) become U+FFFD
-/// instead of an exception.
-std::string json_text(const nlohmann::json& j);
-
-/// The 4xx/5xx answer {"error": what, "where": where}.
-ApiResponse api_error(int status, const std::string& what, const std::string& where);
 
 /// Answers one request without waiting. Never throws for anything a client sends.
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& context);
-/// Whether the request's answer takes more than a moment (a calibration step, a frame encoded):
-/// the HTTP server answers it off its I/O thread, so that it holds up no other client.
-bool runs_long(const std::string& target);
+/// API v1 on `context` (which must outlive them) as the routes of a service: /api/v1/, and the
+/// camera views (/api/v1/cameras/), which encode a frame and so run long. The calibration pages'
+/// APIs add their own (calibration/).
+ApiRoutes api_v1_routes(const ApiContext& context);
 /// A waiting long-poll's answer: the first update newer than `after`; nullopt while none is.
 std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& context);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Reading a request of the service's APIs (api.hpp, omni_calibration_api.hpp): its path and query,
+// Reading a request of the service's API modules (api.hpp, calibration/): its path and query,
 // its JSON body, and the client mistakes that become 4xx answers {"error", "where"}.
 
 #include <functional>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/net/api.hpp"
+#include "ballsight/net/api_routes.hpp"
 
 namespace ballsight {
 

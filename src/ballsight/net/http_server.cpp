@@ -148,16 +148,18 @@ void HttpServerOptions::validate() const {
 }
 
 struct HttpServer::Impl {
-  Impl(const HttpServerOptions& o, ApiContext& c) : options(o), context(c) {
+  Impl(const HttpServerOptions& o, ApiRoutes r, ApiContext& c)
+      : options(o), routes(std::move(r)), context(c) {
     if (!o.web_root.empty()) pages.emplace(o.web_root, o.node_modules);
   }
 
   HttpServerOptions options;
+  const ApiRoutes routes;
   ApiContext& context;
   std::optional<WebFiles> pages;
   asio::io_context io{1};
   asio::executor_work_guard<asio::io_context::executor_type> work{io.get_executor()};
-  asio::thread_pool workers{2};  // requests that run long (runs_long), off the I/O thread
+  asio::thread_pool workers{2};  // requests whose route runs long, off the I/O thread
   tcp::acceptor acceptor{io};
   asio::steady_timer health_timer{io};
   std::thread thread;
@@ -306,12 +308,12 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
     } else if (const std::string path = split_target(request.target).path;
                pages && request.method == "GET" && WebFiles::is_page_path(path)) {
       response = pages->get(path);
-    } else if (runs_long(request.target)) {
+    } else if (routes.runs_long(request.target)) {
       response = co_await asio::co_spawn(
-          workers, [&]() -> awaitable<ApiResponse> { co_return handle_api(request, context); },
+          workers, [&]() -> awaitable<ApiResponse> { co_return routes.answer(request); },
           asio::use_awaitable);
     } else {
-      response = handle_api(request, context);
+      response = routes.answer(request);
       if (response.wait_after) response = co_await long_poll(*response.wait_after, response.wait);
     }
     stream.expires_after(options.idle_timeout);
@@ -484,8 +486,8 @@ void HttpServer::Impl::close_all() {
   for (const auto& [id, close] : closing) close();
 }
 
-HttpServer::HttpServer(const HttpServerOptions& options, ApiContext& context)
-    : impl_(std::make_unique<Impl>(options, context)) {
+HttpServer::HttpServer(const HttpServerOptions& options, ApiRoutes routes, ApiContext& context)
+    : impl_(std::make_unique<Impl>(options, std::move(routes), context)) {
   options.validate();
   beast::error_code ec;
   const auto address = asio::ip::make_address(options.address, ec);

@@ -5,9 +5,10 @@
 // clients (the stream of API v1, and Foxglove clients, foxglove.hpp) each with a bounded queue of
 // messages: a client that reads too slowly loses its oldest messages (counted in `clients()`),
 // never holds up another client or the pipeline, which only hands the I/O thread a sequence
-// number when it publishes. Requests are bounded (body, header, idle time, connections); the
-// bearer token decides whether a request may write, and whether a client on another host may
-// read.
+// number when it publishes. A request goes to the route an API module registered (api_routes.hpp),
+// on a worker thread when the route runs long. Requests are bounded (body, header, idle time,
+// connections); the bearer token decides whether a request may write, and whether a client on
+// another host may read.
 
 #include <chrono>
 #include <cstddef>
@@ -58,9 +59,11 @@ nlohmann::json clients_json(const std::vector<ClientStats>& clients);
 
 class HttpServer {
  public:
-  /// Binds and starts serving API v1 of `context` (which must outlive the server); throws
-  /// InputError when the address cannot be bound.
-  HttpServer(const HttpServerOptions& options, ApiContext& context);
+  /// Binds and starts serving: every request by `routes` (whose modules must outlive the server).
+  /// API v1's stream and long-polls wait on `context`'s hub here (as do Foxglove's clients), so
+  /// the server takes API v1's context too (it must outlive the server). Throws InputError when
+  /// the address cannot be bound.
+  HttpServer(const HttpServerOptions& options, ApiRoutes routes, ApiContext& context);
   ~HttpServer();
   HttpServer(const HttpServer&) = delete;
   HttpServer& operator=(const HttpServer&) = delete;

@@ -1,4 +1,4 @@
-#include "ballsight/net/omni_calibration_api.hpp"
+#include "ballsight/net/calibration/omni_calibration_api.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -474,8 +474,10 @@ OmniCalibrationApi::~OmniCalibrationApi() {
   for (auto& [job, thread] : impl_->workers) thread.join();
 }
 
-bool OmniCalibrationApi::owns(const std::string& path) {
-  return path.starts_with(kPrefix);
+void OmniCalibrationApi::register_routes(ApiRoutes& routes) {
+  routes.add({.prefix = kPrefix,
+              .handler = [this](const ApiRequest& request) { return handle(request); },
+              .runs_long = true});
 }
 
 ApiResponse OmniCalibrationApi::handle(const ApiRequest& request) {

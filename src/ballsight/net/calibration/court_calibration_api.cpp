@@ -1,4 +1,4 @@
-#include "ballsight/net/court_calibration_api.hpp"
+#include "ballsight/net/calibration/court_calibration_api.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -288,8 +288,10 @@ CourtCalibrationApi::CourtCalibrationApi(CourtCalibrationApiOptions options)
 
 CourtCalibrationApi::~CourtCalibrationApi() = default;
 
-bool CourtCalibrationApi::owns(const std::string& path) {
-  return path.starts_with(kPrefix);
+void CourtCalibrationApi::register_routes(ApiRoutes& routes) {
+  routes.add({.prefix = kPrefix,
+              .handler = [this](const ApiRequest& request) { return handle(request); },
+              .runs_long = true});
 }
 
 ApiResponse CourtCalibrationApi::handle(const ApiRequest& request) {

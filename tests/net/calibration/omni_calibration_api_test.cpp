@@ -1,11 +1,10 @@
-#include "ballsight/net/omni_calibration_api.hpp"
+#include "ballsight/net/calibration/omni_calibration_api.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <thread>
 
-#include "api_error.hpp"
 #include "ballsight/calib/sample_csv.hpp"
 #include "ballsight/camera/ground_map_io.hpp"
 #include "ballsight/camera/image_file.hpp"
@@ -13,6 +12,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/pipeline/omni_calibration.hpp"
 #include "ballsight/sim/omni_dataset.hpp"
+#include "net/api_error.hpp"
 #include "wait_until.hpp"
 
 namespace ballsight {

@@ -14,7 +14,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "ballsight/net/api.hpp"
+#include "ballsight/net/api_routes.hpp"
 
 namespace ballsight {
 
@@ -36,8 +36,9 @@ class OmniCalibrationApi {
   OmniCalibrationApi(const OmniCalibrationApi&) = delete;
   OmniCalibrationApi& operator=(const OmniCalibrationApi&) = delete;
 
-  /// Whether `path` (no query) is this API's.
-  static bool owns(const std::string& path);
+  /// Adds this API's route (/api/v1/omni/) to `routes`; the API must outlive their use. It
+  /// runs long: its steps (a frame's markers found, a table built) take more than a moment.
+  void register_routes(ApiRoutes& routes);
   /// Answers one request; never throws for anything a client sends. Fits run on a thread of
   /// their own: POST answers 202 at once, GET of the fit says when it is done.
   ApiResponse handle(const ApiRequest& request);

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "ballsight/camera/pinhole.hpp"
-#include "ballsight/net/api.hpp"
+#include "ballsight/net/api_routes.hpp"
 #include "ballsight/world/site.hpp"
 
 namespace ballsight {
@@ -45,8 +45,9 @@ class CourtCalibrationApi {
   CourtCalibrationApi(const CourtCalibrationApi&) = delete;
   CourtCalibrationApi& operator=(const CourtCalibrationApi&) = delete;
 
-  /// Whether `path` (no query) is this API's.
-  static bool owns(const std::string& path);
+  /// Adds this API's route (/api/v1/court-calibration/) to `routes`; the API must outlive their
+  /// use. It runs long: its steps (a pose search, a colour model) take more than a moment.
+  void register_routes(ApiRoutes& routes);
   /// Answers one request; never throws for anything a client sends.
   ApiResponse handle(const ApiRequest& request);
 

@@ -1,8 +1,7 @@
-#include "ballsight/net/court_calibration_api.hpp"
+#include "ballsight/net/calibration/court_calibration_api.hpp"
 
 #include <gtest/gtest.h>
 
-#include "api_error.hpp"
 #include "ballsight/camera/camera_file.hpp"
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/file_io.hpp"
@@ -11,6 +10,7 @@
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
 #include "example_site.hpp"
+#include "net/api_error.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
