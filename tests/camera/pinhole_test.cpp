@@ -5,21 +5,12 @@
 #include <opencv2/calib3d.hpp>
 
 #include "ballsight/core/error.hpp"
+#include "test_cameras.hpp"
 
 namespace ballsight {
 namespace {
 
-PinholeParams wide_hd_camera() {
-  PinholeParams p;
-  p.width = 1280;
-  p.height = 720;
-  p.fx = 900.0;
-  p.fy = 905.0;
-  p.cx = 644.0;
-  p.cy = 356.0;
-  p.distortion = {-0.32, 0.12, 0.0008, -0.0005, -0.02, 0, 0, 0};
-  return p;
-}
+using test::wide_hd_camera;
 
 TEST(Pinhole, PixelRayPixelRoundTripOverDenseGrid) {
   const PinholeCamera camera(wide_hd_camera());

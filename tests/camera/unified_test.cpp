@@ -4,24 +4,12 @@
 
 #include <opencv2/ccalib/omnidir.hpp>
 
+#include "test_cameras.hpp"
+
 namespace ballsight {
 namespace {
 
-UnifiedParams mirror_camera(double xi) {
-  UnifiedParams p;
-  p.width = 640;
-  p.height = 480;
-  p.xi = xi;
-  p.fx = 128.0;
-  p.fy = 130.0;
-  p.cx = 322.0;
-  p.cy = 237.0;
-  p.k1 = -0.05;
-  p.k2 = 0.01;
-  p.p1 = 0.001;
-  p.p2 = -0.0005;
-  return p;
-}
+using test::mirror_camera;
 
 class UnifiedRoundTrip : public ::testing::TestWithParam<double> {};
 

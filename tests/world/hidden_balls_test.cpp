@@ -34,6 +34,10 @@ TEST(HiddenBallMemory, ABallThatVanishesBesideTheRobotIsKeptForAWhile) {
     EXPECT_TRUE(w.balls[0].cameras.empty()) << "no camera sees it";
     ASSERT_EQ(w.sites.size(), 1u);
     EXPECT_EQ(w.sites[0].balls, std::vector<int>{0});
+    // The memory's state says so too: one ball, missed k frame sets in a row.
+    ASSERT_EQ(memory.state().remembered.size(), 1u);
+    EXPECT_EQ(memory.state().remembered[0].frame_sets, k);
+    EXPECT_TRUE(memory.state().last_seen.empty());
   }
   WorldModel late = world_with({}, Vec2(0, 0));
   memory.apply(late);

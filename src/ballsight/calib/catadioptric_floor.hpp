@@ -1,6 +1,6 @@
 #pragma once
-// The floor as a central catadioptric camera sees it: the unified model (Mei & Rives 2007, as
-// camera/unified.hpp without lens distortion) at a height above the floor, its axis turned from
+// The floor as a central catadioptric camera sees it: the unified model (Mei & Rives 2007,
+// camera/unified_model.hpp) at a height above the floor, its axis turned from
 // the ideal mount by a small rotation (tilt and yaw). The physics of camera/omni_rig.hpp, with
 // the parameters ballsight's omni model fits, plus an optional radial distortion for mirrors
 // that are not exactly central. Templated on the scalar for Ceres' autodiff.
@@ -9,6 +9,7 @@
 
 #include <array>
 
+#include "ballsight/camera/unified_model.hpp"
 #include "ballsight/core/geometry.hpp"
 
 namespace ballsight {
@@ -51,21 +52,17 @@ struct CatadioptricFloorParams {
 template <typename T>
 bool floor_point_from_pixel(const T* p, const T& u, const T& v, T* floor_cm,
                             bool clamp_horizon = false) {
-  const T& xi = p[0];
   const T dx = (u - p[2]) / p[1];
   const T dy = (v - p[3]) / p[1];
   const T d2 = dx * dx + dy * dy;
   const T radial = T(1.0) + d2 * (p[8] + d2 * (p[9] + d2 * p[10]));
   const T mx = dx * radial;
   const T my = dy * radial;
-  const T r2 = mx * mx + my * my;
-  const T discriminant = T(1.0) + (T(1.0) - xi * xi) * r2;
-  if (!(discriminant > T(0.0))) return false;
-  using std::sqrt;
-  const T factor = (xi + sqrt(discriminant)) / (T(1.0) + r2);  // lift onto the unit sphere
+  T lifted[3];
+  if (!UnifiedModel<T>{p[0]}.lift(mx, my, lifted)) return false;
   // Ideal mount: image right is the robot's right, image down is backwards, the axis points
   // down (camera/omni_rig.cpp), then the mount error.
-  const T ideal[3] = {-factor * my, -factor * mx, -(factor - xi)};
+  const T ideal[3] = {-lifted[1], -lifted[0], -lifted[2]};
   T ray[3];
   ceres::AngleAxisRotatePoint(p + 5, ideal, ray);
   T down = -ray[2];
@@ -90,14 +87,11 @@ bool pixel_from_floor_point(const T* p, const T* floor_cm, T* pixel) {
   T ray[3];
   ceres::AngleAxisRotatePoint(inverse_rotation, viewpoint_to_point, ray);
   // The ideal mount's axes (floor_point_from_pixel), back to the camera's.
-  const T cx = -ray[1];
-  const T cy = -ray[0];
-  const T cz = -ray[2];
-  using std::sqrt;
-  const T denominator = cz + p[0] * sqrt(cx * cx + cy * cy + cz * cz);
-  if (!(denominator > T(0.0))) return false;
-  pixel[0] = p[1] * cx / denominator + p[2];
-  pixel[1] = p[1] * cy / denominator + p[3];
+  const T in_camera[3] = {-ray[1], -ray[0], -ray[2]};
+  T m[2];
+  if (!UnifiedModel<T>{p[0]}.project(in_camera, m)) return false;
+  pixel[0] = p[1] * m[0] + p[2];
+  pixel[1] = p[1] * m[1] + p[3];
   return true;
 }
 

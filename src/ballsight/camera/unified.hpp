@@ -1,11 +1,13 @@
 #pragma once
-// The unified central catadioptric model (Mei & Rives 2007), as cv::omnidir implements it: a
-// point is projected onto the unit sphere, then through a pinhole shifted by `xi` along the axis,
-// then distorted (k1, k2, p1, p2) and mapped by the camera matrix. Camera frame as OpenCV's.
+// The unified central catadioptric camera (Mei & Rives 2007), as cv::omnidir implements it: the
+// unified model (unified_model.hpp: onto the unit sphere, then through a pinhole shifted by `xi`
+// along the axis), then the lens (k1, k2, p1, p2) and the camera matrix. Camera frame as
+// OpenCV's.
 
 #include <optional>
 
 #include "ballsight/camera/distortion.hpp"
+#include "ballsight/camera/unified_model.hpp"
 #include "ballsight/core/geometry.hpp"
 
 namespace ballsight {
@@ -26,6 +28,8 @@ class UnifiedCamera {
   explicit UnifiedCamera(const UnifiedParams& params);
 
   const UnifiedParams& params() const { return params_; }
+  int width() const { return params_.width; }
+  int height() const { return params_.height; }
 
   /// Point in the camera frame -> pixel; nullopt where the model has no unique projection.
   std::optional<Vec2> project(const Vec3& p_in_camera) const;
@@ -34,6 +38,7 @@ class UnifiedCamera {
 
  private:
   UnifiedParams params_;
+  UnifiedModel<double> model_;
   Distortion distortion_;
 };
 

@@ -36,12 +36,12 @@ void HiddenBallMemory::apply(WorldModel& world) {
     const auto hidden = [&](const Vec2& p) {
       return (p - robot).norm() < options_.near_robot_m && !near_any(p, world.balls, of_ball);
     };
-    for (const Remembered& r : remembered_) {
+    for (const Remembered& r : state_.remembered) {
       if (r.frame_sets < options_.max_frame_sets && hidden(r.ball.position_m)) {
         next.push_back({r.ball, r.frame_sets + 1});
       }
     }
-    for (const FusedBall& b : last_seen_) {
+    for (const FusedBall& b : state_.last_seen) {
       if (hidden(b.position_m) && (b.position_m - mouth).norm() > options_.taken_within_m &&
           !near_any(b.position_m, next, of_remembered)) {
         next.push_back({b, 1});
@@ -49,9 +49,9 @@ void HiddenBallMemory::apply(WorldModel& world) {
       }
     }
   }
-  last_seen_ = world.balls;
-  remembered_ = std::move(next);
-  for (const Remembered& r : remembered_) {
+  state_.last_seen = world.balls;
+  state_.remembered = std::move(next);
+  for (const Remembered& r : state_.remembered) {
     world.sites.push_back({r.ball.position_m, {static_cast<int>(world.balls.size())}, 0.0});
     world.balls.push_back(r.ball);
   }

@@ -29,6 +29,16 @@ struct HiddenBallOptions {
   void validate() const;
 };
 
+/// What the memory carries from one frame set to the next.
+struct HiddenBallState {
+  struct Remembered {
+    FusedBall ball;
+    int frame_sets = 0;  // missed in this many in a row
+  };
+  std::vector<FusedBall> last_seen;  // the previous frame set's balls
+  std::vector<Remembered> remembered;
+};
+
 class HiddenBallMemory {
  public:
   explicit HiddenBallMemory(const HiddenBallOptions& options = {});
@@ -37,15 +47,14 @@ class HiddenBallMemory {
   /// cameras: none sees it), and
   /// remembers those of the previous frame set it no longer has near its robot.
   void apply(WorldModel& world);
+  /// What it carries to the next frame set: the same world models after the same state give the
+  /// same result.
+  const HiddenBallState& state() const { return state_; }
 
  private:
-  struct Remembered {
-    FusedBall ball;
-    int frame_sets = 0;  // missed in this many in a row
-  };
+  using Remembered = HiddenBallState::Remembered;
   HiddenBallOptions options_;
-  std::vector<FusedBall> last_seen_;
-  std::vector<Remembered> remembered_;
+  HiddenBallState state_;
 };
 
 }  // namespace ballsight
