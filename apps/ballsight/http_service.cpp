@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/net/bearer_token.hpp"
 #include "ballsight/sim/omni_dataset.hpp"
 #include "option_parsing.hpp"
 

@@ -9,7 +9,7 @@
 #include "ballsight/dds/court_messages.hpp"
 #include "ballsight/dds/detection_messages.hpp"
 #include "ballsight/dds/topic_io.hpp"
-#include "ballsight/net/http_server.hpp"
+#include "ballsight/net/bearer_token.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/service/court_service.hpp"
 #include "ballsight/service/simulated_court.hpp"

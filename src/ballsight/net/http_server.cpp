@@ -1,11 +1,5 @@
 #include "ballsight/net/http_server.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <utility>  // before Asio's awaitable.hpp, which uses std::exchange (Boost 1.74)
 //
 #include <atomic>
@@ -29,8 +23,8 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/core/file_io.hpp"
 #include "ballsight/net/api_request.hpp"
+#include "ballsight/net/bearer_token.hpp"
 #include "ballsight/net/foxglove.hpp"
 #include "ballsight/net/web_files.hpp"
 
@@ -45,14 +39,6 @@ using tcp = asio::ip::tcp;
 using asio::awaitable;
 using Request = http::request<http::string_body>;
 using WebSocket = websocket::stream<beast::tcp_stream>;
-
-/// Equal strings, compared in time that does not depend on where they differ.
-bool same_secret(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  unsigned char diff = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) diff |= static_cast<unsigned char>(a[i] ^ b[i]);
-  return diff == 0;
-}
 
 http::response<http::string_body> http_answer(const ApiResponse& response, unsigned version,
                                               bool keep_alive) {
@@ -281,9 +267,9 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
     request.target = std::string(req.target());
     request.body = req.body();
     const auto auth = req.find(http::field::authorization);
-    request.authorized = auth != req.end() &&
-                         same_secret(std::string_view(auth->value().data(), auth->value().size()),
-                                     "Bearer " + options.token);
+    request.authorized =
+        auth != req.end() &&
+        shows_token(std::string_view(auth->value().data(), auth->value().size()), options.token);
     ApiResponse response;
     if (!local && !options.open_reads && !request.authorized) {
       response = api_error(401, "requests from other hosts need the token", "headers");
@@ -551,24 +537,6 @@ void HttpServer::stop() {
   asio::post(s.io, [&s] { s.close_all(); });
   s.work.reset();
   s.thread.join();
-}
-
-std::string read_or_create_token(const std::filesystem::path& file) {
-  namespace fs = std::filesystem;
-  if (fs::exists(file)) {
-    std::string text = read_file(file);
-    text = text.substr(0, text.find_first_of("\r\n"));
-    require(text.size() >= 16, file.string(), "the token must be at least 16 characters");
-    return text;
-  }
-  // Private from its first byte: created 0600, never there with wider rights.
-  const std::string token = random_hex(32) + "\n";
-  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  require(fd >= 0, file.string(), std::string("cannot create it: ") + std::strerror(errno));
-  const bool written =
-      ::write(fd, token.data(), token.size()) == static_cast<ssize_t>(token.size());
-  require(::close(fd) == 0 && written, file.string(), "cannot write the token");
-  return token.substr(0, 32);
 }
 
 }  // namespace ballsight

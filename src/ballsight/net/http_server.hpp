@@ -79,8 +79,4 @@ class HttpServer {
   std::unique_ptr<Impl> impl_;
 };
 
-/// The token in `file` (its first line), or a new random one written there with mode 0600 when
-/// the file does not exist. Throws InputError naming the file when it cannot be read or written.
-std::string read_or_create_token(const std::filesystem::path& file);
-
 }  // namespace ballsight
