@@ -1,6 +1,6 @@
 #include "ballsight/world/pixel_cluster_fit.hpp"
 
-#include <ceres/ceres.h>
+#include <ceres/tiny_solver.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -67,13 +67,19 @@ class CoverageModel {
 
   // The residuals: per fitted patch pixel, predicted - observed coverage; then per pair of balls
   // their overlap over overlap_sigma_m (0 when apart). `jacobian` (if given): their derivatives by
-  // the balls' positions, a row per residual and two columns per ball.
-  void residuals(const std::vector<Vec2>& balls, Eigen::VectorXd& r,
-                 Eigen::MatrixXd* jacobian) const {
-    r.resize(residual_count(balls.size()));
-    if (jacobian) jacobian->setZero(r.size(), 2 * static_cast<Eigen::Index>(balls.size()));
+  // the balls' positions, a row per residual and two columns per ball (column-major, as Eigen
+  // and Ceres' TinySolver keep it).
+  void residuals(const std::vector<Vec2>& balls, double* residuals_out,
+                 double* jacobian_out) const {
+    const Eigen::Index rows = residual_count(balls.size());
+    Eigen::Map<Eigen::VectorXd> r(residuals_out, rows);
+    Eigen::Map<Eigen::MatrixXd> jacobian_map(jacobian_out, jacobian_out ? rows : 0,
+                                             2 * static_cast<Eigen::Index>(balls.size()));
+    Eigen::Map<Eigen::MatrixXd>* jacobian = jacobian_out ? &jacobian_map : nullptr;
+    if (jacobian) jacobian->setZero();
     std::vector<Vec2> q(balls.size());
-    std::vector<double> share(balls.size());
+    std::vector<std::size_t> rim(balls.size());
+    std::vector<double> rim_share(balls.size());
     std::vector<Eigen::RowVector2d> slope(balls.size());  // d share / d ball position
     Eigen::Index row = 0;
     for (const View& v : views_) {
@@ -86,24 +92,25 @@ class CoverageModel {
           if (!v.hidden.empty() && v.hidden[k]) continue;
           const Vec2 pixel(p.x + x, p.y + y);
           double free = v.visible[k];
+          std::size_t rims = 0;  // the balls whose rim crosses the pixel: rim[0, rims)
           for (std::size_t i = 0; i < balls.size(); ++i) {
             const Vec2 d = pixel - q[i];
             const double d2 = d.squaredNorm();
+            if (d2 >= reach2) continue;  // share 0
             const double dist = std::sqrt(d2);
-            share[i] = d2 >= reach2 ? 0.0 : disc_share(dist, v.radius_px);
-            free *= 1.0 - share[i];
-            // On the rim only (inside the disc the share is 1, outside 0: flat).
-            const bool rim = share[i] > 0.0 && share[i] < 1.0 && dist > 1e-9;
-            slope[i] = rim ? Eigen::RowVector2d((d / dist).transpose() * v.pixel_per_plane)
-                           : Eigen::RowVector2d::Zero();
+            const double share = disc_share(dist, v.radius_px);
+            free *= 1.0 - share;
+            if (share >= 1.0 || dist <= 1e-9) continue;  // inside the disc: flat
+            rim[rims] = i;
+            rim_share[rims] = share;
+            slope[rims++] = (d / dist).transpose() * v.pixel_per_plane;
           }
           const double predicted = options_.coverage_gain * (1.0 - free);
           r(row) = std::min(predicted, 1.0) - p.coverage[k];
           if (jacobian && predicted < 1.0) {
-            for (std::size_t i = 0; i < balls.size(); ++i)  // the others' free share
-              if (share[i] > 0.0 && share[i] < 1.0)
-                jacobian->block<1, 2>(row, 2 * static_cast<Eigen::Index>(i)) =
-                    options_.coverage_gain * free / (1.0 - share[i]) * slope[i];
+            for (std::size_t a = 0; a < rims; ++a)  // d residual / d ball: the others' free share
+              jacobian->block<1, 2>(row, 2 * static_cast<Eigen::Index>(rim[a])) =
+                  options_.coverage_gain * free / (1.0 - rim_share[a]) * slope[a];
           }
           ++row;
         }
@@ -125,21 +132,22 @@ class CoverageModel {
 
   // The sum of squared residuals.
   double cost(const std::vector<Vec2>& balls) const {
-    Eigen::VectorXd r;
-    residuals(balls, r, nullptr);
+    Eigen::VectorXd r(residual_count(balls.size()));
+    residuals(balls, r.data(), nullptr);
     return r.squaredNorm();
   }
 
-  // Levenberg-Marquardt (Ceres) from `balls`, at most `iterations` steps; returns the final cost
-  // with `balls` moved to the optimum, or nullopt (`balls` as they were) when the solver found no
-  // usable solution. A solve that ran out of steps is usable: each step it took lowered the cost.
+  // Levenberg-Marquardt (Ceres' TinySolver) from `balls`, at most `iterations` steps; returns the
+  // final cost with `balls` moved to the optimum, or nullopt (`balls` as they were) when the
+  // solution is not finite. One that ran out of steps is used: each step it took lowered the cost.
   std::optional<double> fit(std::vector<Vec2>& balls, int iterations) const;
 
   // J^T J at `balls`: the information the pixels hold about the positions.
   Eigen::MatrixXd information(const std::vector<Vec2>& balls) const {
-    Eigen::VectorXd r;
-    Eigen::MatrixXd jacobian;
-    residuals(balls, r, &jacobian);
+    const Eigen::Index rows = residual_count(balls.size());
+    Eigen::VectorXd r(rows);
+    Eigen::MatrixXd jacobian(rows, 2 * static_cast<Eigen::Index>(balls.size()));
+    residuals(balls, r.data(), jacobian.data());
     return jacobian.transpose() * jacobian;
   }
 
@@ -157,53 +165,60 @@ class CoverageModel {
   const PixelFitOptions& options_;
 };
 
-// The coverage residuals as Ceres sees them: one parameter block of two per ball.
-class CoverageCost final : public ceres::CostFunction {
- public:
-  CoverageCost(const CoverageModel& model, std::size_t balls) : model_(model), balls_(balls) {
-    set_num_residuals(static_cast<int>(model.residual_count(balls)));
-    mutable_parameter_block_sizes()->assign(balls, 2);
-  }
+// The coverage residuals as Ceres' TinySolver sees them: the balls' positions as one vector.
+// TinySolver, not ceres::Solve: a frame set fits a few dozen hypotheses of a few balls each, and
+// the general solver's set-up per solve cost more than the fits themselves (10 ms a frame set
+// against 3.8 ms).
+struct CoverageResiduals {
+  using Scalar = double;
+  enum { NUM_RESIDUALS = Eigen::Dynamic, NUM_PARAMETERS = Eigen::Dynamic };
 
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override {
-    std::vector<Vec2> balls(balls_);
-    for (std::size_t i = 0; i < balls_; ++i) balls[i] = Vec2(parameters[i][0], parameters[i][1]);
-    Eigen::VectorXd r;
-    Eigen::MatrixXd jacobian;
-    model_.residuals(balls, r, jacobians ? &jacobian : nullptr);
-    Eigen::Map<Eigen::VectorXd>(residuals, r.size()) = r;
-    if (!jacobians) return true;
-    using Block = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
-    for (std::size_t i = 0; i < balls_; ++i)
-      if (jacobians[i])
-        Eigen::Map<Block>(jacobians[i], r.size(), 2) =
-            jacobian.middleCols<2>(2 * static_cast<Eigen::Index>(i));
+  int NumResiduals() const { return static_cast<int>(model.residual_count(balls)); }
+  int NumParameters() const { return static_cast<int>(2 * balls); }
+  // TinySolver evaluates a trial step without the Jacobian, then, when it takes the step, the
+  // same positions again with it: the Jacobian is made with the residuals and kept for that.
+  bool operator()(const double* x, double* residuals, double* jacobian) const {
+    const Eigen::Map<const Eigen::VectorXd> at(x, NumParameters());
+    if (kept_at.size() != at.size() || kept_at != at) {
+      std::vector<Vec2> positions(balls);
+      for (std::size_t i = 0; i < balls; ++i) positions[i] = Vec2(x[2 * i], x[2 * i + 1]);
+      kept_residuals.resize(NumResiduals());
+      kept_jacobian.resize(NumResiduals(), NumParameters());
+      model.residuals(positions, kept_residuals.data(), kept_jacobian.data());
+      kept_at = at;
+    }
+    Eigen::Map<Eigen::VectorXd>(residuals, kept_residuals.size()) = kept_residuals;
+    if (jacobian)
+      Eigen::Map<Eigen::MatrixXd>(jacobian, kept_jacobian.rows(), kept_jacobian.cols()) =
+          kept_jacobian;
     return true;
   }
 
- private:
-  const CoverageModel& model_;
-  std::size_t balls_;
+  const CoverageModel& model;
+  std::size_t balls;
+  mutable Eigen::VectorXd kept_at, kept_residuals;
+  mutable Eigen::MatrixXd kept_jacobian;
 };
 
 std::optional<double> CoverageModel::fit(std::vector<Vec2>& balls, int iterations) const {
-  std::vector<Vec2> moved = balls;  // Vec2 is two contiguous doubles: Ceres' blocks
-  std::vector<double*> blocks;
-  for (Vec2& b : moved) blocks.push_back(b.data());
-  ceres::Problem problem;
-  problem.AddResidualBlock(new CoverageCost(*this, moved.size()), nullptr, blocks);
-  // Stops after `iterations` steps, or when a step lowers the cost by less than a millionth or
-  // moves the balls by less than a millionth of their distance from the centre (~10 um).
-  ceres::Solver::Options solver;
-  solver.max_num_iterations = iterations;
-  solver.function_tolerance = solver.parameter_tolerance = 1e-6;
-  solver.linear_solver_type = ceres::DENSE_QR;  // a few balls, a few hundred pixels: dense
-  solver.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver, &problem, &summary);
-  if (!summary.IsSolutionUsable()) return std::nullopt;
-  balls = std::move(moved);
+  const CoverageResiduals function{*this, balls.size(), {}, {}, {}};
+  Eigen::VectorXd x(function.NumParameters());
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    x.segment<2>(2 * static_cast<Eigen::Index>(i)) = balls[i];
+  ceres::TinySolver<CoverageResiduals> solver;
+  // At most `iterations` steps; stops early when a step lowers the sum of squares by less than a
+  // millionth of where it started, or moves the balls by less than a millionth of their distance
+  // from the centre (~10 um). The start's residuals are kept for the solver's first step.
+  Eigen::VectorXd start(function.NumResiduals());
+  function(x.data(), start.data(), nullptr);
+  solver.options.max_num_iterations = iterations + 1;  // its count includes the start
+  solver.options.function_tolerance = 1e-6 * start.squaredNorm() + 1e-9;
+  solver.options.parameter_tolerance = 1e-6;
+  const auto& summary = solver.Solve(function, &x);
+  // TinySolver reports no failure of its own: a solution that is not finite is none.
+  if (!std::isfinite(summary.final_cost) || !x.allFinite()) return std::nullopt;
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    balls[i] = x.segment<2>(2 * static_cast<Eigen::Index>(i));
   return 2.0 * summary.final_cost;  // Ceres' cost is half the sum of squares
 }
 
