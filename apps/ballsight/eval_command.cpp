@@ -8,6 +8,8 @@
 #include "ballsight/eval/mirror_curves.hpp"
 #include "ballsight/eval/omni_experiment.hpp"
 #include "ballsight/eval/omni_real.hpp"
+#include "ballsight/eval/plot_inputs.hpp"
+#include "ballsight/viz/estimate_plot.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -114,7 +116,11 @@ void add_eval_commands(CLI::App& eval) {
   omni->callback([args] {
     args->options.mirror = parse_mirror_kind(args->mirror, "--mirror");
     const OmniExperimentResult result = run_omni_experiment(args->options);
-    if (args->plot) write_png_atomic(*args->plot, plot_omni_experiment(result));
+    if (args->plot) {
+      write_png_atomic(*args->plot,
+                       plot_ball_estimates(result.options.ball_cm, result.options.distances_cm,
+                                           estimate_layers(result)));
+    }
     std::cout << (args->json ? omni_experiment_json(result).dump(2) + "\n"
                              : omni_experiment_table(result));
   });

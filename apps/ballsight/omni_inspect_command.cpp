@@ -6,7 +6,8 @@
 
 #include "ballsight/calib/lut_inspect.hpp"
 #include "ballsight/camera/image_file.hpp"
-#include "ballsight/eval/lut_plot.hpp"
+#include "ballsight/eval/plot_inputs.hpp"
+#include "ballsight/viz/lut_plot.hpp"
 #include "commands.hpp"
 
 namespace ballsight::app {
@@ -26,7 +27,9 @@ void run_inspect(const InspectArgs& args) {
   options.drop_tolerance_cm = args.drop_tolerance_cm;
   const InspectedLut lut = read_lut_for_inspection(args.file, lut_format_from_string(args.format));
   const LutInspection inspection = inspect_lut(lut, options);
-  if (!args.plot.empty()) write_png_atomic(args.plot, plot_lut_inspection(lut, inspection));
+  if (!args.plot.empty()) {
+    write_png_atomic(args.plot, plot_lut_figure(lut_figure_input(lut, inspection)));
+  }
   if (args.json) {
     std::cout << to_json(inspection).dump(2) << "\n";
   } else {

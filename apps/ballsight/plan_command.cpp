@@ -10,10 +10,12 @@
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
-#include "ballsight/eval/route_plot.hpp"
+#include "ballsight/eval/plot_inputs.hpp"
 #include "ballsight/pipeline/planning_input.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 #include "ballsight/plan/planner.hpp"
+#include "ballsight/sim/tennis_court.hpp"
+#include "ballsight/viz/route_plot.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
 
@@ -108,9 +110,11 @@ void run_plan(const PlanArgs& args) {
     char label[96];
     std::snprintf(label, sizeof label, "%s: %.1f m, %.1f s", route.planner.c_str(), route.length_m,
                   route.time_s);
+    // The standard court's floor under the site's fence: the site file gives no line layout.
     write_png_atomic(
         args.plot,
-        draw_route_map(problem, {{label, {200, 60, 20}, route}},
+        draw_route_map(problem, court_floor(sim::TennisCourtSpec{}),
+                       {{label, {200, 60, 20}, route}},
                        "ballsight plan: " + std::to_string(route.order.size()) + " balls"));
   }
   if (args.json) {

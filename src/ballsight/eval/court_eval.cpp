@@ -14,9 +14,10 @@
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/court_eval_scenes.hpp"
-#include "ballsight/eval/court_plots.hpp"
+#include "ballsight/eval/plot_inputs.hpp"
 #include "ballsight/eval/wall_clock.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
+#include "ballsight/viz/court_plots.hpp"
 
 namespace ballsight {
 
@@ -115,9 +116,10 @@ void write_pictures(const CourtEvalOptions& options, const sim::CourtRig& rig, i
   for (size_t m = 0; m < results.size(); ++m)
     layers.push_back({m == 0 ? "seed pipeline" : "ballsight (circles: collection sites)",
                       m == 0 ? kSeedColour : kBallsightColour, results[m].world,
-                      m == 0 ? std::vector<BallMistake>{} : ballsight_mistakes});
+                      m == 0 ? std::vector<MistakeMark>{} : mistake_marks(ballsight_mistakes)});
   const std::string name = scene_name(scene) + "_field.png";
-  write_png_atomic(dir / name, draw_field_map(rig.court, centers, truth_balls(truth), robot_truth,
+  write_png_atomic(dir / name, draw_field_map(court_floor(rig.court), centers,
+                                              true_ball_marks(truth_balls(truth)), robot_truth,
                                               layers, scene_name(scene) + ": truth vs estimates"));
   written.push_back(name);
 }

@@ -16,13 +16,16 @@
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/court_eval.hpp"
 #include "ballsight/eval/loop_demo.hpp"
-#include "ballsight/eval/loop_plot.hpp"
 #include "ballsight/eval/plan_eval.hpp"
+#include "ballsight/eval/plot_inputs.hpp"
 #include "ballsight/pipeline/marker_frame_samples.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
 #include "ballsight/sim/court_dataset.hpp"
 #include "ballsight/sim/omni_dataset.hpp"
 #include "ballsight/sim/omni_scenario.hpp"
+#include "ballsight/sim/tennis_court.hpp"
+#include "ballsight/viz/loop_plot.hpp"
+#include "ballsight/viz/report.hpp"
 
 namespace ballsight {
 
@@ -56,14 +59,8 @@ nlohmann::json read_json(const fs::path& path) {
   }
 }
 
-// One report row per image: the picture and what the truth says it shows.
-struct Figure {
-  std::string image;  // relative to the report
-  std::string caption;
-};
-
-std::vector<Figure> omni_figures(const fs::path& dir, const std::vector<std::string>& files) {
-  std::vector<Figure> figures;
+std::vector<ReportFigure> omni_figures(const fs::path& dir, const std::vector<std::string>& files) {
+  std::vector<ReportFigure> figures;
   for (const std::string& name : files) {
     if (!is_png(name)) continue;
     const nlohmann::json truth = read_json(dir / (name.substr(0, name.size() - 4) + ".json"));
@@ -85,7 +82,7 @@ std::vector<Figure> omni_figures(const fs::path& dir, const std::vector<std::str
 // The omni run time on the data set: calibrated without clicking from frame 0's markers, then the
 // ball of every other frame placed by ballsight's pipeline and by the paper's (polynomial, as its
 // robots), against the truth. Appends to the frames' captions; returns the summary.
-std::string omni_localisation(const fs::path& dir, std::vector<Figure>& figures) {
+std::string omni_localisation(const fs::path& dir, std::vector<ReportFigure>& figures) {
   const auto start = Clock::now();
   const sim::OmniPalette palette;
   const Vec2 configured_center(319.5, 239.5);
@@ -107,7 +104,7 @@ std::string omni_localisation(const fs::path& dir, std::vector<Figure>& figures)
                                   return std::isfinite(d) ? std::optional(d) : std::nullopt;
                                 });
   std::vector<double> ballsight_errors, paper_errors;
-  for (Figure& figure : figures) {
+  for (ReportFigure& figure : figures) {
     const fs::path png = dir / fs::path(figure.image).filename();
     const nlohmann::json truth = read_json(fs::path(png).replace_extension(".json"));
     if (!truth["ball"].is_object()) continue;
@@ -139,8 +136,9 @@ std::string omni_localisation(const fs::path& dir, std::vector<Figure>& figures)
          std::to_string(paper_errors.size()) + ".";
 }
 
-std::vector<Figure> court_figures(const fs::path& dir, const std::vector<std::string>& files) {
-  std::vector<Figure> figures;
+std::vector<ReportFigure> court_figures(const fs::path& dir,
+                                        const std::vector<std::string>& files) {
+  std::vector<ReportFigure> figures;
   for (const std::string& name : files) {
     if (!is_png(name)) continue;
     // court_NNNN_camK.png -> court_NNNN.json, camera K
@@ -171,32 +169,11 @@ std::string scores_only(const std::string& text) {
   return kept;
 }
 
-std::string html_section(const std::string& title, const std::string& intro,
-                         const std::vector<Figure>& figures) {
-  std::ostringstream html;
-  html << "<h2>" << title << "</h2>\n<p>" << intro << "</p>\n<div class=\"grid\">\n";
-  for (const Figure& f : figures) {
-    html << "<figure><a href=\"" << f.image << "\"><img src=\"" << f.image << "\" alt=\"" << f.image
-         << "\"></a><figcaption>" << f.image << ": " << f.caption << "</figcaption></figure>\n";
-  }
-  html << "</div>\n";
-  return html.str();
-}
-
-std::string markdown_section(const std::string& title, const std::string& intro,
-                             const std::vector<Figure>& figures) {
-  std::ostringstream md;
-  md << "## " << title << "\n\n" << intro << "\n\n";
-  for (const Figure& f : figures) md << "- `" << f.image << "`: " << f.caption << "\n";
-  md << "\n";
-  return md.str();
-}
-
 }  // namespace
 
 /// The closed loop's section: each run's map and latency chart, the table, what happened when.
 std::string loop_section(const std::vector<LoopDemoRun>& runs, const fs::path& out_dir,
-                         std::vector<Figure>& figures) {
+                         std::vector<ReportFigure>& figures) {
   std::string events;
   for (const LoopDemoRun& r : runs) {
     const std::string map = "loop/" + r.name + "/map.png";
@@ -205,7 +182,9 @@ std::string loop_section(const std::vector<LoopDemoRun>& runs, const fs::path& o
         std::to_string(r.score.collected) + " of " + std::to_string(r.score.balls) + " balls" +
         (r.score.all ? " in " + fixed(r.score.time_s, 1) + " s" : " (not all)") + ", " +
         fixed(r.score.distance_m, 1) + " m driven";
-    write_png_atomic(out_dir / map, draw_loop_map(r.truth, r.name + ": " + outcome));
+    write_png_atomic(out_dir / map,
+                     draw_loop_map(court_floor(sim::TennisCourtSpec{}), loop_map_input(r.truth),
+                                   r.name + ": " + outcome));
     write_png_atomic(out_dir / latency,
                      draw_latency_chart(r.seqs, r.latency_ms,
                                         r.name + ": frames captured -> update at the robot"));
@@ -243,9 +222,9 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
   const std::vector<std::string> court_files = sim::write_court_dataset(court, out_dir / "court");
   const double court_seconds = seconds_since(court_start);
 
-  std::vector<Figure> omni_figs = omni_figures(out_dir / "omni", omni_files);
+  std::vector<ReportFigure> omni_figs = omni_figures(out_dir / "omni", omni_files);
   const std::string omni_results = omni_localisation(out_dir / "omni", omni_figs);
-  const std::vector<Figure> court_figs = court_figures(out_dir / "court", court_files);
+  const std::vector<ReportFigure> court_figs = court_figures(out_dir / "court", court_files);
   const std::string omni_intro =
       "On-board omnidirectional camera (misaligned as the omnivision paper's robot: tilted axis, "
       "offset mirror centre) on an 8 x 12 m MSL field; " +
@@ -263,7 +242,7 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
   court_eval.plot_dir = out_dir / "court-eval";
   court_eval.plot_scenes = options.court_scenes;
   const CourtEvalReport court_report = run_court_eval(court_eval);
-  std::vector<Figure> eval_figs;
+  std::vector<ReportFigure> eval_figs;
   for (const std::string& picture : court_report.pictures) {
     eval_figs.push_back({"court-eval/" + fs::path(picture).filename().string(),
                          picture.find("field") != std::string::npos
@@ -278,7 +257,7 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
       fixed(seconds_since(eval_start), 1) + " s (docs/court-eval.md):<pre>" +
       scores_only(court_eval_text(court_report)) + "</pre>";
   ensure_directory(out_dir / "plan");
-  const std::vector<Figure> plan_figs{
+  const std::vector<ReportFigure> plan_figs{
       {"plan/route-practice-50.png",
        "the report's rule (red), nearest neighbour (blue) and ballsight (green) on the court"}};
   const std::string plan_intro =
@@ -295,7 +274,7 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
   loop.faults = options.loop_faults;
   const auto loop_start = Clock::now();
   const std::vector<LoopDemoRun> runs = run_loop(loop, out_dir, progress);
-  std::vector<Figure> loop_figs;
+  std::vector<ReportFigure> loop_figs;
   const std::string loop_results = loop_section(runs, out_dir, loop_figs);
   const std::string loop_intro =
       "The closed loop: the navigation service on the simulated court (<code>ballsight serve "
@@ -311,30 +290,18 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
       fixed(seconds_since(loop_start), 1) + " s wall (docs/robot-link.md):" + loop_results;
   const std::string title = "ballsight demo (seed " + std::to_string(options.seed) + ")";
 
-  std::ostringstream html;
-  html << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << title
-       << "</title>\n<style>body{font-family:sans-serif;max-width:1400px;margin:2em auto;}"
-          ".grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(320px,1fr));gap:1em}"
-          "img{width:100%;border:1px solid #ccc}figcaption{font-size:0.85em}</style></head>"
-          "<body>\n<h1>"
-       << title << "</h1>\n"
-       << html_section("Omnidirectional rig", omni_intro, omni_figs)
-       << html_section("Court rig", court_intro, court_figs)
-       << html_section("Court: calibration, detection and world model", eval_intro, eval_figs)
-       << html_section("Court: collection route", plan_intro, plan_figs)
-       << html_section("Court: the closed loop", loop_intro, loop_figs) << "</body></html>\n";
-  const std::string markdown =
-      "# " + title + "\n\n" + markdown_section("Omnidirectional rig", omni_intro, omni_figs) +
-      markdown_section("Court rig", court_intro, court_figs) +
-      markdown_section("Court: calibration, detection and world model", eval_intro, eval_figs) +
-      markdown_section("Court: collection route", plan_intro, plan_figs) +
-      markdown_section("Court: the closed loop", loop_intro, loop_figs);
+  const std::vector<ReportSection> sections{
+      {"Omnidirectional rig", omni_intro, omni_figs},
+      {"Court rig", court_intro, court_figs},
+      {"Court: calibration, detection and world model", eval_intro, eval_figs},
+      {"Court: collection route", plan_intro, plan_figs},
+      {"Court: the closed loop", loop_intro, loop_figs}};
 
   DemoResult result{out_dir / "report.html", out_dir / "report.md",
                     static_cast<int>(omni_figs.size() + court_figs.size() + eval_figs.size() +
                                      plan_figs.size() + loop_figs.size())};
-  write_file_atomic(result.report_html, html.str());
-  write_file_atomic(result.report_markdown, markdown);
+  write_file_atomic(result.report_html, html_report(title, sections));
+  write_file_atomic(result.report_markdown, markdown_report(title, sections));
   return result;
 }
 

@@ -11,7 +11,7 @@
 #include "ballsight/camera/omni_rig.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/text_format.hpp"
-#include "ballsight/eval/chart.hpp"
+#include "ballsight/viz/chart.hpp"
 
 namespace ballsight {
 

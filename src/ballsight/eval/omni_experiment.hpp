@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,7 +70,5 @@ OmniExperimentResult run_omni_experiment(const OmniExperimentOptions& options);
 nlohmann::json omni_experiment_json(const OmniExperimentResult& result);
 /// An aligned text table, one row per method and distance.
 std::string omni_experiment_table(const OmniExperimentResult& result);
-/// Top-down scatter of every estimate around the true ball, one colour per method.
-cv::Mat plot_omni_experiment(const OmniExperimentResult& result);
 
 }  // namespace ballsight

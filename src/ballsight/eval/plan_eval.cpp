@@ -7,10 +7,12 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
-#include "ballsight/eval/route_plot.hpp"
+#include "ballsight/eval/plot_inputs.hpp"
 #include "ballsight/eval/wall_clock.hpp"
 #include "ballsight/plan/exact_path.hpp"
 #include "ballsight/plan/planner.hpp"
+#include "ballsight/sim/tennis_court.hpp"
+#include "ballsight/viz/route_plot.hpp"
 #include "ballsight/world/collection_sites.hpp"
 
 namespace ballsight::eval {
@@ -86,8 +88,9 @@ std::vector<Outcome> evaluate(const PlanningProblem& problem, const PlanEvalOpti
     outcomes.push_back(o);
   }
   if (!plot_name.empty() && options.plot_dir) {
-    write_png_atomic(*options.plot_dir / (plot_name + ".png"),
-                     draw_route_map(problem, layers, plot_name));
+    write_png_atomic(
+        *options.plot_dir / (plot_name + ".png"),
+        draw_route_map(problem, court_floor(sim::TennisCourtSpec{}), layers, plot_name));
   }
   // The ways of letting the 70 cm collector take several balls at once, measured: ballsight's
   // sweeping (above), every ball's centre visited, or the world model's collection sites
@@ -135,7 +138,8 @@ std::string plan_comparison(BallLayout layout, int n, std::uint64_t seed,
   const std::vector<RouteLayer> layers = compared_routes(problem, seed);
   const std::string title =
       std::to_string(n) + " balls, layout " + std::string(layout_name(layout));
-  write_png_atomic(png, draw_route_map(problem, layers, title));
+  write_png_atomic(png,
+                   draw_route_map(problem, court_floor(sim::TennisCourtSpec{}), layers, title));
   std::string out;
   for (const RouteLayer& layer : layers) {
     out += layer.label + " (planned in " + fixed(layer.route.plan_ms, 2) + " ms)\n";

@@ -1,11 +1,9 @@
-#include "ballsight/eval/court_plots.hpp"
+#include "ballsight/viz/court_plots.hpp"
 
-#include <cctype>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "ballsight/eval/chart.hpp"
-#include "ballsight/eval/court_map.hpp"
+#include "ballsight/viz/chart.hpp"
 
 namespace ballsight {
 
@@ -54,16 +52,11 @@ cv::Mat draw_detection_overlay(const cv::Mat& frame, const std::vector<Vec2>& tr
 
 namespace {
 
-// "M" (missed), "D" (duplicate), "F" (false positive).
-std::string mistake_letter(BallMistake::Kind kind) {
-  return std::string(1, static_cast<char>(std::toupper(mistake_kind_name(kind).front())));
-}
-
 // Draws the court area, cameras, truth and layers into `image`.
-void draw_map(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& court,
-              const std::vector<Vec3>& cameras, const std::vector<TruthBall>& truth,
+void draw_map(cv::Mat& image, const MapView& px, const CourtFloor& floor,
+              const std::vector<Vec3>& cameras, const std::vector<TrueBallMark>& truth,
               const Pose2D& robot_truth, const std::vector<WorldLayer>& layers) {
-  draw_court_floor(image, px, court);
+  draw_court_floor(image, px, floor);
   for (const Vec3& c : cameras)
     cv::drawMarker(image, px(c.head<2>()), cv::Scalar(40, 40, 40), cv::MARKER_TRIANGLE_UP, 14, 2);
   const double scale = px.pixels_per_m / 40.0;  // marks grow with the zoom
@@ -78,7 +71,7 @@ void draw_map(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& cou
        {Vec2(0.3, 0.225), Vec2(-0.3, 0.225), Vec2(-0.3, -0.225), Vec2(0.3, -0.225)})
     body.push_back(px(robot_truth.field_from_robot() * corner));
   cv::polylines(image, body, true, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
-  for (const TruthBall& t : truth)
+  for (const TrueBallMark& t : truth)
     cv::circle(image, px(t.position_m),
                static_cast<int>(std::lround(std::max(4.0, 0.0335 * px.pixels_per_m))),
                t.seen ? cv::Scalar(20, 20, 20) : cv::Scalar(150, 150, 150), 1, cv::LINE_AA);
@@ -95,11 +88,11 @@ void draw_map(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& cou
       cv::drawMarker(image, px(ball.position_m), layer.colour, marker,
                      static_cast<int>(std::lround(7 * std::sqrt(scale))), 1, cv::LINE_AA);
     if (layer.world.robot) draw_robot(layer.world.robot->pose, layer.colour, 1);
-    for (const BallMistake& mistake : layer.mistakes) {
+    for (const MistakeMark& mistake : layer.mistakes) {
       const cv::Point2d at = px(mistake.position_m);
       cv::circle(image, at, static_cast<int>(std::lround(12 * std::sqrt(scale))), kMistakeColour, 2,
                  cv::LINE_AA);
-      draw_text(image, mistake_letter(mistake.kind),
+      draw_text(image, std::string(1, mistake.letter),
                 to_point(Vec2(at.x + 14 * std::sqrt(scale), at.y - 6)), 0.5, kMistakeColour);
     }
   }
@@ -107,13 +100,12 @@ void draw_map(cv::Mat& image, const MapView& px, const sim::TennisCourtSpec& cou
 
 }  // namespace
 
-cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3>& cameras,
-                       const std::vector<TruthBall>& truth, const Pose2D& robot_truth,
+cv::Mat draw_field_map(const CourtFloor& floor, const std::vector<Vec3>& cameras,
+                       const std::vector<TrueBallMark>& truth, const Pose2D& robot_truth,
                        const std::vector<WorldLayer>& layers, const std::string& title,
                        double pixels_per_m) {
   const double margin_m = 1.5;
-  const Vec2 half(0.5 * court.surround_length_m + margin_m,
-                  0.5 * court.surround_width_m + margin_m);
+  const Vec2 half = 0.5 * (floor.surround.max_m - floor.surround.min_m) + Vec2(margin_m, margin_m);
   std::vector<LegendEntry> legend{
       {"true balls and robot (grey: seen by no camera)", cv::Scalar(20, 20, 20)}};
   for (const WorldLayer& layer : layers) {
@@ -129,7 +121,7 @@ cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3
   const double zoom = 5.0 * pixels_per_m;  // the inset below the map
   const int height = top + map_height + static_cast<int>(2.0 * zoom) + 20;
   cv::Mat image(height, width, CV_8UC3, cv::Scalar(235, 235, 235));
-  draw_map(image, {Vec2(-half.x(), half.y()), pixels_per_m, {0.0, static_cast<double>(top)}}, court,
+  draw_map(image, {Vec2(-half.x(), half.y()), pixels_per_m, {0.0, static_cast<double>(top)}}, floor,
            cameras, truth, robot_truth, layers);
 
   // Inset below the map: 3 x 2 m around the true robot, five times larger, where it hides balls.
@@ -137,7 +129,7 @@ cv::Mat draw_field_map(const sim::TennisCourtSpec& court, const std::vector<Vec3
                        static_cast<int>(3.0 * zoom), static_cast<int>(2.0 * zoom));
   cv::Mat area = image(inset);
   area.setTo(cv::Scalar(235, 235, 235));
-  draw_map(area, {robot_truth.position + Vec2(-1.5, 1.0), zoom, {0.0, 0.0}}, court, cameras, truth,
+  draw_map(area, {robot_truth.position + Vec2(-1.5, 1.0), zoom, {0.0, 0.0}}, floor, cameras, truth,
            robot_truth, layers);
   cv::rectangle(image, inset, cv::Scalar(30, 30, 30), 2);
   draw_text(image, "3 x 2 m around the robot", {inset.x + 6, inset.br().y - 8}, 0.5,

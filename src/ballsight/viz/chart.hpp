@@ -1,5 +1,5 @@
 #pragma once
-// Chart primitives for eval plots, drawn with OpenCV: axes with grid and tick labels, line
+// Chart primitives for the plots, drawn with OpenCV: axes with grid and tick labels, line
 // series, a legend, and colour-mapped images with a scale bar.
 
 #include <opencv2/core.hpp>

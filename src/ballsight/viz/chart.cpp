@@ -1,4 +1,4 @@
-#include "ballsight/eval/chart.hpp"
+#include "ballsight/viz/chart.hpp"
 
 #include <algorithm>
 #include <cmath>

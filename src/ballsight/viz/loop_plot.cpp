@@ -1,13 +1,11 @@
-#include "ballsight/eval/loop_plot.hpp"
+#include "ballsight/viz/loop_plot.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <opencv2/imgproc.hpp>
 
 #include "ballsight/core/text_format.hpp"
-#include "ballsight/eval/chart.hpp"
-#include "ballsight/eval/court_map.hpp"
+#include "ballsight/viz/chart.hpp"
 
 namespace ballsight {
 namespace {
@@ -25,7 +23,8 @@ cv::Scalar colormap_colour(double share) {
 
 }  // namespace
 
-cv::Mat draw_loop_map(const LoopTruth& truth, const std::string& title, int route_snapshots) {
+cv::Mat draw_loop_map(const CourtFloor& floor, const LoopMapInput& run, const std::string& title,
+                      int route_snapshots) {
   const Vec2 lo(-19.0, -10.0), hi(19.0, 10.0);  // the 36 x 18 m fence and a metre round it
   const cv::Scalar route_colours[] = {
       {200, 120, 40}, {40, 140, 230}, {160, 60, 200}, {60, 170, 60}};
@@ -37,50 +36,40 @@ cv::Mat draw_loop_map(const LoopTruth& truth, const std::string& title, int rout
   const int height = top + static_cast<int>(std::lround((hi.y() - lo.y()) * kPixelsPerM));
   cv::Mat image(height, width, CV_8UC3, cv::Scalar(235, 235, 235));
   const MapView px{Vec2(lo.x(), hi.y()), kPixelsPerM, {0.0, static_cast<double>(top)}};
-  draw_court_floor(image, px, sim::TennisCourtSpec{});
+  draw_court_floor(image, px, floor);
   cv::rectangle(image, px({-18, -9}), px({18, 9}), cv::Scalar(60, 60, 60), 2);
 
   // The true path, and over it the published route at evenly spaced moments of the run.
-  std::vector<cv::Point> driven{px(truth.robot_start.position)};
-  for (const TruthTick& t : truth.ticks) driven.emplace_back(px(t.world.robot.position));
+  std::vector<cv::Point> driven{px(run.robot_start.position)};
+  for (const Vec2& p : run.path_m) driven.emplace_back(px(p));
   cv::polylines(image, driven, false, cv::Scalar(20, 20, 20), 2, cv::LINE_AA);
 
   std::vector<LegendEntry> legend{{"true path", cv::Scalar(20, 20, 20)}};
-  std::vector<const TruthTick*> with_route;
-  for (const TruthTick& t : truth.ticks) {
-    if (t.published.waypoints_m.size() > 1) with_route.push_back(&t);
-  }
-  for (int k = 0; k < route_snapshots && !with_route.empty(); ++k) {
-    const TruthTick& t = *with_route[with_route.size() * static_cast<std::size_t>(k) /
-                                     static_cast<std::size_t>(route_snapshots)];
+  for (int k = 0; k < route_snapshots && !run.routes.empty(); ++k) {
+    const LoopMapInput::PublishedRoute& route =
+        run.routes[run.routes.size() * static_cast<std::size_t>(k) /
+                   static_cast<std::size_t>(route_snapshots)];
     std::vector<cv::Point> path;
-    for (const Vec2& w : t.published.waypoints_m) path.emplace_back(px(w));
+    for (const Vec2& w : route.waypoints_m) path.emplace_back(px(w));
     cv::polylines(image, path, false, route_colours[k], 2, cv::LINE_AA);
-    legend.push_back({"route published at " + fixed(t.world.time_s, 1) + " s", route_colours[k]});
+    legend.push_back({"route published at " + fixed(route.time_s, 1) + " s", route_colours[k]});
   }
   // Balls by the time they were collected.
-  std::map<int, double> collected_at;
-  for (const TruthTick& t : truth.ticks) {
-    for (const int id : t.world.collected) collected_at.emplace(id, t.world.time_s);
-  }
-  const double end_s = truth.ticks.empty() ? 1.0 : std::max(1.0, truth.ticks.back().world.time_s);
+  const double end_s = std::max(1.0, run.duration_s);
   const int r = 5;
-  for (const SceneBall& b : truth.balls) {
+  for (const LoopMapInput::Ball& b : run.balls) {
     const cv::Point2d at = px(b.position_m);
-    const auto it = collected_at.find(b.id);
-    if (it == collected_at.end()) {
+    if (!b.collected_s) {
       cv::circle(image, at, r, cv::Scalar(160, 160, 160), cv::FILLED, cv::LINE_AA);
       cv::drawMarker(image, at, cv::Scalar(0, 0, 220), cv::MARKER_TILTED_CROSS, 12, 2);
     } else {
-      cv::circle(image, at, r, colormap_colour(it->second / end_s), cv::FILLED, cv::LINE_AA);
+      cv::circle(image, at, r, colormap_colour(*b.collected_s / end_s), cv::FILLED, cv::LINE_AA);
       cv::circle(image, at, r, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
     }
   }
-  const Vec2 forward(std::cos(truth.robot_start.heading_rad),
-                     std::sin(truth.robot_start.heading_rad));
-  cv::arrowedLine(image, px(truth.robot_start.position),
-                  px(truth.robot_start.position + 1.2 * forward), cv::Scalar(20, 20, 20), 3,
-                  cv::LINE_AA, 0, 0.3);
+  const Vec2 forward(std::cos(run.robot_start.heading_rad), std::sin(run.robot_start.heading_rad));
+  cv::arrowedLine(image, px(run.robot_start.position), px(run.robot_start.position + 1.2 * forward),
+                  cv::Scalar(20, 20, 20), 3, cv::LINE_AA, 0, 0.3);
   draw_color_bar(image, {width - bar + 20, top + 20, 20, height - top - 80}, kTimeColormap, 0.0,
                  end_s, "collected (s)");
   cv::rectangle(image, {0, 0, image.cols, top}, cv::Scalar::all(255), cv::FILLED);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ballsight/plan/planning_problem.hpp"
+#include "ballsight/viz/court_map.hpp"
 
 namespace ballsight {
 
@@ -17,8 +18,10 @@ struct RouteLayer {
   Route route;
 };
 
-/// The map; without a court the view fits the points (a plain point problem).
-cv::Mat draw_route_map(const PlanningProblem& problem, const std::vector<RouteLayer>& layers,
-                       const std::string& title, double pixels_per_m = 32.0);
+/// The map, on `floor` when the problem has a court (its net drawn where the drivable court has
+/// one); without a court the view fits the points (a plain point problem).
+cv::Mat draw_route_map(const PlanningProblem& problem, const CourtFloor& floor,
+                       const std::vector<RouteLayer>& layers, const std::string& title,
+                       double pixels_per_m = 32.0);
 
 }  // namespace ballsight

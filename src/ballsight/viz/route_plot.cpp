@@ -1,11 +1,10 @@
-#include "ballsight/eval/route_plot.hpp"
+#include "ballsight/viz/route_plot.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "ballsight/eval/chart.hpp"
-#include "ballsight/eval/court_map.hpp"
+#include "ballsight/viz/chart.hpp"
 
 namespace ballsight {
 namespace {
@@ -34,8 +33,9 @@ std::pair<Vec2, Vec2> view_bounds(const PlanningProblem& problem,
 
 }  // namespace
 
-cv::Mat draw_route_map(const PlanningProblem& problem, const std::vector<RouteLayer>& layers,
-                       const std::string& title, double pixels_per_m) {
+cv::Mat draw_route_map(const PlanningProblem& problem, const CourtFloor& floor,
+                       const std::vector<RouteLayer>& layers, const std::string& title,
+                       double pixels_per_m) {
   auto [lo, hi] = view_bounds(problem, layers);
   // A plain point problem keeps the picture's longer side about 1200 px whatever its units.
   if (!problem.court) pixels_per_m = 1200.0 / std::max((hi - lo).maxCoeff(), 1e-9);
@@ -47,9 +47,10 @@ cv::Mat draw_route_map(const PlanningProblem& problem, const std::vector<RouteLa
   cv::Mat image(height, width, CV_8UC3, cv::Scalar(235, 235, 235));
   const MapView px{Vec2(lo.x(), hi.y()), pixels_per_m, {0.0, static_cast<double>(top)}};
   if (problem.court) {
-    sim::TennisCourtSpec court;
-    court.net.enabled = problem.court->net.has_value();
-    draw_court_floor(image, px, court);
+    CourtFloor shown = floor;
+    // A court planned without a net is drawn without one.
+    if (!problem.court->net) shown.net_posts_y_m.reset();
+    draw_court_floor(image, px, shown);
     cv::rectangle(image, px(problem.court->area_min_m), px(problem.court->area_max_m),
                   cv::Scalar(60, 60, 60), 2);
     if (const auto& net = problem.court->net) {  // the lane round the net drawn above
