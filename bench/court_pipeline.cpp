@@ -49,8 +49,10 @@ Setup render_setup(sim::CourtSurface surface) {
   for (const sim::CourtCamera& camera : rig.cameras) {
     out.cameras.push_back({camera.camera, camera.camera_from_field});
     out.frames.cameras.push_back({out.frames.cameras.size(),
-                                  sim::CourtRenderer(camera, rig.court).render(scene, 3).bgr, 0,
-                                  0});
+                                  sim::CourtRenderer(camera, rig.court).render(scene, 3).bgr,
+                                  0,
+                                  0,
+                                  {}});
   }
   return out;
 }

@@ -32,7 +32,7 @@ TEST_P(UnifiedModelXi, ProjectThenLiftIsThePointsRay) {
     const Vec3 p = 2.7 * s;
     Vec2 m;
     if (!model.project(p.data(), m.data())) {
-      EXPECT_TRUE(s.z() + model.xi <= 1e-9 || (model.xi > 1.0 && s.z() < -1.0 / model.xi))
+      EXPECT_TRUE(s.z() + model.xi <= 1e-9 || (model.xi > 1.0 && s.z() <= -1.0 / model.xi + 1e-12))
           << "refused a point it images: " << s.transpose();
       continue;
     }

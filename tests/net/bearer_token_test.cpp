@@ -19,9 +19,18 @@ TEST(BearerToken, TheFileIsCreatedPrivateAndReadBack) {
   ASSERT_EQ(::stat(file.c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0600u);
   EXPECT_EQ(read_or_create_token(file), token);
+  // A token under 16 characters, and a file that cannot be created: errors naming the file.
   write_file_atomic(file, "short\n");
-  EXPECT_THROW(read_or_create_token(file), InputError);  // under 16 characters
-  EXPECT_THROW(read_or_create_token(dir.path() / "no-such-dir" / "token"), InputError);
+  const auto names = [](const std::filesystem::path& bad) {
+    try {
+      read_or_create_token(bad);
+    } catch (const InputError& e) {
+      return std::string(e.what()).find(bad.string()) != std::string::npos;
+    }
+    return false;
+  };
+  EXPECT_TRUE(names(file));
+  EXPECT_TRUE(names(dir.path() / "no-such-folder" / "token"));
 }
 
 TEST(BearerToken, OnlyTheExactHeaderShowsIt) {

@@ -21,7 +21,9 @@ TEST(CourtPipeline, FrameOfTheWrongSizeIsReportedNotUsed) {
   for (auto& pipeline :
        {make_seed_pipeline(two_cameras()), make_ballsight_pipeline(two_cameras())}) {
     SCOPED_TRACE(court_method_name(pipeline->method()));
-    const FrameSetResult result = pipeline->process(frame_set_of({good, wrong}, 1000));
+    FrameSet frames = frame_set_of({good, wrong}, 1000);
+    frames.cameras[1].capture_time_ns = 500;  // older, but not used: not the world's time
+    const FrameSetResult result = pipeline->process(frames);
     EXPECT_TRUE(result.camera_errors[0].empty());
     EXPECT_NE(result.camera_errors[1].find("640x480"), std::string::npos)
         << result.camera_errors[1];
@@ -53,6 +55,9 @@ TEST(FrameSet, CaptureTimeIsTheOldestFrames) {
   set.cameras[2].capture_time_ns = 40;
   set.cameras[1].capture_time_ns = 10;  // no image: not counted
   EXPECT_EQ(set.capture_time_ns(), 40);
+  EXPECT_EQ(set.capture_time_ns({true, true, false}), 50);  // camera 2's frame not used
+  set.cameras[0].capture_time_ns = 0;                       // a frame stamped 0 counts too
+  EXPECT_EQ(set.capture_time_ns(), 0);
   EXPECT_FALSE(frame_set_of({cv::Mat()}, 5).any());
   EXPECT_EQ(frame_set_of({cv::Mat()}, 5).capture_time_ns(), 0);
 }

@@ -92,10 +92,12 @@ struct SampleTerm {
   double inv_tangential_cm = 1.0;  // pixels per cm, across
 };
 
-// The model's floor point at a sample's pixel, a grazing one above the horizon.
+// The model's floor point at a sample's pixel, a grazing one above the horizon; false where the
+// pixel lies beyond the model's image (xi > 1): the residual cannot be evaluated there, and Ceres
+// takes a smaller step.
 template <typename T>
-void floor_at(const SampleTerm& term, const T* p, T* floor) {
-  floor_point_from_pixel(p, T(term.pixel.x()), T(term.pixel.y()), floor, true);
+bool floor_at(const SampleTerm& term, const T* p, T* floor) {
+  return floor_point_from_pixel(p, T(term.pixel.x()), T(term.pixel.y()), floor, true);
 }
 
 struct ReprojectionResidual {
@@ -116,7 +118,7 @@ struct PointResidual {
   template <typename T>
   bool operator()(const T* p, T* residual) const {
     T floor[2];
-    floor_at(*term, p, floor);
+    if (!floor_at(*term, p, floor)) return false;
     const Vec2 radial = term->target_cm.normalized();
     const T ex = floor[0] - T(term->target_cm.x());
     const T ey = floor[1] - T(term->target_cm.y());
@@ -131,7 +133,7 @@ struct DistanceResidual {
   template <typename T>
   bool operator()(const T* p, T* residual) const {
     T floor[2];
-    floor_at(*term, p, floor);
+    if (!floor_at(*term, p, floor)) return false;
     using std::sqrt;
     residual[0] = (sqrt(floor[0] * floor[0] + floor[1] * floor[1]) - T(term->distance_cm)) *
                   term->inv_radial_cm;

@@ -208,9 +208,10 @@ std::optional<FrameSet> next_frame_set(const std::vector<CameraCapture*>& camera
                                      : camera->frames().pop(std::chrono::milliseconds(0));
     const CaptureState state = camera->status().state;
     all_ended &= state == CaptureState::finished || state == CaptureState::stopped;
-    set.cameras.push_back(frame ? CameraFrame{k, std::move(frame->image),
-                                              utc_ns_of(frame->timestamp), frame->sequence}
-                                : CameraFrame{k, {}, 0, 0});
+    set.cameras.push_back(frame
+                              ? CameraFrame{k, std::move(frame->image), utc_ns_of(frame->timestamp),
+                                            frame->sequence, frame->timestamp}
+                              : CameraFrame{k, {}, 0, 0, {}});
   }
   if (!set.any() && all_ended) return std::nullopt;
   return set;

@@ -43,7 +43,9 @@ FrameSetResult CourtPipeline::process(const FrameSet& frames) {
   std::call_once(workers_once_, [&] { workers_ = std::make_unique<CameraWorkers>(all.size()); });
   workers_->run(jobs);
   result.world = fuse(result.detections);
-  result.world.capture_time_ns = frames.capture_time_ns();
+  std::vector<bool> used(all.size());
+  for (size_t c = 0; c < all.size(); ++c) used[c] = result.camera_errors[c].empty();
+  result.world.capture_time_ns = frames.capture_time_ns(used);
   return result;
 }
 

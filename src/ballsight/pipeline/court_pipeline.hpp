@@ -46,7 +46,7 @@ class CourtPipeline {
   /// One frame per camera in camera order; an empty image is a missing frame. A frame that is
   /// not 8-bit BGR of its camera's calibrated size is not used, and camera_errors says why. The
   /// cameras are detected in parallel (a long-lived thread each: camera_workers.hpp), then fused;
-  /// the world model carries the set's capture time.
+  /// the world model carries the capture time of the frames it was made from.
   FrameSetResult process(const FrameSet& frames);
   /// The first half on its own (a camera node): camera `camera`'s detections in `frame`, which
   /// frame_problem() accepts. Calls for different cameras may run at once.

@@ -58,11 +58,12 @@ void SiteCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {
       for (const CameraFrame& f : set->cameras) {
         if (f.image.empty()) continue;
         CameraFigures& fig = figures_[f.camera];
-        if (fig.last_frame_ns && f.capture_time_ns > *fig.last_frame_ns) {
-          const double hz = 1e9 / static_cast<double>(f.capture_time_ns - *fig.last_frame_ns);
+        if (fig.last_frame && f.received > *fig.last_frame) {
+          const double hz =
+              1.0 / std::chrono::duration<double>(f.received - *fig.last_frame).count();
           fig.rate_hz = smoothed_rate(fig.rate_hz, hz);
         }
-        fig.last_frame_ns = f.capture_time_ns;
+        fig.last_frame = f.received;
       }
     }
     publisher_->publish(*set, hub);
@@ -76,7 +77,7 @@ void SiteCourtService::republish(NavigationHub& hub) {
 
 nlohmann::json SiteCourtService::health() const {
   nlohmann::json cameras = nlohmann::json::array();
-  const std::int64_t now_ns = utc_now_ns();
+  const auto now = CaptureClock::now();
   {
     const std::lock_guard lock(mutex_);
     for (std::size_t c = 0; c < captures_.size(); ++c) {
@@ -88,8 +89,8 @@ nlohmann::json SiteCourtService::health() const {
            {"frames", s.frames},
            {"frames_per_s", fig.rate_hz},
            {"last_frame_age_s",
-            fig.last_frame_ns
-                ? nlohmann::json(1e-9 * static_cast<double>(now_ns - *fig.last_frame_ns))
+            fig.last_frame
+                ? nlohmann::json(std::chrono::duration<double>(now - *fig.last_frame).count())
                 : nlohmann::json(nullptr)},
            {"failures", s.failures_total},
            {"last_error", s.last_error}});

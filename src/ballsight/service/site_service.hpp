@@ -35,7 +35,7 @@ class SiteCourtService : public CourtService {
  private:
   struct CameraFigures {
     double rate_hz = 0.0;
-    std::optional<std::int64_t> last_frame_ns;  // UTC
+    std::optional<CaptureClock::time_point> last_frame;  // received
   };
 
   Site site_;

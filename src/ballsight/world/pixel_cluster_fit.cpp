@@ -207,8 +207,9 @@ std::optional<double> CoverageModel::fit(std::vector<Vec2>& balls, int iteration
     x.segment<2>(2 * static_cast<Eigen::Index>(i)) = balls[i];
   ceres::TinySolver<CoverageResiduals> solver;
   // At most `iterations` steps; stops early when a step lowers the sum of squares by less than a
-  // millionth of where it started, or moves the balls by less than a millionth of their distance
-  // from the centre (~10 um). The start's residuals are kept for the solver's first step.
+  // millionth of where it started, or moves the balls by less than a millionth of the norm of
+  // their stacked coordinates (10-60 um on a court). The start's residuals are kept for the
+  // solver's first step.
   Eigen::VectorXd start(function.NumResiduals());
   function(x.data(), start.data(), nullptr);
   solver.options.max_num_iterations = iterations + 1;  // its count includes the start
