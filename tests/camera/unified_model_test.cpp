@@ -85,6 +85,32 @@ TEST_P(UnifiedModelXi, ProjectionJacobianMatchesNumericDifferences) {
   }
 }
 
+// The same by xi, which the omni calibration fits: lift's ray and project's image point.
+TEST_P(UnifiedModelXi, JacobianByXiMatchesNumericDifferences) {
+  using Jet = ceres::Jet<double, 1>;
+  const double xi = GetParam();
+  const UnifiedModel<Jet> jet_model{Jet(xi, 0)};
+  constexpr double h = 1e-6;
+  const UnifiedModel<double> plus{xi + h}, minus{xi - h};
+  const Vec3 p(0.4, -0.3, 0.8);
+  const Jet point[3] = {Jet(p.x()), Jet(p.y()), Jet(p.z())};
+  Jet m[2];
+  ASSERT_TRUE(jet_model.project(point, m));
+  Vec2 m_plus, m_minus;
+  ASSERT_TRUE(plus.project(p.data(), m_plus.data()));
+  ASSERT_TRUE(minus.project(p.data(), m_minus.data()));
+  const Vec2 numeric_m = (m_plus - m_minus) / (2.0 * h);
+  EXPECT_NEAR(m[0].v(0), numeric_m.x(), 1e-7);
+  EXPECT_NEAR(m[1].v(0), numeric_m.y(), 1e-7);
+  Jet ray[3];
+  ASSERT_TRUE(jet_model.lift(Jet(0.5), Jet(-0.2), ray));
+  Vec3 ray_plus, ray_minus;
+  ASSERT_TRUE(plus.lift(0.5, -0.2, ray_plus.data()));
+  ASSERT_TRUE(minus.lift(0.5, -0.2, ray_minus.data()));
+  const Vec3 numeric_ray = (ray_plus - ray_minus) / (2.0 * h);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(ray[k].v(0), numeric_ray(k), 1e-7) << "ray " << k;
+}
+
 INSTANTIATE_TEST_SUITE_P(Xi, UnifiedModelXi, ::testing::Values(0.0, 0.5, 0.9, 1.0, 1.3));
 
 }  // namespace
