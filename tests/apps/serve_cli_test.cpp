@@ -105,7 +105,7 @@ TEST(ServeCli, SimulatedCourtRouteAndCollectedBall) {
       200);
   EXPECT_EQ(request(port, http::verb::get, "/api/v1/navigation").body["acknowledged_seq"], seq);
   const Reply health = request(port, http::verb::get, "/api/v1/health");
-  EXPECT_GE(health.body["frame_sets"].get<int>(), 2);
+  EXPECT_GE(health.body["frame_sets"].get<int>(), 2) << health.body.dump();  // failures, times
   int status = -1;
   const std::string rest = rest_of(out, status);
   EXPECT_EQ(status, 0);
