@@ -10,7 +10,7 @@ const CAMERA_PERIOD_MS = 2000; // each camera's frame, at a low rate
 const HEALTH_WAIT_MS = 250; // for the first health document, before the first frames are asked
 const MARKER_COLOURS = { ball: "#ffe14d", robot_front_marker: "#ff4d4d", robot_back_marker: "#4da3ff" };
 
-const state = { site: null, update: null, health: null, latencies: [], serviceId: "", seq: 0, retries: 0 };
+const state = { site: null, update: null, health: null, latencies: [], serviceId: "", seq: 0, retries: 0, live: false };
 window.ballsightDashboard = { seq: 0, balls: [], robot: null, route: null, cameras: {} };
 
 function fixed(value, digits) {
@@ -55,6 +55,7 @@ function connect() {
   const socket = new WebSocket(socketUrl(`/api/v1/stream?${query}`));
   socket.onopen = () => {
     state.retries = 0;
+    state.live = true;
     $("connection").textContent = "live";
     showError("error", null);
   };
@@ -69,6 +70,7 @@ function connect() {
     }
   };
   socket.onclose = () => {
+    state.live = false;
     const wait = RECONNECT_MS[Math.min(state.retries++, RECONNECT_MS.length - 1)];
     $("connection").textContent = `reconnecting in ${wait} ms`;
     setTimeout(connect, wait);
@@ -129,6 +131,7 @@ function hasFrame(name) {
 async function refreshCameras() {
   const figures = $("camera-views").querySelectorAll("figure");
   for (const [i, name] of state.site.cameras.entries()) {
+    if (!state.live) break; // the service is away: its views wait for the stream to reconnect
     if (!hasFrame(name)) continue;
     try {
       await showCameraView(name, figures[i]);
