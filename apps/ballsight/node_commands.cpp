@@ -13,6 +13,7 @@
 #include "ballsight/dds/camera_node.hpp"
 #include "ballsight/dds/court_node.hpp"
 #include "ballsight/dds/court_topics.hpp"
+#include "ballsight/dds/robot_reports.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/service/simulated_court.hpp"
 #include "ballsight/service/simulated_service.hpp"
@@ -153,14 +154,17 @@ void run_court_node(const NodeArgs& args) {
   }
   const dds::CourtTopics topics(
       participant, hub, [&] { return service->health(); }, topics_options);
+  const dds::RobotReports robot(participant, dds::robot_reports_context(*service, hub));
   std::cout << "ballsight court-node: " << topic_prefix(args)
-            << "{robot_pose,balls,ball_estimates,route,diagnostics} (DDS domain "
+            << "{robot_pose,balls,ball_estimates,route,navigation,diagnostics}, robot link on "
+            << topic_prefix(args) << "robot/{reports,replies} (DDS domain "
             << dds::domain_id(args.domain_options()) << ")" << std::endl;
   signals.run_until_stopped(args.duration_s,
                             [&](const std::atomic<bool>& stop) { service->run(hub, stop); });
   if (http) http->stop();
   std::cout << "ballsight court-node: stopped after " << topics.written() << " updates ("
-            << topics.failed() << " writes refused)" << std::endl;
+            << topics.failed() << " writes refused); " << robot.answered()
+            << " robot reports answered (" << robot.refused() << " refused)" << std::endl;
 }
 
 }  // namespace

@@ -17,13 +17,19 @@ dds::DomainOptions DdsArgs::domain_options() const {
   return options;
 }
 
+std::vector<CLI::Option*> add_domain_options(CLI::App& command, DdsArgs& args,
+                                             const std::string& topics) {
+  return {command.add_option("--namespace", args.domain.ns,
+                             "ROS 2 namespace of the " + topics + " (court1: /court1/...)"),
+          command.add_option("--domain", args.domain_id,
+                             "DDS domain id (default: ROS_DOMAIN_ID, else 0)"),
+          command.add_flag(
+              "--loopback", args.domain.loopback,
+              "DDS on this machine only (127.0.0.1, no multicast; as ROS 2's LOCALHOST range)")};
+}
+
 void add_dds_options(CLI::App& command, DdsArgs& args, const std::string& topics) {
-  command.add_option("--namespace", args.domain.ns,
-                     "ROS 2 namespace of the " + topics + " (court1: /court1/...)");
-  command.add_option("--domain", args.domain_id, "DDS domain id (default: ROS_DOMAIN_ID, else 0)");
-  command.add_flag(
-      "--loopback", args.domain.loopback,
-      "DDS on this machine only (127.0.0.1, no multicast; as ROS 2's LOCALHOST range)");
+  add_domain_options(command, args, topics);
   command
       .add_option("--duration", args.duration_s, "Stop after this many seconds (0: on a signal)")
       ->capture_default_str();

@@ -9,6 +9,7 @@
 #include <memory>
 #include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 #include "ballsight/dds/domain.hpp"
 #include "ballsight/pipeline/frame_source.hpp"
@@ -23,7 +24,10 @@ struct DdsArgs {
   dds::DomainOptions domain_options() const;
 };
 
-/// --namespace, --domain, --loopback, --duration; `topics` names what the namespace holds.
+/// --namespace, --domain, --loopback; `topics` names what the namespace holds.
+std::vector<CLI::Option*> add_domain_options(CLI::App& command, DdsArgs& args,
+                                             const std::string& topics);
+/// The same and --duration.
 void add_dds_options(CLI::App& command, DdsArgs& args, const std::string& topics);
 /// Throws InputError naming the option at fault.
 void validate(const DdsArgs& args);

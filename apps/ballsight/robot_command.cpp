@@ -7,13 +7,16 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/dds/dds_robot_link.hpp"
 #include "ballsight/net/http_robot_link.hpp"
 #include "ballsight/robot/collector_robot.hpp"
 #include "commands.hpp"
+#include "node_options.hpp"
 
 namespace ballsight::app {
 namespace {
@@ -24,7 +27,8 @@ extern "C" void stop_robot(int) {
   g_stop = true;
 }
 
-struct RobotArgs {
+struct RobotArgs : DdsArgs {
+  bool dds = false;
   std::string server = "http://127.0.0.1:8080";
   std::string token_file = "ballsight-token";
   bool long_poll = false;
@@ -32,19 +36,31 @@ struct RobotArgs {
   CollectorOptions collector;
 };
 
-void run_robot(const RobotArgs& args) {
-  args.collector.validate();
+/// The link the options ask for: over DDS (`participant`, made here) or HTTP.
+std::unique_ptr<RobotLink> open_link(const RobotArgs& args,
+                                     std::optional<dds::Participant>& participant) {
+  if (args.dds) {
+    validate(args);
+    participant.emplace(args.domain_options());
+    return std::make_unique<dds::DdsRobotLink>(*participant);
+  }
   RobotLinkOptions options = RobotLinkOptions::from_url(args.server, "--server");
   const std::string token = read_file(args.token_file);  // names the file when it is missing
   options.token = token.substr(0, token.find_first_of("\r\n"));
   options.websocket = !args.long_poll;
+  return std::make_unique<HttpRobotLink>(options);
+}
+
+void run_robot(const RobotArgs& args) {
+  args.collector.validate();
+  std::optional<dds::Participant> participant;
+  const std::unique_ptr<RobotLink> link = open_link(args, participant);
   std::signal(SIGINT, stop_robot);
   std::signal(SIGTERM, stop_robot);
-  HttpRobotLink link(options);
   const CollectorResult r = run_collector(
-      link, args.collector, g_stop,
+      *link, args.collector, g_stop,
       [](const std::string& line) { std::cout << "ballsight robot: " << line << std::endl; });
-  link.stop();
+  link->stop();
   std::cout << "ballsight robot: "
             << (r.done   ? "no ball left"
                 : g_stop ? "stopped"
@@ -69,17 +85,25 @@ void add_robot_command(CLI::App& app) {
       "robot",
       "The simulated collector's controller: follows the navigation service's route, drives the "
       "simulated court's robot, reports the balls it collects (docs/robot-link.md)");
-  cmd->add_option("--server", args->server, "The navigation service, http://HOST:PORT")
-      ->capture_default_str();
-  cmd->add_option("--token-file", args->token_file, "The service's token (its --token-file)")
-      ->capture_default_str();
+  CLI::Option* server =
+      cmd->add_option("--server", args->server, "The navigation service, http://HOST:PORT")
+          ->capture_default_str();
+  CLI::Option* token =
+      cmd->add_option("--token-file", args->token_file, "The service's token (its --token-file)")
+          ->capture_default_str();
   cmd->add_option("--max-time", args->collector.max_time_s,
                   "Stop after this many seconds (0: when done)")
       ->capture_default_str();
   cmd->add_option("--done-after", args->collector.done_after,
                   "Stop after this many updates with no ball and no route")
       ->capture_default_str();
-  cmd->add_flag("--long-poll", args->long_poll, "Long-poll instead of the WebSocket stream");
+  CLI::Option* long_poll =
+      cmd->add_flag("--long-poll", args->long_poll, "Long-poll instead of the WebSocket stream");
+  CLI::Option* dds = cmd->add_flag(
+      "--dds", args->dds,
+      "Reach the court over DDS (a court-node's navigation and robot/* topics) instead of HTTP");
+  dds->excludes(server)->excludes(token)->excludes(long_poll);
+  for (CLI::Option* option : add_domain_options(*cmd, *args, "court's topics")) option->needs(dds);
   cmd->add_option("--summary", args->summary,
                   "Write what happened here at the end (JSON: done, updates, collected, gaps, "
                   "reconnects, sim_time_s, seqs, latency_ms per update)");

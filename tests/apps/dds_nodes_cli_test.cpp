@@ -271,6 +271,23 @@ TEST(DdsNodes, ACourtNodeServesTheNavigationServiceAsWell) {
   EXPECT_TRUE(compared) << "no update seen both over HTTP and on DDS\n" << court.log_text();
 }
 
+// The robot on DDS: `robot --dds` drives `court-node --sim` through the court's navigation and
+// robot/* topics alone (no HTTP), and collects every ball without missing an update.
+TEST(DdsNodes, ARobotOnDdsCollectsEveryBallOfTheSimulatedCourt) {
+  const test::TempDir dir;
+  const dds::DomainOptions domain = test::test_domain();
+  ChildProcess court(BALLSIGHT_CLI, node_args("court-node", domain, 3, {"--duration", "200"}),
+                     dir / "court.log");
+  const test::CliResult robot =
+      test::run_cli({"robot", "--dds", "--loopback", "--domain", std::to_string(*domain.domain),
+                     "--namespace", domain.ns, "--max-time", "150"});
+  EXPECT_EQ(robot.exit_code, 0) << robot.stderr_text;
+  EXPECT_NE(robot.stdout_text.find("no ball left"), std::string::npos)
+      << robot.stdout_text << court.log_text();
+  EXPECT_NE(robot.stdout_text.find("12 collected; 0 updates missed"), std::string::npos)
+      << robot.stdout_text;
+}
+
 // ROS 2's default middleware family reads ballsight's topics: a Fast DDS 2.9.1 reader (types
 // from fastddsgen -typeros2, XCDR1 only, ROS 2's default QoS) receives the pose, the balls and the
 // route with ROS 2's type names and the court frame.

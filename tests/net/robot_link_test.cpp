@@ -37,23 +37,6 @@ NavigationUpdate update(double x) {
   return test::sample_update({Vec2(x, 1.0), 0.25});
 }
 
-/// The seqs of `count` updates taken from `link`, waiting up to 5 s for each.
-std::vector<std::uint64_t> take(RobotLink& link, int count) {
-  std::vector<std::uint64_t> seqs;
-  for (int k = 0; k < count; ++k) {
-    const std::optional<LinkUpdate> u = link.next(milliseconds(5000));
-    if (!u) break;
-    seqs.push_back(u->seq);
-  }
-  return seqs;
-}
-
-std::vector<std::uint64_t> range(std::uint64_t first, std::uint64_t last) {
-  std::vector<std::uint64_t> out;
-  for (std::uint64_t s = first; s <= last; ++s) out.push_back(s);
-  return out;
-}
-
 class RobotLinkTransports : public testing::TestWithParam<bool> {};
 
 TEST_P(RobotLinkTransports, EveryUpdateOnceInOrderAndWritesReachTheService) {
@@ -75,7 +58,7 @@ TEST_P(RobotLinkTransports, EveryUpdateOnceInOrderAndWritesReachTheService) {
     hub.publish(update(k));
     std::this_thread::sleep_for(milliseconds(2));
   }
-  EXPECT_EQ(take(link, 30), range(2, 31));
+  EXPECT_EQ(test::take(link, 30), test::seq_range(2, 31));
   EXPECT_EQ(link.status().transport, GetParam() ? "websocket" : "long-poll");
   EXPECT_EQ(link.status().gaps, 0u);
   EXPECT_TRUE(link.acknowledge(31));
@@ -96,15 +79,15 @@ TEST_P(RobotLinkTransports, ResumesAfterTheServiceComesBackAndFollowsANewRun) {
   const unsigned short port = server->port();
   hub.publish(update(0));
   HttpRobotLink link(link_options(port, GetParam()));
-  EXPECT_EQ(take(link, 1), range(1, 1));  // a new client starts at the latest
+  EXPECT_EQ(test::take(link, 1), test::seq_range(1, 1));  // a new client starts at the latest
   for (int k = 0; k < 4; ++k) hub.publish(update(k));
-  EXPECT_EQ(take(link, 4), range(2, 5));
+  EXPECT_EQ(test::take(link, 4), test::seq_range(2, 5));
   // The service goes away; the pipeline publishes on; the same run comes back on the same port.
   server.reset();
   for (int k = 0; k < 5; ++k) hub.publish(update(k));
   std::this_thread::sleep_for(milliseconds(100));
   server = std::make_unique<HttpServer>(server_options(port), api_v1_routes(context), context);
-  EXPECT_EQ(take(link, 5), range(6, 10));  // nothing lost, nothing twice
+  EXPECT_EQ(test::take(link, 5), test::seq_range(6, 10));  // nothing lost, nothing twice
   EXPECT_GE(link.status().reconnects, 1);
   // A new run of the service (its seq begins again) is followed from its latest update.
   server.reset();
@@ -117,7 +100,7 @@ TEST_P(RobotLinkTransports, ResumesAfterTheServiceComesBackAndFollowsANewRun) {
   EXPECT_EQ(u->seq, 1u);
   EXPECT_EQ(u->service_id, restarted.service_id());
   for (int k = 0; k < 2; ++k) restarted.publish(update(k));
-  EXPECT_EQ(take(link, 2), range(2, 3));
+  EXPECT_EQ(test::take(link, 2), test::seq_range(2, 3));
   EXPECT_EQ(link.status().gaps, 0u);
   server.reset();  // before the run it serves (declared after it) goes
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ballsight/dds/court_messages.hpp"
+#include "ballsight/dds/robot_messages.hpp"
 
 namespace ballsight::dds {
 namespace {
@@ -21,6 +22,7 @@ CourtTopics::CourtTopics(const Participant& participant, NavigationHub& hub,
       balls_(participant, "balls", kLatest),
       ball_estimates_(participant, "ball_estimates", kLatest),
       route_(participant, "route", kLatest),
+      navigation_(participant, kNavigationTopic, kNavigationQos),
       diagnostics_(participant, "diagnostics") {
   if (options_.camera_detections) {
     for (const std::string& camera : options_.detection_cameras)
@@ -88,6 +90,8 @@ void CourtTopics::write(const NavigationUpdate& update) {
   balls_.write(balls_message(update, options_.ball_radius_m, arena));
   ball_estimates_.write(ball_estimates_message(update, options_.ball_radius_m, arena));
   route_.write(route_message(update, arena));
+  navigation_.write(
+      navigation_update_message(update, hub_.service_id(), options_.ball_radius_m, arena));
   if (options_.camera_detections) write_detections(update);
   ++written_;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // A court's navigation updates on DDS, as ROS 2 topics under the participant's namespace:
 // `robot_pose` (geometry_msgs/PoseStamped), `balls` (geometry_msgs/PoseArray), `ball_estimates`
-// (ballsight_msgs/BallArray), `route` (nav_msgs/Path) and `diagnostics`
+// (ballsight_msgs/BallArray), `route` (nav_msgs/Path), `navigation`
+// (ballsight_msgs/NavigationUpdate, the robot link's: robot_messages.hpp) and `diagnostics`
 // (diagnostic_msgs/DiagnosticArray, once a second). The balls and the route are transient-local,
 // keep last 1: a subscriber that joins late gets the latest at once. Every update the hub
 // publishes is written, in order, from a thread of this object's (the hub's listener only hands
@@ -64,6 +65,7 @@ class CourtTopics {
   Writer<PoseArrayMsg> balls_;
   Writer<BallArrayMsg> ball_estimates_;
   Writer<PathMsg> route_;
+  Writer<NavigationUpdateMsg> navigation_;
   Writer<DiagnosticArrayMsg> diagnostics_;
   std::map<std::string, std::unique_ptr<Writer<CameraDetectionsMsg>>> detections_;  // by camera
   std::mutex mutex_;

@@ -17,6 +17,10 @@ FieldDescription sequence(std::string name, FieldType type) {
   return {std::move(name), type, FieldShape::sequence, 0, ""};
 }
 
+FieldDescription points(std::string name) {
+  return nested(std::move(name), "geometry_msgs/msg/Point", FieldShape::sequence);
+}
+
 // The field lists of idl/*.idl, as rosidl describes them.
 std::vector<TypeDescription> descriptions() {
   using F = FieldType;
@@ -27,6 +31,8 @@ std::vector<TypeDescription> descriptions() {
        {nested("stamp", "builtin_interfaces/msg/Time"), field("frame_id", F::string)}},
       {"geometry_msgs/msg/Point",
        {field("x", F::float64), field("y", F::float64), field("z", F::float64)}},
+      {"geometry_msgs/msg/Pose2D",
+       {field("x", F::float64), field("y", F::float64), field("theta", F::float64)}},
       {"geometry_msgs/msg/Quaternion",
        {field("x", F::float64), field("y", F::float64), field("z", F::float64),
         field("w", F::float64)}},
@@ -65,6 +71,18 @@ std::vector<TypeDescription> descriptions() {
       {"ballsight_msgs/msg/CameraDetections",
        {header, field("frame", F::uint64), field("error", F::string),
         nested("detections", "ballsight_msgs/msg/PixelDetection", FieldShape::sequence)}},
+      {"ballsight_msgs/msg/NavigationUpdate",
+       {header, field("seq", F::uint64), field("service_id", F::string),
+        nested("published", "builtin_interfaces/msg/Time"), field("has_robot", F::boolean),
+        nested("robot", "geometry_msgs/msg/Pose2D"), points("balls"), points("visits"),
+        points("waypoints")}},
+      {"ballsight_msgs/msg/RobotReport",
+       {header, field("client", F::string), field("request", F::uint64), field("kind", F::uint8),
+        field("seq", F::uint64), points("points"), nested("pose", "geometry_msgs/msg/Pose2D"),
+        field("speed_mps", F::float64), field("turn_rate_dps", F::float64)}},
+      {"ballsight_msgs/msg/RobotReply",
+       {header, field("client", F::string), field("request", F::uint64), field("ok", F::boolean),
+        field("error", F::string), field("collected", F::int32), field("time_s", F::float64)}},
   };
 }
 

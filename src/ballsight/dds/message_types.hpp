@@ -22,6 +22,10 @@ using BallMsg = ballsight_msgs_msg_dds__Ball_;
 using BallArrayMsg = ballsight_msgs_msg_dds__BallArray_;
 using PixelDetectionMsg = ballsight_msgs_msg_dds__PixelDetection_;
 using CameraDetectionsMsg = ballsight_msgs_msg_dds__CameraDetections_;
+using Pose2DMsg = geometry_msgs_msg_dds__Pose2D_;
+using NavigationUpdateMsg = ballsight_msgs_msg_dds__NavigationUpdate_;
+using RobotReportMsg = ballsight_msgs_msg_dds__RobotReport_;
+using RobotReplyMsg = ballsight_msgs_msg_dds__RobotReply_;
 
 /// A message type a topic carries: specialised for each top-level message below.
 template <class Msg>
@@ -46,6 +50,12 @@ BALLSIGHT_DDS_MESSAGE(BallArrayMsg, "ballsight_msgs/msg/BallArray",
                       ballsight_msgs_msg_dds__BallArray__desc)
 BALLSIGHT_DDS_MESSAGE(CameraDetectionsMsg, "ballsight_msgs/msg/CameraDetections",
                       ballsight_msgs_msg_dds__CameraDetections__desc)
+BALLSIGHT_DDS_MESSAGE(NavigationUpdateMsg, "ballsight_msgs/msg/NavigationUpdate",
+                      ballsight_msgs_msg_dds__NavigationUpdate__desc)
+BALLSIGHT_DDS_MESSAGE(RobotReportMsg, "ballsight_msgs/msg/RobotReport",
+                      ballsight_msgs_msg_dds__RobotReport__desc)
+BALLSIGHT_DDS_MESSAGE(RobotReplyMsg, "ballsight_msgs/msg/RobotReply",
+                      ballsight_msgs_msg_dds__RobotReply__desc)
 #undef BALLSIGHT_DDS_MESSAGE
 
 /// The REP-2011 type hash ("RIHS01_...") of a message ballsight knows by its ROS 2 name

@@ -134,7 +134,7 @@ void RobotLinkOptions::validate() const {
 }
 
 struct HttpRobotLink::Impl {
-  explicit Impl(const RobotLinkOptions& o) : options(o), writer(o) {}
+  explicit Impl(const RobotLinkOptions& o) : options(o), inbox(o.keep), writer(o) {}
 
   RobotLinkOptions options;
   asio::io_context io{1};  // the receiver's
@@ -142,50 +142,38 @@ struct HttpRobotLink::Impl {
   std::atomic<bool> stopping{false};
   std::function<void()> close_receiver;  // on io's thread
 
-  mutable std::mutex mutex;
-  std::condition_variable changed;
-  std::deque<LinkUpdate> ready;
-  LinkStatus status;
-  std::uint64_t last_seq = 0;
-  std::string service_id;
+  LinkInbox inbox;
 
   std::mutex write_mutex;
   asio::io_context write_io{1};
   HttpClient writer;
 
-  /// Hands `update` to the robot unless it was delivered already. True when it was new.
-  bool deliver(const json& update);
+  /// Hands `update` to the robot unless it was delivered already.
+  void deliver(const json& update);
   std::string resume_query();
   awaitable<void> receive();
   awaitable<void> receive_stream();
   awaitable<void> receive_polls();
   std::optional<json> call(http::verb verb, const std::string& target, const json& body);
-  /// The oldest update not taken (or the newest, dropping the rest), waiting up to `timeout`.
-  std::optional<LinkUpdate> take(std::chrono::milliseconds timeout, bool newest);
+  void connected(const char* transport) {
+    inbox.update_status([transport](LinkStatus& status) {
+      status.connected = true;
+      status.transport = transport;
+    });
+  }
 };
 
 std::string HttpRobotLink::Impl::resume_query() {
-  const std::lock_guard lock(mutex);
-  std::string q = "after=" + std::to_string(last_seq);
+  std::string q = "after=" + std::to_string(inbox.last_seq());
+  const std::string service_id = inbox.service_id();
   if (!service_id.empty()) q += "&service=" + service_id;
   return q;
 }
 
-bool HttpRobotLink::Impl::deliver(const json& raw) {
+void HttpRobotLink::Impl::deliver(const json& raw) {
   LinkUpdate u = parse_link_update(raw);
   u.received_ns = utc_now_ns();
-  {
-    const std::lock_guard lock(mutex);
-    if (u.service_id == service_id && u.seq <= last_seq) return false;
-    if (u.service_id == service_id) status.gaps += u.seq - last_seq - 1;
-    service_id = u.service_id;
-    last_seq = u.seq;
-    ++status.delivered;
-    ready.push_back(std::move(u));
-    if (ready.size() > options.keep) ready.pop_front();
-  }
-  changed.notify_all();
-  return true;
+  inbox.deliver(std::move(u));
 }
 
 awaitable<void> HttpRobotLink::Impl::receive_stream() {
@@ -218,11 +206,7 @@ awaitable<void> HttpRobotLink::Impl::receive_stream() {
     throw Refused("the stream was refused (" + std::to_string(answer.result_int()) + ")");
   }
   if (ec) throw boost::system::system_error(ec);
-  {
-    const std::lock_guard lock(mutex);
-    status.connected = true;
-    status.transport = "websocket";
-  }
+  connected("websocket");
   beast::flat_buffer buffer;
   while (!stopping) {
     co_await ws.async_read(buffer, asio::use_awaitable);
@@ -243,11 +227,7 @@ awaitable<void> HttpRobotLink::Impl::receive_polls() {
                                 "/api/v1/navigation?" + resume_query() +
                                     "&timeout_ms=" + std::to_string(options.poll_wait.count()),
                                 "", options.poll_wait);
-    {
-      const std::lock_guard lock(mutex);
-      status.connected = true;
-      status.transport = "long-poll";
-    }
+    connected("long-poll");
     if (res.result_int() == 200) {
       deliver(json::parse(res.body()));
     } else if (res.result_int() != 204) {
@@ -261,7 +241,7 @@ awaitable<void> HttpRobotLink::Impl::receive() {
   int failures = 0;
   asio::steady_timer pause(io);
   while (!stopping) {
-    const std::uint64_t before = status.delivered;
+    const std::uint64_t before = inbox.status().delivered;
     std::string error;
     try {
       if (websocket) {
@@ -277,13 +257,12 @@ awaitable<void> HttpRobotLink::Impl::receive() {
     }
     close_receiver = {};
     if (stopping) break;
-    {
-      const std::lock_guard lock(mutex);
+    inbox.update_status([&](LinkStatus& status) {
       if (status.connected) ++status.reconnects;
       status.connected = false;
       status.last_error = error;
       failures = status.delivered > before ? 1 : failures + 1;
-    }
+    });
     pause.expires_after(options.backoff.after(failures));
     close_receiver = [&pause] { pause.cancel(); };
     beast::error_code ec;
@@ -311,29 +290,15 @@ void HttpRobotLink::stop() {
     if (s.close_receiver) s.close_receiver();
   });
   s.thread.join();
-  s.changed.notify_all();
-}
-
-std::optional<LinkUpdate> HttpRobotLink::Impl::take(std::chrono::milliseconds timeout,
-                                                    bool newest) {
-  std::unique_lock lock(mutex);
-  changed.wait_for(lock, timeout, [&] { return !ready.empty() || stopping; });
-  if (ready.empty()) return std::nullopt;
-  LinkUpdate u = std::move(newest ? ready.back() : ready.front());
-  if (newest) {
-    ready.clear();
-  } else {
-    ready.pop_front();
-  }
-  return u;
+  s.inbox.close();
 }
 
 std::optional<LinkUpdate> HttpRobotLink::next(std::chrono::milliseconds timeout) {
-  return impl_->take(timeout, false);
+  return impl_->inbox.take(timeout, false);
 }
 
 std::optional<LinkUpdate> HttpRobotLink::latest(std::chrono::milliseconds timeout) {
-  return impl_->take(timeout, true);
+  return impl_->inbox.take(timeout, true);
 }
 
 std::optional<json> HttpRobotLink::Impl::call(http::verb verb, const std::string& target,
@@ -356,8 +321,7 @@ std::optional<json> HttpRobotLink::Impl::call(http::verb verb, const std::string
   } catch (const std::exception& e) {
     error = target + ": " + e.what();
   }
-  const std::lock_guard status_lock(mutex);
-  status.last_error = error;
+  inbox.update_status([&error](LinkStatus& status) { status.last_error = error; });
   return std::nullopt;
 }
 
@@ -392,8 +356,7 @@ bool HttpRobotLink::set_pose(const Pose2D& pose) {
 }
 
 LinkStatus HttpRobotLink::status() const {
-  const std::lock_guard lock(impl_->mutex);
-  return impl_->status;
+  return impl_->inbox.status();
 }
 
 }  // namespace ballsight

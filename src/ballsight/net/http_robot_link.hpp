@@ -9,9 +9,7 @@
 
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -23,6 +21,7 @@
 #include "ballsight/core/geometry.hpp"
 #include "ballsight/net/link_update.hpp"
 #include "ballsight/pipeline/frame_source.hpp"
+#include "ballsight/robot/link_inbox.hpp"
 #include "ballsight/robot/robot_link.hpp"
 
 namespace ballsight {
