@@ -1,5 +1,7 @@
 #include "ballsight/world/cluster_refinement.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -321,6 +323,63 @@ Fit fit_with_one_less(const GroupFitter& fitter, const Fit& current) {
   return best;
 }
 
+// One group of nearby balls refitted (as they were where nothing needs fitting).
+std::vector<FusedObject> refine_group(const std::vector<FieldObservation>& observations,
+                                      const std::vector<FusedObject>& fused,
+                                      const std::vector<int>& group, double ball_radius_m,
+                                      const ClusterOptions& options) {
+  std::vector<int> members;
+  std::vector<Vec2> start;
+  for (int g : group) {
+    const FusedObject& object = fused[static_cast<size_t>(g)];
+    members.insert(members.end(), object.observations.begin(), object.observations.end());
+    start.push_back(object.position_m);
+  }
+  if (group.size() == 1 && members.size() < 3) {
+    return {fused[static_cast<size_t>(group.front())]};
+  }
+  const GroupFitter fitter(observations, members, ball_radius_m, options);
+  Fit best = fitter.fit(start);
+  if (group.size() == 1 && best.chi2 < options.min_chi2_gain) {  // a lone ball that fits
+    return {fused[static_cast<size_t>(group.front())]};
+  }
+  // Fewer balls where the observations do not need them (a ball's observations fused apart).
+  while (best.balls.size() > 1) {
+    Fit fewer = fit_with_one_less(fitter, best);
+    if (fewer.chi2 - best.chi2 >= options.min_chi2_keep) break;
+    best = std::move(fewer);
+  }
+  const int wanted = static_cast<int>(start.size()) + options.max_added;
+  // A further ball lowers the chi-square by at most all of it.
+  while (static_cast<int>(best.balls.size()) < wanted && best.chi2 >= options.min_chi2_gain) {
+    Fit more = fit_with_one_more(fitter, best, ball_radius_m);
+    if (best.chi2 - more.chi2 < options.min_chi2_gain) break;
+    if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
+    if (fitter.camera_count(more, static_cast<int>(more.balls.size()) - 1) < 2) break;
+    best = std::move(more);
+  }
+  const Eigen::MatrixXd covariance = best.information.inverse();
+  std::vector<FusedObject> out;
+  for (size_t i = 0; i < best.balls.size(); ++i) {
+    FusedObject object;
+    object.position_m = best.balls[i];
+    object.covariance_m2 =
+        covariance.block<2, 2>(2 * static_cast<Eigen::Index>(i), 2 * static_cast<Eigen::Index>(i));
+    for (size_t o = 0; o < members.size(); ++o) {
+      const auto& cov = best.covered[o];
+      if (std::find(cov.begin(), cov.end(), static_cast<int>(i)) == cov.end()) continue;
+      object.observations.push_back(members[o]);
+      const int camera = observations[static_cast<size_t>(members[o])].camera;
+      if (std::find(object.cameras.begin(), object.cameras.end(), camera) == object.cameras.end())
+        object.cameras.push_back(camera);
+    }
+    std::sort(object.observations.begin(), object.observations.end());
+    std::sort(object.cameras.begin(), object.cameras.end());
+    out.push_back(std::move(object));
+  }
+  return out;
+}
+
 }  // namespace
 
 double min_separation(const std::vector<Vec2>& balls) {
@@ -356,65 +415,28 @@ std::vector<std::vector<int>> ball_groups(const std::vector<FusedObject>& fused,
   });
 }
 
+std::vector<FusedObject> fit_groups_in_parallel(
+    const std::vector<std::vector<int>>& groups,
+    const std::function<std::vector<FusedObject>(const std::vector<int>& group)>& fit) {
+  std::vector<std::vector<FusedObject>> fitted(groups.size());
+  tbb::parallel_for(std::size_t{0}, groups.size(),
+                    [&](std::size_t g) { fitted[g] = fit(groups[g]); });
+  std::vector<FusedObject> out;
+  for (std::vector<FusedObject>& objects : fitted)
+    out.insert(out.end(), std::make_move_iterator(objects.begin()),
+               std::make_move_iterator(objects.end()));
+  return out;
+}
+
 std::vector<FusedObject> refine_clusters(const std::vector<FieldObservation>& observations,
                                          const std::vector<FusedObject>& fused,
                                          double ball_radius_m, const ClusterOptions& options) {
   options.validate();
-  std::vector<FusedObject> out;
-  for (const std::vector<int>& group :
-       ball_groups(fused, options.link_distance_radii * ball_radius_m)) {
-    std::vector<int> members;
-    std::vector<Vec2> start;
-    for (int g : group) {
-      const FusedObject& object = fused[static_cast<size_t>(g)];
-      members.insert(members.end(), object.observations.begin(), object.observations.end());
-      start.push_back(object.position_m);
-    }
-    if (group.size() == 1 && members.size() < 3) {
-      out.push_back(fused[static_cast<size_t>(group.front())]);
-      continue;
-    }
-    const GroupFitter fitter(observations, members, ball_radius_m, options);
-    Fit best = fitter.fit(start);
-    if (group.size() == 1 && best.chi2 < options.min_chi2_gain) {  // a lone ball that fits
-      out.push_back(fused[static_cast<size_t>(group.front())]);
-      continue;
-    }
-    // Fewer balls where the observations do not need them (a ball's observations fused apart).
-    while (best.balls.size() > 1) {
-      Fit fewer = fit_with_one_less(fitter, best);
-      if (fewer.chi2 - best.chi2 >= options.min_chi2_keep) break;
-      best = std::move(fewer);
-    }
-    const int wanted = static_cast<int>(start.size()) + options.max_added;
-    // A further ball lowers the chi-square by at most all of it.
-    while (static_cast<int>(best.balls.size()) < wanted && best.chi2 >= options.min_chi2_gain) {
-      Fit more = fit_with_one_more(fitter, best, ball_radius_m);
-      if (best.chi2 - more.chi2 < options.min_chi2_gain) break;
-      if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
-      if (fitter.camera_count(more, static_cast<int>(more.balls.size()) - 1) < 2) break;
-      best = std::move(more);
-    }
-    const Eigen::MatrixXd covariance = best.information.inverse();
-    for (size_t i = 0; i < best.balls.size(); ++i) {
-      FusedObject object;
-      object.position_m = best.balls[i];
-      object.covariance_m2 = covariance.block<2, 2>(2 * static_cast<Eigen::Index>(i),
-                                                    2 * static_cast<Eigen::Index>(i));
-      for (size_t o = 0; o < members.size(); ++o) {
-        const auto& cov = best.covered[o];
-        if (std::find(cov.begin(), cov.end(), static_cast<int>(i)) == cov.end()) continue;
-        object.observations.push_back(members[o]);
-        const int camera = observations[static_cast<size_t>(members[o])].camera;
-        if (std::find(object.cameras.begin(), object.cameras.end(), camera) == object.cameras.end())
-          object.cameras.push_back(camera);
-      }
-      std::sort(object.observations.begin(), object.observations.end());
-      std::sort(object.cameras.begin(), object.cameras.end());
-      out.push_back(std::move(object));
-    }
-  }
-  return out;
+  return fit_groups_in_parallel(ball_groups(fused, options.link_distance_radii * ball_radius_m),
+                                [&](const std::vector<int>& group) {
+                                  return refine_group(observations, fused, group, ball_radius_m,
+                                                      options);
+                                });
 }
 
 }  // namespace ballsight

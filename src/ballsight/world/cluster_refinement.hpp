@@ -46,6 +46,13 @@ std::vector<std::vector<int>> ball_groups(const std::vector<FusedObject>& fused,
 std::vector<std::vector<int>> linked_groups(size_t count,
                                             const std::function<bool(size_t, size_t)>& linked);
 
+/// `fit(group)` of every group side by side on the machine's cores (oneTBB's pool: OpenCV's may
+/// be kept to one thread by a caller doing image work), the results joined in the groups' order.
+/// `fit` must be safe to call from several threads at once.
+std::vector<FusedObject> fit_groups_in_parallel(
+    const std::vector<std::vector<int>>& groups,
+    const std::function<std::vector<FusedObject>(const std::vector<int>& group)>& fit);
+
 /// The fused balls after refitting every group of two or more nearby balls (and single balls whose
 /// observations disagree); each result lists the observations assigned to it (an observation may
 /// be listed by several balls).

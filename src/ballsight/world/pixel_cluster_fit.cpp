@@ -353,6 +353,149 @@ std::vector<std::vector<int>> fit_groups(
   });
 }
 
+// The views of one group: one per blob its observations `members` come from, where balls outside
+// the group cover their share (`visible`) and the robot hides pixels (`hidden`).
+std::vector<View> group_views(
+    const std::vector<int>& group, const std::vector<int>& members,
+    const std::vector<FieldObservation>& observations, const std::vector<FusedObject>& balls,
+    const std::vector<std::optional<std::vector<PixelDetection>>>& detections, double ball_radius_m,
+    const PixelFitOptions& options, const HiddenPixel& hidden) {
+  std::vector<View> views;
+  for (int m : members) {
+    const FieldObservation& o = observations[static_cast<size_t>(m)];
+    const PixelDetection* found = detection_of(o, detections);
+    if (!found || found->patch.width == 0) continue;
+    const PixelDetection& d = *found;
+    if (std::any_of(views.begin(), views.end(), [&](const View& v) {
+          return v.camera == o.camera && v.patch->blob == d.patch.blob;
+        }))
+      continue;
+    View v;
+    v.patch = &d.patch;
+    v.camera = o.camera;
+    v.origin_px = d.center_px;
+    v.origin_m = o.position_m;
+    v.pixel_per_plane = o.plane_per_pixel.inverse();
+    const Eigen::JacobiSVD<Eigen::Matrix2d> svd(o.plane_per_pixel);
+    v.radius_px = options.radius_scale * ball_radius_m / svd.singularValues()(1) + options.blur_px;
+    views.push_back(std::move(v));
+  }
+  for (View& v : views) {
+    const CoveragePatch& p = *v.patch;
+    if (hidden) {
+      v.hidden.assign(p.coverage.size(), false);
+      for (int y = 0; y < p.height; ++y)
+        for (int x = 0; x < p.width; ++x)
+          v.hidden[static_cast<size_t>(y * p.width + x)] = hidden(v.camera, Vec2(p.x + x, p.y + y));
+    }
+    v.visible.assign(p.coverage.size(), 1.0f);
+    for (size_t b = 0; b < balls.size(); ++b) {
+      if (std::find(group.begin(), group.end(), static_cast<int>(b)) != group.end()) continue;
+      const Vec2 q = v.pixel(balls[b].position_m);
+      if ((q - v.origin_px).norm() > p.width + p.height + v.radius_px) continue;
+      for (int y = 0; y < p.height; ++y)
+        for (int x = 0; x < p.width; ++x)
+          v.visible[static_cast<size_t>(y * p.width + x)] *= static_cast<float>(
+              1.0 - disc_share((Vec2(p.x + x, p.y + y) - q).norm(), v.radius_px));
+    }
+  }
+  return views;
+}
+
+// The balls that explain the views best from `start` (the fusion's), balls removed and added
+// while that lowers the cost by more than a ball's penalty; nullopt when the solver found no
+// usable fit.
+std::optional<Hypothesis> best_hypothesis(const CoverageModel& model, Hypothesis start,
+                                          double ball_radius_m, const PixelFitOptions& options) {
+  Hypothesis best = start;
+  const std::optional<double> fitted = model.fit(best.balls, options.iterations);
+  if (!fitted) return std::nullopt;
+  best.cost = *fitted;
+  const auto remove_unneeded = [&] {
+    while (best.balls.size() > 1) {
+      Hypothesis fewer = with_one_less(model, best, options);
+      if (fewer.cost - best.cost >= options.ball_penalty) break;
+      best = std::move(fewer);
+    }
+  };
+  remove_unneeded();
+  const size_t wanted = start.balls.size() + static_cast<size_t>(options.max_added);
+  const size_t before_adding = best.balls.size();
+  // A further ball lowers the cost by at most all of it.
+  while (best.balls.size() < wanted && best.cost >= options.ball_penalty) {
+    Hypothesis more = with_one_more(model, best, ball_radius_m, options);
+    if (best.cost - more.cost < options.ball_penalty) break;
+    if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
+    best = std::move(more);
+  }
+  // A ball added moves its neighbours; one of them may no longer be needed.
+  if (best.balls.size() > before_adding) remove_unneeded();
+  // The last fit moves the balls a ball added or removed moved; it failing leaves them as the
+  // last usable fit had them.
+  best.cost = model.fit(best.balls, options.iterations).value_or(best.cost);
+  return best;
+}
+
+// One group's balls after the fit (the fusion's where there is nothing to fit).
+std::vector<FusedObject> fit_group(
+    const std::vector<int>& group, const std::vector<FieldObservation>& observations,
+    const std::vector<FusedObject>& balls,
+    const std::vector<std::optional<std::vector<PixelDetection>>>& detections, double ball_radius_m,
+    const PixelFitOptions& options, const HiddenPixel& hidden) {
+  std::vector<int> members;
+  Hypothesis start;
+  bool split = false;
+  std::vector<FusedObject> as_fused;
+  for (int g : group) {
+    const FusedObject& ball = balls[static_cast<size_t>(g)];
+    members.insert(members.end(), ball.observations.begin(), ball.observations.end());
+    start.balls.push_back(ball.position_m);
+    as_fused.push_back(ball);
+    for (int o : ball.observations)
+      split = split || observations[static_cast<size_t>(o)].split_count > 1;
+  }
+  if (group.size() < 2 && !split) return as_fused;
+  std::sort(members.begin(), members.end());
+  members.erase(std::unique(members.begin(), members.end()), members.end());
+  std::vector<View> views =
+      group_views(group, members, observations, balls, detections, ball_radius_m, options, hidden);
+  // One view is enough where a blob was split: its pixels alone say whether it holds the balls
+  // it was split into (a far ball seen by one camera only, split in two along its line of sight).
+  if (views.empty() || (views.size() < 2 && !split)) return as_fused;
+  const CoverageModel model(std::move(views), ball_radius_m, options);
+  const std::optional<Hypothesis> best = best_hypothesis(model, start, ball_radius_m, options);
+  if (!best) return as_fused;  // the solver found no usable solution: the fusion's balls stay
+  const Eigen::MatrixXd information = model.information(best->balls);
+  const Eigen::MatrixXd covariance =
+      model.residual_variance(best->cost, best->balls.size()) *
+      (information + 1e-9 * Eigen::MatrixXd::Identity(information.rows(), information.cols()))
+          .inverse();
+  std::vector<FusedObject> out;
+  for (size_t i = 0; i < best->balls.size(); ++i) {
+    FusedObject object;
+    object.position_m = best->balls[i];
+    object.covariance_m2 =
+        covariance.block<2, 2>(2 * static_cast<Eigen::Index>(i), 2 * static_cast<Eigen::Index>(i));
+    // Its observations: those whose blob's patch its centre falls into.
+    for (int m : members) {
+      const FieldObservation& o = observations[static_cast<size_t>(m)];
+      const int blob = detection_of(o, detections)->patch.blob;
+      const bool inside =
+          std::any_of(model.views().begin(), model.views().end(), [&](const View& v) {
+            return v.camera == o.camera && v.patch->blob == blob &&
+                   v.contains(v.pixel(object.position_m));
+          });
+      if (!inside) continue;
+      object.observations.push_back(m);
+      if (std::find(object.cameras.begin(), object.cameras.end(), o.camera) == object.cameras.end())
+        object.cameras.push_back(o.camera);
+    }
+    std::sort(object.cameras.begin(), object.cameras.end());
+    out.push_back(std::move(object));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<FusedObject> fit_clusters_to_pixels(
@@ -361,137 +504,11 @@ std::vector<FusedObject> fit_clusters_to_pixels(
     const PixelFitOptions& options, const HiddenPixel& hidden) {
   options.validate();
   if (!options.enabled) return balls;
-  std::vector<FusedObject> out;
-  for (const std::vector<int>& group :
-       fit_groups(balls, observations, detections, options.link_distance_radii * ball_radius_m)) {
-    std::vector<int> members;
-    Hypothesis start;
-    bool split = false;
-    for (int g : group) {
-      const FusedObject& ball = balls[static_cast<size_t>(g)];
-      members.insert(members.end(), ball.observations.begin(), ball.observations.end());
-      start.balls.push_back(ball.position_m);
-      for (int o : ball.observations)
-        split = split || observations[static_cast<size_t>(o)].split_count > 1;
-    }
-    std::sort(members.begin(), members.end());
-    members.erase(std::unique(members.begin(), members.end()), members.end());
-    const auto keep_group = [&] {
-      for (int g : group) out.push_back(balls[static_cast<size_t>(g)]);
-    };
-    if (group.size() < 2 && !split) {
-      keep_group();
-      continue;
-    }
-    // One view per blob the group's observations come from.
-    std::vector<View> views;
-    for (int m : members) {
-      const FieldObservation& o = observations[static_cast<size_t>(m)];
-      const PixelDetection* found = detection_of(o, detections);
-      if (!found || found->patch.width == 0) continue;
-      const PixelDetection& d = *found;
-      if (std::any_of(views.begin(), views.end(), [&](const View& v) {
-            return v.camera == o.camera && v.patch->blob == d.patch.blob;
-          }))
-        continue;
-      View v;
-      v.patch = &d.patch;
-      v.camera = o.camera;
-      v.origin_px = d.center_px;
-      v.origin_m = o.position_m;
-      v.pixel_per_plane = o.plane_per_pixel.inverse();
-      const Eigen::JacobiSVD<Eigen::Matrix2d> svd(o.plane_per_pixel);
-      v.radius_px =
-          options.radius_scale * ball_radius_m / svd.singularValues()(1) + options.blur_px;
-      views.push_back(std::move(v));
-    }
-    // One view is enough where a blob was split: its pixels alone say whether it holds the balls
-    // it was split into (a far ball seen by one camera only, split in two along its line of sight).
-    if (views.empty() || (views.size() < 2 && !split)) {
-      keep_group();
-      continue;
-    }
-    // Balls outside the group that fall into its patches cover their share there.
-    for (View& v : views) {
-      const CoveragePatch& p = *v.patch;
-      if (hidden) {
-        v.hidden.assign(p.coverage.size(), false);
-        for (int y = 0; y < p.height; ++y)
-          for (int x = 0; x < p.width; ++x)
-            v.hidden[static_cast<size_t>(y * p.width + x)] =
-                hidden(v.camera, Vec2(p.x + x, p.y + y));
-      }
-      v.visible.assign(p.coverage.size(), 1.0f);
-      for (size_t b = 0; b < balls.size(); ++b) {
-        if (std::find(group.begin(), group.end(), static_cast<int>(b)) != group.end()) continue;
-        const Vec2 q = v.pixel(balls[b].position_m);
-        if ((q - v.origin_px).norm() > p.width + p.height + v.radius_px) continue;
-        for (int y = 0; y < p.height; ++y)
-          for (int x = 0; x < p.width; ++x)
-            v.visible[static_cast<size_t>(y * p.width + x)] *= static_cast<float>(
-                1.0 - disc_share((Vec2(p.x + x, p.y + y) - q).norm(), v.radius_px));
-      }
-    }
-    const CoverageModel model(std::move(views), ball_radius_m, options);
-    Hypothesis best = start;
-    const std::optional<double> fitted = model.fit(best.balls, options.iterations);
-    if (!fitted) {  // the solver found no usable solution: the fusion's balls stay
-      keep_group();
-      continue;
-    }
-    best.cost = *fitted;
-    const auto remove_unneeded = [&] {
-      while (best.balls.size() > 1) {
-        Hypothesis fewer = with_one_less(model, best, options);
-        if (fewer.cost - best.cost >= options.ball_penalty) break;
-        best = std::move(fewer);
-      }
-    };
-    remove_unneeded();
-    const size_t wanted = start.balls.size() + static_cast<size_t>(options.max_added);
-    const size_t before_adding = best.balls.size();
-    // A further ball lowers the cost by at most all of it.
-    while (best.balls.size() < wanted && best.cost >= options.ball_penalty) {
-      Hypothesis more = with_one_more(model, best, ball_radius_m, options);
-      if (best.cost - more.cost < options.ball_penalty) break;
-      if (min_separation(more.balls) < options.min_separation_radii * ball_radius_m) break;
-      best = std::move(more);
-    }
-    // A ball added moves its neighbours; one of them may no longer be needed.
-    if (best.balls.size() > before_adding) remove_unneeded();
-    // The last fit moves the balls a ball added or removed moved; it failing leaves them as the
-    // last usable fit had them.
-    const double cost = model.fit(best.balls, options.iterations).value_or(best.cost);
-    const Eigen::MatrixXd information = model.information(best.balls);
-    const Eigen::MatrixXd covariance =
-        model.residual_variance(cost, best.balls.size()) *
-        (information + 1e-9 * Eigen::MatrixXd::Identity(information.rows(), information.cols()))
-            .inverse();
-    for (size_t i = 0; i < best.balls.size(); ++i) {
-      FusedObject object;
-      object.position_m = best.balls[i];
-      object.covariance_m2 = covariance.block<2, 2>(2 * static_cast<Eigen::Index>(i),
-                                                    2 * static_cast<Eigen::Index>(i));
-      // Its observations: those whose blob's patch its centre falls into.
-      for (int m : members) {
-        const FieldObservation& o = observations[static_cast<size_t>(m)];
-        const int blob = detection_of(o, detections)->patch.blob;
-        const bool inside =
-            std::any_of(model.views().begin(), model.views().end(), [&](const View& v) {
-              return v.camera == o.camera && v.patch->blob == blob &&
-                     v.contains(v.pixel(object.position_m));
-            });
-        if (!inside) continue;
-        object.observations.push_back(m);
-        if (std::find(object.cameras.begin(), object.cameras.end(), o.camera) ==
-            object.cameras.end())
-          object.cameras.push_back(o.camera);
-      }
-      std::sort(object.cameras.begin(), object.cameras.end());
-      out.push_back(std::move(object));
-    }
-  }
-  return out;
+  return fit_groups_in_parallel(
+      fit_groups(balls, observations, detections, options.link_distance_radii * ball_radius_m),
+      [&](const std::vector<int>& group) {
+        return fit_group(group, observations, balls, detections, ball_radius_m, options, hidden);
+      });
 }
 
 }  // namespace ballsight

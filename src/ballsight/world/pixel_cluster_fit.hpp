@@ -50,7 +50,8 @@ using HiddenPixel = std::function<bool(int camera, const Vec2& pixel)>;
 /// fewer balls than it has (several balls, or a blob split in parts) to the coverage patches of
 /// its observations' detections; `detections[c]` are camera c's (nullopt: no frame), indexed by
 /// FieldObservation::camera and ::detection. Patch pixels `hidden` (if given) are left out of the
-/// fit. Other groups are returned unchanged.
+/// fit. Other groups are returned unchanged. The groups are fitted side by side
+/// (fit_groups_in_parallel): `hidden` is called from several threads at once.
 std::vector<FusedObject> fit_clusters_to_pixels(
     const std::vector<FieldObservation>& observations, const std::vector<FusedObject>& balls,
     const std::vector<std::optional<std::vector<PixelDetection>>>& detections, double ball_radius_m,
