@@ -25,6 +25,7 @@
 #include <boost/beast/websocket.hpp>
 #include <thread>
 
+#include "ballsight/net/api.hpp"
 #include "ballsight/net/http_robot_link.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "ballsight/net/service_api.hpp"
@@ -49,7 +50,7 @@ struct LocalService {
     o.port = 0;
     o.token = kToken;
     o.client_queue = 4096;
-    server = std::make_unique<HttpServer>(o, api_v1_routes(context), context);
+    server = std::make_unique<HttpServer>(o, api_v1_routes(context));
   }
   ApiContext context;
   std::unique_ptr<HttpServer> server;
@@ -193,7 +194,7 @@ void BM_WholeChain(benchmark::State& state, bool at_10_hz) {
   HttpServerOptions o;
   o.port = 0;
   o.token = kToken;
-  HttpServer server(o, api_v1_routes(context), context);
+  HttpServer server(o, api_v1_routes(context));
   HttpRobotLink link(link_to(server.port()));
   std::atomic<bool> stop{false};
   std::thread loop([&] { simulated.run(hub, stop); });

@@ -53,10 +53,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   request.authorized = size > 0 && (data[0] & 1) != 0;
   const ApiResponse response = handle_api(request, context);
   check(response);
-  if (response.wait_after) {
-    if (const std::optional<ApiResponse> answer = poll_answer(*response.wait_after, context)) {
-      check(*answer);
-    }
+  if (response.retry) {
+    if (const std::optional<ApiResponse> answer = response.retry()) check(*answer);
   }
   const auto subscription = stream_subscription(request, context);
   if (const auto* refusal = std::get_if<ApiResponse>(&subscription)) check(*refusal);

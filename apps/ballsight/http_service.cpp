@@ -119,7 +119,7 @@ HttpService::HttpService(const HttpServiceArgs& args, CourtService& service, Nav
   ApiRoutes routes = api_v1_routes(context_);
   omni_.register_routes(routes);
   court_calibration_.register_routes(routes);
-  http_ = std::make_unique<HttpServer>(options, std::move(routes), context_);
+  http_ = std::make_unique<HttpServer>(options, std::move(routes));
   server_ = http_.get();
   std::cout << program << ": http://" << options.address << ":" << http_->port()
             << "/api/v1/ (token in " << args.token_file << ")" << std::endl;

@@ -9,6 +9,7 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/websocket.hpp>
 
+#include "ballsight/net/api.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "sample_update.hpp"
 
@@ -108,7 +109,7 @@ TEST(Foxglove, TheServiceSpeaksItOnItsOwnPort) {
   HttpServerOptions options;
   options.port = 0;
   options.token = "0123456789abcdef0123";
-  HttpServer server(options, api_v1_routes(context), context);
+  HttpServer server(options, api_v1_routes(context));
   asio::io_context io;
   websocket::stream<asio::ip::tcp::socket> ws(io);
   ws.next_layer().connect({asio::ip::make_address("127.0.0.1"), server.port()});

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/net/api.hpp"
 #include "ballsight/net/calibration/omni_calibration_api.hpp"
 #include "sample_update.hpp"
 
@@ -34,7 +35,7 @@ struct Service {
   ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
   HttpServer server;
 
-  explicit Service(HttpServerOptions options = with_token()) : server(options, routes(), context) {}
+  explicit Service(HttpServerOptions options = with_token()) : server(options, routes()) {}
   ApiRoutes routes() {
     ApiRoutes r = api_v1_routes(context);
     omni.register_routes(r);
@@ -213,7 +214,7 @@ TEST(HttpServer, AnAddressThatCannotBeBoundIsAnError) {
   bad.address = "not-an-address";
   NavigationHub hub;
   ApiContext context{hub, {}, SiteCourt{}, 0.0335};
-  EXPECT_THROW({ HttpServer server(bad, api_v1_routes(context), context); }, InputError);
+  EXPECT_THROW({ HttpServer server(bad, api_v1_routes(context)); }, InputError);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/net/api.hpp"
 #include "ballsight/net/http_robot_link.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "sample_update.hpp"
@@ -42,7 +43,7 @@ class RobotLinkTransports : public testing::TestWithParam<bool> {};
 TEST_P(RobotLinkTransports, EveryUpdateOnceInOrderAndWritesReachTheService) {
   NavigationHub hub;
   ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
-  HttpServer server(server_options(), api_v1_routes(context), context);
+  HttpServer server(server_options(), api_v1_routes(context));
   hub.publish(update(0.5));
   HttpRobotLink link(link_options(server.port(), GetParam()));
   const std::optional<LinkUpdate> first = link.next(milliseconds(5000));
@@ -75,7 +76,7 @@ TEST_P(RobotLinkTransports, EveryUpdateOnceInOrderAndWritesReachTheService) {
 TEST_P(RobotLinkTransports, ResumesAfterTheServiceComesBackAndFollowsANewRun) {
   NavigationHub hub;
   ApiContext context{hub, {"ne"}, SiteCourt{}, 0.0335};
-  auto server = std::make_unique<HttpServer>(server_options(), api_v1_routes(context), context);
+  auto server = std::make_unique<HttpServer>(server_options(), api_v1_routes(context));
   const unsigned short port = server->port();
   hub.publish(update(0));
   HttpRobotLink link(link_options(port, GetParam()));
@@ -86,7 +87,7 @@ TEST_P(RobotLinkTransports, ResumesAfterTheServiceComesBackAndFollowsANewRun) {
   server.reset();
   for (int k = 0; k < 5; ++k) hub.publish(update(k));
   std::this_thread::sleep_for(milliseconds(100));
-  server = std::make_unique<HttpServer>(server_options(port), api_v1_routes(context), context);
+  server = std::make_unique<HttpServer>(server_options(port), api_v1_routes(context));
   EXPECT_EQ(test::take(link, 5), test::seq_range(6, 10));  // nothing lost, nothing twice
   EXPECT_GE(link.status().reconnects, 1);
   // A new run of the service (its seq begins again) is followed from its latest update.
@@ -94,7 +95,7 @@ TEST_P(RobotLinkTransports, ResumesAfterTheServiceComesBackAndFollowsANewRun) {
   NavigationHub restarted;
   ApiContext context2{restarted, {"ne"}, SiteCourt{}, 0.0335};
   restarted.publish(update(0));
-  server = std::make_unique<HttpServer>(server_options(port), api_v1_routes(context2), context2);
+  server = std::make_unique<HttpServer>(server_options(port), api_v1_routes(context2));
   const std::optional<LinkUpdate> u = link.next(milliseconds(5000));
   ASSERT_TRUE(u);
   EXPECT_EQ(u->seq, 1u);

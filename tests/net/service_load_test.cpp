@@ -14,6 +14,7 @@
 #include <boost/beast/websocket.hpp>
 #include <thread>
 
+#include "ballsight/net/api.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "wait_until.hpp"
 
@@ -80,7 +81,7 @@ TEST(ServiceLoad, HundredClientsAtThirtyHertzGetEveryUpdateAndAStalledOneHoldsUp
   HttpServerOptions options;
   options.port = 0;
   options.token = "0123456789abcdef0123";
-  HttpServer server(options, api_v1_routes(context), context);
+  HttpServer server(options, api_v1_routes(context));
 
   // The stalled client: a WebSocket that never reads, with a small receive buffer.
   asio::io_context stalled_io;

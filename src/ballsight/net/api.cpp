@@ -11,6 +11,7 @@
 #include "ballsight/core/base64.hpp"
 #include "ballsight/core/csv_fields.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/net/api_channels.hpp"
 #include "ballsight/net/api_request.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 #include "ballsight/pipeline/world_model_json.hpp"
@@ -170,7 +171,7 @@ ApiResponse navigation_route(const ApiRequest&, const std::string& query, const 
                                             static_cast<std::uint64_t>(c.max_wait.count()));
   if (std::optional<ApiResponse> answer = poll_answer(after, c)) return std::move(*answer);
   ApiResponse pending{204, ""};
-  pending.wait_after = after;
+  pending.retry = [after, &c] { return poll_answer(after, c); };
   pending.wait = std::chrono::milliseconds(static_cast<std::int64_t>(wait));
   return pending;
 }
@@ -459,6 +460,7 @@ ApiRoutes api_v1_routes(const ApiContext& context) {
   ApiRoutes routes;
   routes.add({.prefix = "/api/v1/", .handler = answer});
   routes.add({.prefix = "/api/v1/cameras/", .handler = answer, .runs_long = true});
+  add_api_v1_channels(routes, context);
   return routes;
 }
 

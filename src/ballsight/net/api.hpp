@@ -47,8 +47,9 @@ struct ApiContext {
 /// Answers one request without waiting. Never throws for anything a client sends.
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& context);
 /// API v1 on `context` (which must outlive them) as the routes of a service: /api/v1/, and the
-/// camera views (/api/v1/cameras/), which encode a frame and so run long. The calibration pages'
-/// APIs add their own (calibration/).
+/// camera views (/api/v1/cameras/), which encode a frame and so run long; the stream's and
+/// Foxglove's WebSocket channels and the hub's publications (api_channels.hpp). The calibration
+/// pages' APIs add their own (calibration/).
 ApiRoutes api_v1_routes(const ApiContext& context);
 /// A waiting long-poll's answer: the first update newer than `after`; nullopt while none is.
 std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& context);

@@ -48,4 +48,16 @@ bool ApiRoutes::runs_long(const std::string& target) const {
   return route && route->runs_long;
 }
 
+void ApiRoutes::add_websocket(WebSocketOpener opener) {
+  require(static_cast<bool>(opener), "WebSocket opener", "is empty");
+  openers_.push_back(std::move(opener));
+}
+
+std::variant<WebSocketOpened, ApiResponse> ApiRoutes::open_websocket(
+    const ApiRequest& request, const std::string& subprotocols) const {
+  for (const WebSocketOpener& open : openers_)
+    if (auto opened = open(request, subprotocols)) return std::move(*opened);
+  return api_error(404, "no WebSocket here", split_target(request.target).path);
+}
+
 }  // namespace ballsight

@@ -1,15 +1,18 @@
 #pragma once
 // What passes between the transport (http_server.hpp) and the API modules (API v1, api.hpp; the
-// calibration pages' APIs, calibration/): a request, its answer, and the routes by which a module
-// says which requests are its own. The transport parses the wire and asks the routes; it names no
-// API.
+// calibration pages' APIs, calibration/): a request, its answer, the WebSocket channels a module
+// holds, and the routes by which a module says which requests and upgrades are its own and when it
+// has published something. The transport parses the wire and asks the routes; it names no API.
 
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace ballsight {
@@ -28,10 +31,10 @@ struct ApiResponse {
   int status;
   std::string body;  // JSON (or a web page's file: content_type), or empty for 204
   std::string content_type = "application/json";
-  /// A long-poll with nothing newer than `wait_after` yet: the transport waits up to `wait` for
-  /// an update, then answers with API v1's `poll_answer` (api.hpp; 204 when none came). Empty:
-  /// answer now.
-  std::optional<std::uint64_t> wait_after;
+  /// A long-poll with nothing to say yet: after each publication (ApiRoutes::events) the
+  /// transport asks `retry` again, up to `wait`, and answers with the first answer it gives (this
+  /// response, a 204, when none came). Empty: answer now.
+  std::function<std::optional<ApiResponse>()> retry;
   std::chrono::milliseconds wait{0};
 };
 
@@ -52,6 +55,65 @@ struct ApiModuleRoute {
   bool runs_long = false;
 };
 
+/// One message to a WebSocket client, text or binary, shared by the clients that get the same.
+struct ClientMessage {
+  std::shared_ptr<const std::string> data;
+  bool binary = false;
+};
+using ClientMessages = std::vector<ClientMessage>;
+
+/// What one publication (or one health tick) makes for its clients, made once and shared by
+/// every channel that asks for the same key.
+class SharedMessages {
+ public:
+  template <class T>
+  const T& get(const std::string& key, const std::function<T()>& make) {
+    std::shared_ptr<const void>& kept = kept_[key];
+    if (!kept) kept = std::make_shared<const T>(make());
+    return *static_cast<const T*>(kept.get());
+  }
+
+ private:
+  std::map<std::string, std::shared_ptr<const void>> kept_;
+};
+
+/// A WebSocket client's conversation, held by the API module that accepted it. The transport
+/// carries its messages (a bounded queue per client: a client that reads too slowly loses its
+/// oldest) and calls it on its I/O thread only.
+class WebSocketChannel {
+ public:
+  virtual ~WebSocketChannel() = default;
+  /// What the health document's client list calls it ("stream", "foxglove").
+  virtual std::string kind() const = 0;
+  /// What the client gets as soon as it is connected.
+  virtual ClientMessages greeting() = 0;
+  /// The answer to a text message of the client.
+  virtual ClientMessages on_text(const std::string& message) = 0;
+  /// What is new for the client after a publication (ApiRoutes::events).
+  virtual ClientMessages on_publish(SharedMessages& shared) = 0;
+  /// What the client gets once a second.
+  virtual ClientMessages on_tick(SharedMessages& shared) = 0;
+};
+
+/// A channel for an upgrade request, with the subprotocol it speaks ("" for none).
+struct WebSocketOpened {
+  std::unique_ptr<WebSocketChannel> channel;
+  std::string subprotocol;
+};
+/// Opens a channel for an upgrade request (`subprotocols`: the client's Sec-WebSocket-Protocol
+/// offer, comma-separated): the channel, the 4xx answer to refuse the upgrade with, or nullopt
+/// when the request is not this module's.
+using WebSocketOpener = std::function<std::optional<std::variant<WebSocketOpened, ApiResponse>>(
+    const ApiRequest& request, const std::string& subprotocols)>;
+
+/// How the transport hears that a module published something (a hub's listener): `listen`
+/// registers a callback (called from the publishing thread; it only hands the news over) and
+/// returns an id for `unlisten`.
+struct PublishEvents {
+  std::function<int(std::function<void()>)> listen;
+  std::function<void(int)> unlisten;
+};
+
 /// The routes the API modules registered. A request goes to the route of the longest prefix its
 /// path starts with, so that a module may take a part of another's URLs (/api/v1/omni/ inside
 /// /api/v1/). Filled before serving, then only read (from any thread).
@@ -66,11 +128,25 @@ class ApiRoutes {
   /// Whether the route of `target` (path and query) runs long; false when no route takes it.
   bool runs_long(const std::string& target) const;
 
+  /// A module's WebSocket channels; the openers are asked in the order they were added.
+  void add_websocket(WebSocketOpener opener);
+  /// The channel of the first opener that takes the upgrade request, or the answer refusing it
+  /// (404 when none takes it).
+  std::variant<WebSocketOpened, ApiResponse> open_websocket(const ApiRequest& request,
+                                                            const std::string& subprotocols) const;
+
+  /// Where publications come from (one source: a second replaces the first); empty: none, and
+  /// no channel or long-poll hears of any.
+  void set_events(PublishEvents events) { events_ = std::move(events); }
+  const PublishEvents& events() const { return events_; }
+
  private:
   /// The route of the longest prefix `target`'s path starts with; null when none.
   const ApiModuleRoute* route_of(const std::string& target) const;
 
   std::vector<ApiModuleRoute> routes_;  // longest prefix first
+  std::vector<WebSocketOpener> openers_;
+  PublishEvents events_;
 };
 
 }  // namespace ballsight

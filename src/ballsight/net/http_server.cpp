@@ -25,7 +25,6 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/net/api_request.hpp"
 #include "ballsight/net/bearer_token.hpp"
-#include "ballsight/net/foxglove.hpp"
 #include "ballsight/net/web_files.hpp"
 
 namespace ballsight {
@@ -76,25 +75,23 @@ void guarded(const char* what, Work&& work) {
   }
 }
 
-/// One message for a WebSocket client (shared by every client it goes to).
-struct Outgoing {
-  std::shared_ptr<const std::string> data;
-  bool binary = false;
-};
-
-/// A WebSocket client: its socket, what it asked for, and the messages waiting for it. Touched
-/// on the I/O thread only, but for the counters `clients()` reads.
+/// A WebSocket client: its socket, its channel (what an API module says to it), and the messages
+/// waiting for it. Touched on the I/O thread only, but for the counters `clients()` reads.
 struct Peer {
-  Peer(WebSocket socket, std::uint64_t id_, std::string kind_, std::string remote_,
-       std::size_t limit_)
+  Peer(WebSocket socket, std::uint64_t id_, std::unique_ptr<WebSocketChannel> channel_,
+       std::string remote_, std::size_t limit_)
       : ws(std::move(socket)),
         wake(ws.get_executor()),
         id(id_),
-        kind(std::move(kind_)),
+        channel(std::move(channel_)),
+        kind(channel->kind()),
         remote(std::move(remote_)),
         limit(limit_) {}
 
-  void push(Outgoing message) {
+  void push(ClientMessages messages) {
+    for (ClientMessage& m : messages) push(std::move(m));
+  }
+  void push(ClientMessage message) {
     if (queue.size() >= limit) {
       queue.pop_front();
       ++dropped;
@@ -107,16 +104,14 @@ struct Peer {
   WebSocket ws;
   asio::steady_timer wake;  // cancelled when a message is queued or the client leaves
   const std::uint64_t id;
+  const std::unique_ptr<WebSocketChannel> channel;
   const std::string kind;
   const std::string remote;
   const std::size_t limit;
-  std::deque<Outgoing> queue;
+  std::deque<ClientMessage> queue;
   bool closed = false;
   std::atomic<std::uint64_t> sent{0}, dropped{0};
   std::atomic<std::size_t> queued{0};
-  StreamSubscription subscription;            // kind "stream"
-  std::uint64_t last_seq = 0;                 // the newest update queued for it
-  std::unique_ptr<FoxgloveSession> foxglove;  // kind "foxglove"
 };
 
 }  // namespace
@@ -134,14 +129,12 @@ void HttpServerOptions::validate() const {
 }
 
 struct HttpServer::Impl {
-  Impl(const HttpServerOptions& o, ApiRoutes r, ApiContext& c)
-      : options(o), routes(std::move(r)), context(c) {
+  Impl(const HttpServerOptions& o, ApiRoutes r) : options(o), routes(std::move(r)) {
     if (!o.web_root.empty()) pages.emplace(o.web_root, o.node_modules);
   }
 
   HttpServerOptions options;
   const ApiRoutes routes;
-  ApiContext& context;
   std::optional<WebFiles> pages;
   asio::io_context io{1};
   asio::executor_work_guard<asio::io_context::executor_type> work{io.get_executor()};
@@ -156,7 +149,6 @@ struct HttpServer::Impl {
   std::uint64_t next_id = 1;
   std::map<std::uint64_t, std::function<void()>> closers;  // every open connection
   std::set<asio::steady_timer*> parked;                    // waiting long-polls
-  std::uint64_t broadcast_seq = 0;                         // the newest update sent out
   // Also read by clients():
   mutable std::mutex peers_mutex;
   std::map<std::uint64_t, std::shared_ptr<Peer>> peers;
@@ -164,13 +156,13 @@ struct HttpServer::Impl {
 
   awaitable<void> accept_loop();
   awaitable<void> session(tcp::socket socket, std::uint64_t id);
-  awaitable<ApiResponse> long_poll(std::uint64_t after, std::chrono::milliseconds wait);
+  awaitable<ApiResponse> long_poll(ApiResponse pending);
   awaitable<void> serve_websocket(beast::tcp_stream stream, Request req, std::uint64_t id,
-                                  std::string remote, std::string subprotocol,
-                                  StreamSubscription subscription);
+                                  std::string remote, WebSocketOpened opened);
   awaitable<void> write_loop(std::shared_ptr<Peer> peer);
   awaitable<void> health_loop();
   void broadcast();
+  std::vector<std::shared_ptr<Peer>> open_peers() const;
   void close_all();
 };
 
@@ -191,14 +183,14 @@ awaitable<void> HttpServer::Impl::accept_loop() {
   }
 }
 
-awaitable<ApiResponse> HttpServer::Impl::long_poll(std::uint64_t after,
-                                                   std::chrono::milliseconds wait) {
-  const auto deadline = std::chrono::steady_clock::now() + wait;
+awaitable<ApiResponse> HttpServer::Impl::long_poll(ApiResponse pending) {
+  const auto deadline = std::chrono::steady_clock::now() + pending.wait;
+  const auto retry = std::move(pending.retry);
   asio::steady_timer timer(io);
   parked.insert(&timer);
-  ApiResponse answer{204, ""};
+  ApiResponse answer = std::move(pending);
   while (!stopping) {
-    if (std::optional<ApiResponse> a = poll_answer(after, context)) {
+    if (std::optional<ApiResponse> a = retry()) {
       answer = std::move(*a);
       break;
     }
@@ -274,23 +266,14 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
     if (!local && !options.open_reads && !request.authorized) {
       response = api_error(401, "requests from other hosts need the token", "headers");
     } else if (websocket::is_upgrade(req)) {
-      const std::string foxglove =
-          foxglove_subprotocol(std::string(req[http::field::sec_websocket_protocol]));
-      if (!foxglove.empty()) {
-        co_await serve_websocket(std::move(stream), std::move(req), id, remote, foxglove, {});
+      auto opened =
+          routes.open_websocket(request, std::string(req[http::field::sec_websocket_protocol]));
+      if (auto* channel = std::get_if<WebSocketOpened>(&opened)) {
+        co_await serve_websocket(std::move(stream), std::move(req), id, remote,
+                                 std::move(*channel));
         co_return;
       }
-      if (!is_stream_target(request.target)) {
-        response =
-            api_error(404, "no WebSocket here (the stream is /api/v1/stream)", request.target);
-      } else {
-        auto subscription = stream_subscription(request, context);
-        if (auto* s = std::get_if<StreamSubscription>(&subscription)) {
-          co_await serve_websocket(std::move(stream), std::move(req), id, remote, "", *s);
-          co_return;
-        }
-        response = std::get<ApiResponse>(subscription);
-      }
+      response = std::move(std::get<ApiResponse>(opened));
     } else if (const std::string path = split_target(request.target).path;
                pages && request.method == "GET" && WebFiles::is_page_path(path)) {
       response = pages->get(path);
@@ -300,7 +283,7 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
           asio::use_awaitable);
     } else {
       response = routes.answer(request);
-      if (response.wait_after) response = co_await long_poll(*response.wait_after, response.wait);
+      if (response.retry) response = co_await long_poll(std::move(response));
     }
     stream.expires_after(options.idle_timeout);
     co_await http::async_write(stream, http_answer(response, req.version(), req.keep_alive()),
@@ -312,14 +295,12 @@ awaitable<void> HttpServer::Impl::session(tcp::socket socket, std::uint64_t id) 
 
 awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Request req,
                                                   std::uint64_t id, std::string remote,
-                                                  std::string subprotocol,
-                                                  StreamSubscription subscription) {
+                                                  WebSocketOpened opened) {
   stream.expires_never();  // the WebSocket's own timeout takes over
   beast::error_code ec;
   stream.socket().set_option(asio::socket_base::send_buffer_size(options.client_send_buffer), ec);
-  auto peer = std::make_shared<Peer>(WebSocket(std::move(stream)), id,
-                                     subprotocol.empty() ? "stream" : "foxglove", remote,
-                                     options.client_queue);
+  auto peer = std::make_shared<Peer>(WebSocket(std::move(stream)), id, std::move(opened.channel),
+                                     remote, options.client_queue);
   WebSocket& ws = peer->ws;
   closers[id] = [peer] {
     beast::error_code ignored;
@@ -333,29 +314,15 @@ awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Requ
   timeout.keep_alive_pings = true;
   ws.set_option(timeout);
   ws.read_message_max(options.body_limit);
-  if (!subprotocol.empty()) {
-    ws.set_option(websocket::stream_base::decorator([subprotocol](websocket::response_type& res) {
-      res.set(http::field::sec_websocket_protocol, subprotocol);
-    }));
+  if (!opened.subprotocol.empty()) {
+    ws.set_option(websocket::stream_base::decorator(
+        [subprotocol = opened.subprotocol](websocket::response_type& res) {
+          res.set(http::field::sec_websocket_protocol, subprotocol);
+        }));
   }
   co_await ws.async_accept(req, asio::redirect_error(asio::use_awaitable, ec));
   if (ec) co_return;
-  const auto text = [](std::string s) {
-    return Outgoing{std::make_shared<const std::string>(std::move(s)), false};
-  };
-  if (subprotocol.empty()) {
-    peer->subscription = subscription;
-    peer->last_seq = subscription.after;
-    for (const NavigationUpdate& u : context.hub.all_after(subscription.after)) {
-      if (subscription.navigation) peer->push(text(navigation_message(u, context)));
-      if (subscription.world) peer->push(text(world_message(u, context)));
-      peer->last_seq = u.seq;
-    }
-  } else {
-    peer->foxglove = std::make_unique<FoxgloveSession>(context);
-    for (std::string& m : peer->foxglove->greeting()) peer->push(text(std::move(m)));
-    peer->last_seq = context.hub.latest_seq();
-  }
+  peer->push(peer->channel->greeting());
   {
     const std::lock_guard lock(peers_mutex);
     peers[id] = peer;
@@ -365,18 +332,7 @@ awaitable<void> HttpServer::Impl::serve_websocket(beast::tcp_stream stream, Requ
   while (!peer->closed) {
     co_await ws.async_read(buffer, asio::redirect_error(asio::use_awaitable, ec));
     if (ec) break;
-    if (peer->foxglove && ws.got_text()) {
-      // A new subscription gets the update broadcast() handled last (not the hub's latest,
-      // which broadcast() may be about to send: it would arrive twice).
-      const std::optional<NavigationUpdate> handled =
-          peer->last_seq > 0 ? context.hub.first_after(peer->last_seq - 1) : std::nullopt;
-      FoxgloveOutput out =
-          peer->foxglove->on_text(beast::buffers_to_string(buffer.data()), handled);
-      for (std::string& m : out.text) peer->push(text(std::move(m)));
-      for (std::string& m : out.binary) {
-        peer->push({std::make_shared<const std::string>(std::move(m)), true});
-      }
-    }
+    if (ws.got_text()) peer->push(peer->channel->on_text(beast::buffers_to_string(buffer.data())));
     buffer.consume(buffer.size());
   }
   peer->closed = true;
@@ -393,7 +349,7 @@ awaitable<void> HttpServer::Impl::write_loop(std::shared_ptr<Peer> peer) {
       co_await peer->wake.async_wait(asio::redirect_error(asio::use_awaitable, ec));
       continue;
     }
-    const Outgoing message = std::move(peer->queue.front());
+    const ClientMessage message = std::move(peer->queue.front());
     peer->queue.pop_front();
     peer->queued = peer->queue.size();
     peer->ws.binary(message.binary);
@@ -414,52 +370,24 @@ awaitable<void> HttpServer::Impl::health_loop() {
     beast::error_code ec;
     co_await health_timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
     if (stopping) co_return;
-    std::shared_ptr<const std::string> message;
-    std::vector<std::shared_ptr<Peer>> wanting;
-    {
-      const std::lock_guard lock(peers_mutex);
-      for (const auto& [id, peer] : peers)
-        if (peer->subscription.health && !peer->foxglove) wanting.push_back(peer);
-    }
-    if (wanting.empty()) continue;
-    guarded("the health topic", [&] {
-      message = std::make_shared<const std::string>(health_message(context));
-      for (const auto& peer : wanting) peer->push({message, false});
-    });
+    SharedMessages shared;
+    for (const auto& peer : open_peers())
+      guarded("a client's tick", [&] { peer->push(peer->channel->on_tick(shared)); });
   }
 }
 
-void HttpServer::Impl::broadcast() {
-  const std::vector<NavigationUpdate> updates = context.hub.all_after(broadcast_seq);
-  if (updates.empty()) return;
-  broadcast_seq = updates.back().seq;
+std::vector<std::shared_ptr<Peer>> HttpServer::Impl::open_peers() const {
   std::vector<std::shared_ptr<Peer>> list;
-  {
-    const std::lock_guard lock(peers_mutex);
-    for (const auto& [id, peer] : peers) list.push_back(peer);
-  }
-  for (const NavigationUpdate& u : updates) {
-    std::shared_ptr<const std::string> navigation, world;  // made once, when someone wants them
-    for (const auto& peer : list) {
-      if (peer->closed || u.seq <= peer->last_seq) continue;
-      peer->last_seq = u.seq;
-      if (peer->foxglove) {
-        for (std::string& f : peer->foxglove->frames(u)) {
-          peer->push({std::make_shared<const std::string>(std::move(f)), true});
-        }
-        continue;
-      }
-      if (peer->subscription.navigation) {
-        if (!navigation)
-          navigation = std::make_shared<const std::string>(navigation_message(u, context));
-        peer->push({navigation, false});
-      }
-      if (peer->subscription.world) {
-        if (!world) world = std::make_shared<const std::string>(world_message(u, context));
-        peer->push({world, false});
-      }
-    }
-  }
+  const std::lock_guard lock(peers_mutex);
+  for (const auto& [id, peer] : peers)
+    if (!peer->closed) list.push_back(peer);
+  return list;
+}
+
+void HttpServer::Impl::broadcast() {
+  SharedMessages shared;  // an update's messages are made once, for every client that gets them
+  for (const auto& peer : open_peers())
+    guarded("a client's update", [&] { peer->push(peer->channel->on_publish(shared)); });
   for (asio::steady_timer* timer : parked) timer->cancel();
 }
 
@@ -472,8 +400,8 @@ void HttpServer::Impl::close_all() {
   for (const auto& [id, close] : closing) close();
 }
 
-HttpServer::HttpServer(const HttpServerOptions& options, ApiRoutes routes, ApiContext& context)
-    : impl_(std::make_unique<Impl>(options, std::move(routes), context)) {
+HttpServer::HttpServer(const HttpServerOptions& options, ApiRoutes routes)
+    : impl_(std::make_unique<Impl>(options, std::move(routes))) {
   options.validate();
   beast::error_code ec;
   const auto address = asio::ip::make_address(options.address, ec);
@@ -488,9 +416,8 @@ HttpServer::HttpServer(const HttpServerOptions& options, ApiRoutes routes, ApiCo
           "cannot listen on " + options.address + ":" + std::to_string(options.port) + ": " +
               ec.message());
   Impl& s = *impl_;
-  s.broadcast_seq = context.hub.latest_seq();
-  s.listener =
-      context.hub.add_listener([&s](std::uint64_t) { asio::post(s.io, [&s] { s.broadcast(); }); });
+  if (const PublishEvents& events = s.routes.events(); events.listen)
+    s.listener = events.listen([&s] { asio::post(s.io, [&s] { s.broadcast(); }); });
   asio::co_spawn(s.io, s.accept_loop(), asio::detached);
   asio::co_spawn(s.io, s.health_loop(), asio::detached);
   s.thread = std::thread([&s] { s.io.run(); });
@@ -533,7 +460,7 @@ nlohmann::json clients_json(const std::vector<ClientStats>& clients) {
 void HttpServer::stop() {
   Impl& s = *impl_;
   if (s.stopping.exchange(true)) return;
-  s.context.hub.remove_listener(s.listener);
+  if (const PublishEvents& events = s.routes.events(); events.unlisten) events.unlisten(s.listener);
   asio::post(s.io, [&s] { s.close_all(); });
   s.work.reset();
   s.thread.join();

@@ -1,12 +1,13 @@
 #pragma once
 // The navigation service's HTTP/1.1 and WebSocket server (Boost.Beast, kept inside
 // http_server.cpp: it compiles slowly). One I/O thread serves every connection with coroutines:
-// requests, long-polls parked until an update comes (or their time is up), and WebSocket
-// clients (the stream of API v1, and Foxglove clients, foxglove.hpp) each with a bounded queue of
-// messages: a client that reads too slowly loses its oldest messages (counted in `clients()`),
-// never holds up another client or the pipeline, which only hands the I/O thread a sequence
-// number when it publishes. A request goes to the route an API module registered (api_routes.hpp),
-// on a worker thread when the route runs long. Requests are bounded (body, header, idle time,
+// requests, long-polls parked until a publication answers them (or their time is up), and
+// WebSocket clients, each with a bounded queue of messages: a client that reads too slowly loses
+// its oldest messages (counted in `clients()`), never holds up another client or the publisher,
+// which only tells the I/O thread that something was published. What is said is the API modules'
+// (api_routes.hpp): a request goes to the route a module registered (on a worker thread when the
+// route runs long), an upgrade to the channel a module opens, and a publication to every channel
+// and parked long-poll. The server names no API. Requests are bounded (body, header, idle time,
 // connections); the bearer token decides whether a request may write, and whether a client on
 // another host may read.
 
@@ -18,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "ballsight/net/api.hpp"
+#include "ballsight/net/api_routes.hpp"
 
 namespace ballsight {
 
@@ -59,11 +60,9 @@ nlohmann::json clients_json(const std::vector<ClientStats>& clients);
 
 class HttpServer {
  public:
-  /// Binds and starts serving: every request by `routes` (whose modules must outlive the server).
-  /// API v1's stream and long-polls wait on `context`'s hub here (as do Foxglove's clients), so
-  /// the server takes API v1's context too (it must outlive the server). Throws InputError when
-  /// the address cannot be bound.
-  HttpServer(const HttpServerOptions& options, ApiRoutes routes, ApiContext& context);
+  /// Binds and starts serving: every request, upgrade and publication by `routes` (whose modules
+  /// must outlive the server). Throws InputError when the address cannot be bound.
+  HttpServer(const HttpServerOptions& options, ApiRoutes routes);
   ~HttpServer();
   HttpServer(const HttpServer&) = delete;
   HttpServer& operator=(const HttpServer&) = delete;

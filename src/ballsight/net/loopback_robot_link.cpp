@@ -24,7 +24,7 @@ RobotLinkOptions loopback_client(unsigned short port, const std::string& token) 
 LoopbackServer::LoopbackServer(CourtService& service, NavigationHub& hub)
     : context(api_context(service, hub)),
       token(random_hex(32)),
-      server(loopback_server(token), api_v1_routes(context), context) {}
+      server(loopback_server(token), api_v1_routes(context)) {}
 
 LoopbackRobotLink::LoopbackRobotLink(CourtService& service, NavigationHub& hub)
     : LoopbackServer(service, hub), HttpRobotLink(loopback_client(server.port(), token)) {}
