@@ -8,10 +8,15 @@
 #include <stdexcept>
 #include <thread>
 
+#include "wait_until.hpp"
+
 namespace ballsight {
 namespace {
 
+// Each test's rounds run under a deadline: a round that never ends fails the program, not ctest's
+// timeout.
 TEST(CameraWorkers, EveryJobRunsOnItsOwnLongLivedThreadRoundAfterRound) {
+  const test::Deadline deadline("50 rounds of four camera workers");
   CameraWorkers workers(4);
   std::vector<std::thread::id> first(4), later(4);
   std::vector<int> runs(4, 0);
@@ -34,6 +39,7 @@ TEST(CameraWorkers, EveryJobRunsOnItsOwnLongLivedThreadRoundAfterRound) {
 }
 
 TEST(CameraWorkers, AJobsExceptionReachesTheCallerAndTheWorkersGoOn) {
+  const test::Deadline deadline("two rounds of two camera workers, one failing");
   CameraWorkers workers(2);
   int ran = 0;
   EXPECT_THROW(workers.run({[] { throw std::runtime_error("camera 0 failed"); }, [&] { ++ran; }}),
@@ -44,6 +50,7 @@ TEST(CameraWorkers, AJobsExceptionReachesTheCallerAndTheWorkersGoOn) {
 }
 
 TEST(CameraWorkers, CallsFromSeveralThreadsTakeTurns) {
+  const test::Deadline deadline("100 rounds from four callers");
   CameraWorkers workers(2);
   std::atomic<int> total{0};
   std::vector<std::thread> callers;
