@@ -68,10 +68,12 @@ struct DistributedCourt {
       : domain(court_domain),
         seed(court_seed),
         log_dir(dir),
+        // Deep enough that the last set's route is still kept when the test replays every set
+        // in one process, which on a loaded machine takes minutes while the court publishes on.
         estimates(std::make_unique<dds::Reader<dds::BallArrayMsg>>(
-            participant, domain.ns + "/ball_estimates", dds::TopicQos{true, 100})),
+            participant, domain.ns + "/ball_estimates", dds::TopicQos{true, 2000})),
         route(std::make_unique<dds::Reader<dds::PathMsg>>(participant, domain.ns + "/route",
-                                                          dds::TopicQos{true, 100})),
+                                                          dds::TopicQos{true, 2000})),
         court(BALLSIGHT_CLI, node_args("court-node", domain, seed, {"--camera-nodes"}),
               dir / ("court" + std::to_string(seed) + ".log")) {
     for (int k = 0; k < 4; ++k) cameras.push_back(start_camera(k));

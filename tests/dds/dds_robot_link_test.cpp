@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <memory>
-#include <thread>
 
 #include "ballsight/dds/court_topics.hpp"
 #include "ballsight/dds/robot_reports.hpp"
@@ -61,10 +60,7 @@ TEST(DdsRobotLink, EveryUpdateOnceInOrderAndReportsReachTheHub) {
   EXPECT_EQ(first->capture_time_ns, published.capture_time_ns);
   EXPECT_EQ(first->published_ns, published.published_ns);
   EXPECT_GE(first->received_ns, first->published_ns);
-  for (int k = 0; k < 30; ++k) {
-    court.hub.publish(update(k));
-    std::this_thread::sleep_for(milliseconds(2));
-  }
+  for (int k = 0; k < 30; ++k) court.hub.publish(update(k));  // back to back
   EXPECT_EQ(test::take(link, 30, milliseconds(10000)), test::seq_range(2, 31));
   EXPECT_EQ(link.status().transport, "dds");
   EXPECT_TRUE(link.status().connected);

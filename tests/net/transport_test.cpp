@@ -12,6 +12,7 @@
 #include "ballsight/net/api_request.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "http_request.hpp"
+#include "wait_until.hpp"
 
 namespace ballsight {
 namespace {
@@ -41,6 +42,7 @@ class EchoChannel : public WebSocketChannel {
 
 struct EchoModule {
   std::atomic<int> published{0};
+  std::atomic<int> asked{0};       // requests its route answered
   std::function<void()> listener;  // the server's, while it listens
   int unlistened = 0;
 
@@ -51,6 +53,7 @@ struct EchoModule {
   ApiRoutes routes() {
     ApiRoutes r;
     r.add({.prefix = "/echo/", .handler = [this](const ApiRequest&) {
+             ++asked;
              if (std::optional<ApiResponse> now = news()) return *now;
              ApiResponse pending{204, ""};
              pending.retry = [this] { return news(); };
@@ -60,7 +63,9 @@ struct EchoModule {
     r.add_websocket(
         [](const ApiRequest& request,
            const std::string&) -> std::optional<std::variant<WebSocketOpened, ApiResponse>> {
-          if (split_target(request.target).path != "/echo/ws") return std::nullopt;
+          const std::string path = split_target(request.target).path;
+          if (path == "/echo/closed") return api_error(403, "closed today", path);
+          if (path != "/echo/ws") return std::nullopt;
           return WebSocketOpened{std::make_unique<EchoChannel>(), ""};
         });
     r.set_events({[this](std::function<void()> f) {
@@ -107,6 +112,9 @@ TEST(HttpServer, CarriesAModuleOfItsOwnRoutesChannelsAndPublications) {
   auto poll = std::async(std::launch::async, [&] {
     return test::request(server.port(), beast::http::verb::get, "/echo/news");
   });
+  ASSERT_TRUE(test::wait_until([&] { return module.asked == 1; }, 10s)) << "the poll never came";
+  // Parked now: the route answered 204 with a retry, and the I/O thread parks it before it
+  // handles the publication below (both happen on it, in turn).
   EXPECT_EQ(poll.wait_for(200ms), std::future_status::timeout) << "answered before the news";
   module.publish();
   ASSERT_EQ(poll.wait_for(10s), std::future_status::ready) << "the parked poll was not woken";
@@ -115,20 +123,24 @@ TEST(HttpServer, CarriesAModuleOfItsOwnRoutesChannelsAndPublications) {
   EXPECT_EQ(reply.body["published"], 1);
   EXPECT_EQ(read_text(ws), "published");
 
-  // An upgrade no module takes.
-  asio::ip::tcp::socket other(io);
-  other.connect({asio::ip::make_address("127.0.0.1"), server.port()});
-  beast::http::request<beast::http::empty_body> upgrade{beast::http::verb::get, "/elsewhere", 11};
-  upgrade.set(beast::http::field::host, "127.0.0.1");
-  upgrade.set(beast::http::field::connection, "Upgrade");
-  upgrade.set(beast::http::field::upgrade, "websocket");
-  upgrade.set(beast::http::field::sec_websocket_key, "dGhlIHNhbXBsZSBub25jZQ==");
-  upgrade.set(beast::http::field::sec_websocket_version, "13");
-  beast::http::write(other, upgrade);
-  beast::flat_buffer buffer;
-  beast::http::response<beast::http::string_body> refusal;
-  beast::http::read(other, buffer, refusal);
-  EXPECT_EQ(refusal.result_int(), 404) << refusal.body();
+  // An upgrade no module takes, and one its module refuses.
+  const auto upgrade_status = [&](const std::string& target) {
+    asio::ip::tcp::socket other(io);
+    other.connect({asio::ip::make_address("127.0.0.1"), server.port()});
+    beast::http::request<beast::http::empty_body> upgrade{beast::http::verb::get, target, 11};
+    upgrade.set(beast::http::field::host, "127.0.0.1");
+    upgrade.set(beast::http::field::connection, "Upgrade");
+    upgrade.set(beast::http::field::upgrade, "websocket");
+    upgrade.set(beast::http::field::sec_websocket_key, "dGhlIHNhbXBsZSBub25jZQ==");
+    upgrade.set(beast::http::field::sec_websocket_version, "13");
+    beast::http::write(other, upgrade);
+    beast::flat_buffer buffer;
+    beast::http::response<beast::http::string_body> answer;
+    beast::http::read(other, buffer, answer);
+    return answer.result_int();
+  };
+  EXPECT_EQ(upgrade_status("/elsewhere"), 404);
+  EXPECT_EQ(upgrade_status("/echo/closed"), 403);
 
   server.stop();
   EXPECT_EQ(module.unlistened, 1);

@@ -124,10 +124,16 @@ test("the dashboard in Chromium", { timeout: 240_000 }, async (t) => {
   });
 
   let errorsBeforeStop = [];
-  await t.test("says so when the service goes away", async () => {
+  await t.test("says so when the service goes away, and asks for no camera view meanwhile", async () => {
     errorsBeforeStop = [...pageErrors];
     await stop(service.child);
     await until(async () => /^reconnecting/.test(await page.textContent("#connection")), "reconnecting");
+    // Every refused request is one error or more: none may come while the page waits, for two
+    // of its camera periods (2 s each).
+    const views = () => pageErrors.filter((e) => e.includes("/view")).length;
+    const before = views();
+    await new Promise((resolve) => setTimeout(resolve, 4500));
+    assert.equal(views(), before, "camera views asked for while the service was away");
   });
 
   // Requests in flight or just started when the service stopped fail (the stream, a camera's

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
 #include "field_cameras.hpp"
 
 namespace ballsight {
@@ -56,6 +61,33 @@ TEST(ClusterRefinement, NeedlessBallsAreRemoved) {
   ASSERT_EQ(refined.size(), 1u);
   EXPECT_LT((refined[0].position_m - a.head<2>()).norm(), 0.005);
   EXPECT_EQ(refined[0].cameras, (std::vector<int>{0, 1, 2, 3}));
+}
+
+// Groups fitted side by side come back in the groups' order however long each takes, every
+// group once; a group's failure reaches the caller.
+TEST(ClusterRefinement, GroupsFittedSideBySideKeepTheirOrder) {
+  std::vector<std::vector<int>> groups;
+  for (int g = 0; g < 12; ++g) groups.push_back({g, 100 + g});
+  std::atomic<int> calls{0};
+  const std::vector<FusedObject> out =
+      fit_groups_in_parallel(groups, [&](const std::vector<int>& group) {
+        ++calls;  // the early groups take longest: a fit's end says nothing of its place
+        std::this_thread::sleep_for(std::chrono::milliseconds(12 - group[0]));
+        std::vector<FusedObject> objects(2);
+        objects[0].position_m = Vec2(group[0], 0);
+        objects[1].position_m = Vec2(group[1], 0);
+        return objects;
+      });
+  EXPECT_EQ(calls, 12);
+  ASSERT_EQ(out.size(), 24u);
+  for (std::size_t k = 0; k < out.size(); ++k)
+    EXPECT_EQ(out[k].position_m.x(), static_cast<double>(k % 2 == 0 ? k / 2 : 100 + k / 2)) << k;
+  EXPECT_THROW(fit_groups_in_parallel(groups,
+                                      [](const std::vector<int>& group) {
+                                        if (group[0] == 5) throw std::runtime_error("group 5");
+                                        return std::vector<FusedObject>{};
+                                      }),
+               std::runtime_error);
 }
 
 }  // namespace

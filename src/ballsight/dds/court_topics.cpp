@@ -9,7 +9,9 @@ namespace ballsight::dds {
 namespace {
 
 const TopicQos kLatest{true, 1};       // transient-local, keep last 1
-constexpr std::uint64_t kBehind = 16;  // updates written at most when several came at once
+// Updates written at most when several came at once: as many as the hub keeps, so that a robot
+// on `navigation` misses none that an HTTP client would get.
+constexpr std::uint64_t kBehind = NavigationHub::kKept;
 
 }  // namespace
 
@@ -85,13 +87,14 @@ void CourtTopics::guarded(const std::string& what, const std::function<void()>& 
 
 void CourtTopics::write(const NavigationUpdate& update) {
   MessageArena arena;
+  // The robot's first: a refused write of an observer's topic below does not cost it its update.
+  navigation_.write(
+      navigation_update_message(update, hub_.service_id(), options_.ball_radius_m, arena));
   if (const std::optional<PoseStampedMsg> pose = robot_pose_message(update, arena))
     robot_pose_.write(*pose);
   balls_.write(balls_message(update, options_.ball_radius_m, arena));
   ball_estimates_.write(ball_estimates_message(update, options_.ball_radius_m, arena));
   route_.write(route_message(update, arena));
-  navigation_.write(
-      navigation_update_message(update, hub_.service_id(), options_.ball_radius_m, arena));
   if (options_.camera_detections) write_detections(update);
   ++written_;
 }

@@ -1,5 +1,7 @@
 #include "ballsight/dds/dds_robot_link.hpp"
 
+#include <stdexcept>
+
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/utc_clock.hpp"
 #include "ballsight/service/navigation_hub.hpp"
@@ -35,10 +37,14 @@ DdsRobotLink::~DdsRobotLink() {
 }
 
 void DdsRobotLink::stop() {
-  if (stopping_.exchange(true)) return;
+  {
+    const std::lock_guard lock(replies_mutex_);  // a request waiting for its reply sees it
+    if (stopping_) return;
+    stopping_ = true;
+  }
+  replied_.notify_all();
   thread_.join();
   inbox_.close();
-  replied_.notify_all();
 }
 
 void DdsRobotLink::receive() {
@@ -54,8 +60,10 @@ void DdsRobotLink::receive() {
     replies_.take([&](const RobotReplyMsg& message) {
       if (!message.client || client_ != message.client) return;  // another robot's
       const std::lock_guard lock(replies_mutex_);
-      answered_[message.request] = {message.ok, message.error ? message.error : "",
-                                    message.collected, message.time_s};
+      const auto waiting = answered_.find(message.request);
+      if (waiting == answered_.end()) return;  // its request stopped waiting
+      waiting->second = Reply{true, message.ok, message.error ? message.error : "",
+                              message.collected, message.time_s};
       ++mine;
     });
     if (mine > 0) replied_.notify_all();
@@ -71,25 +79,37 @@ void DdsRobotLink::receive() {
 std::optional<DdsRobotLink::Reply> DdsRobotLink::request(
     ReportKind kind, const std::function<void(RobotReportMsg&, MessageArena&)>& fill) {
   const std::uint64_t id = next_request_++;
+  const auto deadline = std::chrono::steady_clock::now() + options_.reply_timeout;
   std::string error;
   try {
+    // A report written before the court's reader is found is lost (volatile): wait for it.
+    while (reports_.matched_readers() == 0 || replies_.matched_writers() == 0) {
+      if (stopping_ || std::chrono::steady_clock::now() >= deadline)
+        throw std::runtime_error("no court found on robot/reports within " +
+                                 std::to_string(options_.reply_timeout.count()) + " ms");
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
     MessageArena arena;
     RobotReportMsg report = report_message(kind, client_, id, arena);
     fill(report, arena);
-    reports_.write(report);
     std::unique_lock lock(replies_mutex_);
-    if (replied_.wait_for(lock, options_.reply_timeout,
-                          [&] { return answered_.count(id) > 0 || stopping_; }) &&
-        answered_.count(id) > 0) {
-      const Reply reply = answered_.extract(id).mapped();
-      if (reply.ok) return reply;
+    answered_[id] = Reply{};  // waiting
+    lock.unlock();
+    reports_.write(report);
+    lock.lock();
+    replied_.wait_until(lock, deadline, [&] { return answered_[id].answered || stopping_; });
+    const Reply reply = answered_.extract(id).mapped();
+    if (reply.answered && reply.ok) return reply;
+    if (reply.answered) {
       error = "the court refused: " + reply.error;
     } else {
       error = stopping_ ? "the link was stopped"
                         : "no reply from the court within " +
                               std::to_string(options_.reply_timeout.count()) + " ms";
     }
-  } catch (const std::exception& e) {  // DDS refused the write
+  } catch (const std::exception& e) {  // no court, or DDS refused the write
+    const std::lock_guard lock(replies_mutex_);
+    answered_.erase(id);
     error = e.what();
   }
   inbox_.update_status([&error](LinkStatus& status) { status.last_error = error; });

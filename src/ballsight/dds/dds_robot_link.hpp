@@ -54,6 +54,7 @@ class DdsRobotLink : public RobotLink {
 
  private:
   struct Reply {
+    bool answered = false;  // false: its request still waits
     bool ok = false;
     std::string error;
     int collected = 0;
@@ -74,9 +75,9 @@ class DdsRobotLink : public RobotLink {
   WaitSet waitset_;
   std::mutex replies_mutex_;
   std::condition_variable replied_;
-  std::map<std::uint64_t, Reply> answered_;  // by request, guarded by replies_mutex_
+  std::map<std::uint64_t, Reply> answered_;  // the requests waiting, guarded by replies_mutex_
   std::atomic<std::uint64_t> next_request_{1};
-  std::atomic<bool> stopping_{false};
+  std::atomic<bool> stopping_{false};  // set under replies_mutex_
   std::thread thread_;
 };
 

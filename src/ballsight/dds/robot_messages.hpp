@@ -14,14 +14,17 @@
 
 namespace ballsight::dds {
 
-/// The topics of the robot link, under the participant's namespace, and their QoS: the
-/// updates transient-local keep last 1 (a robot that joins gets the latest at once), reports
-/// and replies volatile keep last 64 (all reliable).
+/// The topics of the robot link, under the participant's namespace, and their QoS (all
+/// reliable, keep last 64, so that updates written back to back all arrive): the updates
+/// transient-local, a robot that joins getting the latest one at once; reports and replies
+/// volatile.
 inline constexpr const char* kNavigationTopic = "navigation";
 inline constexpr const char* kReportsTopic = "robot/reports";
 inline constexpr const char* kRepliesTopic = "robot/replies";
-inline constexpr TopicQos kNavigationQos{true, 1};
+inline constexpr TopicQos kNavigationQos{true, 64, 1};
 inline constexpr TopicQos kReportQos{false, 64};
+/// Points one report may carry at most (API v1's body limit allows about 2500).
+inline constexpr std::size_t kMaxReportPoints = 1024;
 
 /// What a RobotReport asks (its `kind`).
 enum class ReportKind : std::uint8_t { acknowledge = 0, collected = 1, pose = 2, drive = 3 };

@@ -51,6 +51,8 @@ nlohmann::json RobotReports::apply(const RobotReportMsg& report) {
       context_.hub.acknowledge(report.seq);  // InputError: not published yet
       return {};
     case ReportKind::collected: {
+      require(report.points._length <= kMaxReportPoints, "report.points",
+              "more than " + std::to_string(kMaxReportPoints) + " balls");
       const std::vector<Vec2> balls = points_from_message(report.points);
       check_inside(balls, context_.area, "report.points");
       context_.hub.add_collected(balls);
@@ -81,6 +83,9 @@ void RobotReports::answer(const RobotReportMsg& report) {
     done = apply(report);
   } catch (const InputError& e) {
     error = e.what();
+    ++refused_;
+  } catch (const std::exception& e) {  // the court's own failure (planning, the drive): said
+    error = std::string("the court failed: ") + e.what();
     ++refused_;
   }
   MessageArena arena;

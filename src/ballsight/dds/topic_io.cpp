@@ -18,6 +18,11 @@ dds_entity_t make_endpoint(const Participant& participant, const dds_topic_descr
   dds_qset_durability(
       q.get(), qos.transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
   dds_qset_history(q.get(), DDS_HISTORY_KEEP_LAST, qos.depth);
+  // Cyclone keeps what a late joiner gets by the durability service's history, not the writer's.
+  if (writer && qos.transient_local)
+    dds_qset_durability_service(q.get(), 0, DDS_HISTORY_KEEP_LAST,
+                                qos.late_joiners > 0 ? qos.late_joiners : qos.depth,
+                                DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
   dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
   dds_qset_data_representation(q.get(), 1, &xcdr1);
   const std::string user_data = "typehash=" + message_type_hash(ros_name) + ";";

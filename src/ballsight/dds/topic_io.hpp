@@ -14,8 +14,9 @@
 namespace ballsight::dds {
 
 struct TopicQos {
-  bool transient_local = false;  // late joiners get the last `depth` samples
+  bool transient_local = false;  // late joiners get the last samples (`late_joiners`)
   int depth = 10;                // keep last
+  int late_joiners = 0;          // a writer's samples kept for late joiners (0: `depth`)
 };
 
 /// A reader or writer of the ROS 2 topic `name` (under the participant's namespace) of ROS 2

@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <typeindex>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -63,18 +65,18 @@ struct ClientMessage {
 using ClientMessages = std::vector<ClientMessage>;
 
 /// What one publication (or one health tick) makes for its clients, made once and shared by
-/// every channel that asks for the same key.
+/// every channel that asks for the same type and key.
 class SharedMessages {
  public:
   template <class T>
   const T& get(const std::string& key, const std::function<T()>& make) {
-    std::shared_ptr<const void>& kept = kept_[key];
+    std::shared_ptr<const void>& kept = kept_[{std::type_index(typeid(T)), key}];
     if (!kept) kept = std::make_shared<const T>(make());
     return *static_cast<const T*>(kept.get());
   }
 
  private:
-  std::map<std::string, std::shared_ptr<const void>> kept_;
+  std::map<std::pair<std::type_index, std::string>, std::shared_ptr<const void>> kept_;
 };
 
 /// A WebSocket client's conversation, held by the API module that accepted it. The transport

@@ -188,6 +188,9 @@ awaitable<ApiResponse> HttpServer::Impl::long_poll(ApiResponse pending) {
   const auto retry = std::move(pending.retry);
   asio::steady_timer timer(io);
   parked.insert(&timer);
+  // Unparked however this ends (a module's retry may throw): broadcast() must never see it gone.
+  const std::unique_ptr<asio::steady_timer, std::function<void(asio::steady_timer*)>> unpark(
+      &timer, [this](asio::steady_timer* t) { parked.erase(t); });
   ApiResponse answer = std::move(pending);
   while (!stopping) {
     if (std::optional<ApiResponse> a = retry()) {
@@ -199,7 +202,6 @@ awaitable<ApiResponse> HttpServer::Impl::long_poll(ApiResponse pending) {
     beast::error_code ec;
     co_await timer.async_wait(asio::redirect_error(asio::use_awaitable, ec));
   }
-  parked.erase(&timer);
   co_return answer;
 }
 

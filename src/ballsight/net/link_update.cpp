@@ -56,7 +56,6 @@ LinkUpdate parse_link_update(const json& u) {
           "update.route", "expected waypoints_m and visits_m");
   out.waypoints_m = points(route["waypoints_m"], "update.route.waypoints_m");
   out.visits_m = points(route["visits_m"], "update.route.visits_m");
-  out.raw = u;
   return out;
 }
 

@@ -26,12 +26,11 @@ struct LinkUpdate {
   std::vector<Vec2> balls_m;
   std::vector<Vec2> visits_m;     // where the collector passes, in order
   std::vector<Vec2> waypoints_m;  // the path to drive
-  nlohmann::json raw;             // the whole update
 };
 
 struct LinkStatus {
   bool connected = false;
-  std::string transport;  // "websocket" or "long-poll"
+  std::string transport;  // "websocket", "long-poll" or "dds"
   std::uint64_t delivered = 0;
   std::uint64_t gaps = 0;  // updates the service published that this client never got
   int reconnects = 0;

@@ -111,27 +111,26 @@ std::uint64_t UpdatePublisher::publish_result(
   const std::lock_guard plan_lock(plan_mutex_);
   last_world_ = std::move(result.world);
   const auto plan_started = Clock::now();
-  // The views are there before anyone hears of the update.
-  const std::uint64_t seq = plan_and_publish(hub, [&](std::uint64_t published_seq) {
+  // The views and the health's figures are there before anyone hears of the update (a client
+  // that asks for the health once it has the update finds its frame set counted).
+  return plan_and_publish(hub, [&](std::uint64_t published_seq) {
+    const double plan_ms = ms_since(plan_started);
     const std::lock_guard lock(mutex_);
     for (std::size_t k = 0; k < views.size() && k < views_.size(); ++k) {
       if (views[k].frame.empty()) continue;  // a missing frame: the camera's last view stays
       views[k].seq = published_seq;
       views_[k] = std::move(views[k]);
     }
+    ++frame_sets_;
+    pipeline_ms_ = pipeline_ms;
+    plan_ms_ = plan_ms;
+    const auto now = Clock::now();
+    if (last_) {
+      const double hz = 1.0 / std::max(1e-6, std::chrono::duration<double>(now - *last_).count());
+      rate_hz_ = smoothed_rate(rate_hz_, hz);
+    }
+    last_ = now;
   });
-  const double plan_ms = ms_since(plan_started);
-  const std::lock_guard lock(mutex_);
-  ++frame_sets_;
-  pipeline_ms_ = pipeline_ms;
-  plan_ms_ = plan_ms;
-  const auto now = Clock::now();
-  if (last_) {
-    const double hz = 1.0 / std::max(1e-6, std::chrono::duration<double>(now - *last_).count());
-    rate_hz_ = smoothed_rate(rate_hz_, hz);
-  }
-  last_ = now;
-  return seq;
 }
 
 void UpdatePublisher::republish(NavigationHub& hub) {
