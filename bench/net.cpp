@@ -8,6 +8,9 @@
 //   parsed at a client (`serve --sim` flat out); target p50 <= 15 ms on the 2-core machine.
 // - BM_WholeChain/at_10_hz: the same with the frame sets at the cameras' 10 Hz (30 s); target
 //   p99 <= 10 ms, from the capture time the update carries.
+// - BM_WholeChainReplayed: the chain without the simulator beside it: ten frame sets of the
+//   simulated court rendered first, then replayed at 10 Hz (30 s), each stamped as captured when
+//   it is handed over, as a camera delivers a frame; the same target.
 // Run: build/bin/bench_net
 
 #include <benchmark/benchmark.h>
@@ -29,6 +32,10 @@
 #include "ballsight/net/http_robot_link.hpp"
 #include "ballsight/net/http_server.hpp"
 #include "ballsight/net/service_api.hpp"
+#include "ballsight/pipeline/court_pipeline.hpp"
+#include "ballsight/pipeline/site_setup.hpp"
+#include "ballsight/service/court_service.hpp"
+#include "ballsight/service/simulated_court.hpp"
 #include "ballsight/service/simulated_service.hpp"
 
 namespace {
@@ -213,6 +220,53 @@ void BM_WholeChain(benchmark::State& state, bool at_10_hz) {
   state.counters["pipeline_ms"] = simulated.health()["pipeline_ms"].get<double>();
   state.counters["plan_ms"] = simulated.health()["plan_ms"].get<double>();
 }
+// The service's chain alone: what `serve --site` does with frames its cameras deliver.
+void BM_WholeChainReplayed(benchmark::State& state) {
+  const SimulatedCourt court(SimulatedCourtOptions{1, 40, 0.25});
+  constexpr std::uint64_t kSets = 10;
+  std::vector<std::vector<cv::Mat>> sets(kSets);
+  for (std::uint64_t tick = 0; tick < kSets; ++tick)
+    for (std::size_t k = 0; k < court.cameras().size(); ++k)
+      sets[tick].push_back(court.render(k, court.scene(), tick));
+  UpdatePublisher publisher(
+      court.site(),
+      make_ballsight_pipeline(court.cameras(), service_pipeline_options(court.site())),
+      PlannerOptions{});
+  NavigationHub hub;
+  std::vector<std::string> names;
+  for (const SiteCamera& camera : court.site().cameras) names.push_back(camera.name);
+  ApiContext context(hub, names, court.site().court, court.site().ball_radius_m);
+  HttpServerOptions o;
+  o.port = 0;
+  o.token = kToken;
+  HttpServer server(o, api_v1_routes(context));
+  HttpRobotLink link(link_to(server.port()));
+  std::atomic<bool> stop{false};
+  std::thread cameras([&] {
+    auto next = std::chrono::steady_clock::now();
+    for (std::uint64_t tick = 0; !stop; ++tick) {
+      std::this_thread::sleep_until(next);
+      next += milliseconds(100);
+      publisher.publish(frame_set_of(sets[tick % kSets], utc_now_ns(), tick), hub);
+    }
+  });
+  std::vector<double> ms;
+  for (auto _ : state) {
+    const std::optional<LinkUpdate> u = link.next(milliseconds(10000));
+    if (!u) {
+      state.SkipWithError("no update arrived");
+      break;
+    }
+    ms.push_back(1e-6 * static_cast<double>(u->received_ns - u->capture_time_ns));
+  }
+  stop = true;
+  cameras.join();
+  report(state, ms);
+  state.counters["pipeline_ms"] = publisher.health()["pipeline_ms"].get<double>();
+  state.counters["plan_ms"] = publisher.health()["plan_ms"].get<double>();
+}
+BENCHMARK(BM_WholeChainReplayed)->Iterations(300)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 BENCHMARK_CAPTURE(BM_WholeChain, flat_out, false)
     ->Iterations(40)
     ->Unit(benchmark::kMillisecond)
