@@ -26,6 +26,7 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
+#include <functional>
 #include <thread>
 
 #include "ballsight/net/api.hpp"
@@ -192,19 +193,19 @@ void BM_Throughput100Clients(benchmark::State& state) {
 }
 BENCHMARK(BM_Throughput100Clients)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_WholeChain(benchmark::State& state, bool at_10_hz) {
-  SimulatedServiceOptions options;
-  options.realtime = at_10_hz;  // frame sets at the cameras' 10 Hz, not one after the other
-  SimulatedCourtService simulated(options);
-  NavigationHub hub;
-  ApiContext context = api_context(simulated, hub);
+/// The whole chain: `publish(stop)` publishes into `context`'s hub on a thread of its own until
+/// `stop`; every update is timed from its capture to its parse at a client over WebSocket, and
+/// `health()` gives the pipeline's and the planner's times at the end.
+void measure_chain(benchmark::State& state, ApiContext& context,
+                   const std::function<void(const std::atomic<bool>& stop)>& publish,
+                   const std::function<nlohmann::json()>& health) {
   HttpServerOptions o;
   o.port = 0;
   o.token = kToken;
   HttpServer server(o, api_v1_routes(context));
   HttpRobotLink link(link_to(server.port()));
   std::atomic<bool> stop{false};
-  std::thread loop([&] { simulated.run(hub, stop); });
+  std::thread publisher([&] { publish(stop); });
   std::vector<double> ms;
   for (auto _ : state) {
     const std::optional<LinkUpdate> u = link.next(milliseconds(10000));
@@ -215,10 +216,21 @@ void BM_WholeChain(benchmark::State& state, bool at_10_hz) {
     ms.push_back(1e-6 * static_cast<double>(u->received_ns - u->capture_time_ns));
   }
   stop = true;
-  loop.join();
+  publisher.join();
   report(state, ms);
-  state.counters["pipeline_ms"] = simulated.health()["pipeline_ms"].get<double>();
-  state.counters["plan_ms"] = simulated.health()["plan_ms"].get<double>();
+  state.counters["pipeline_ms"] = health()["pipeline_ms"].get<double>();
+  state.counters["plan_ms"] = health()["plan_ms"].get<double>();
+}
+
+void BM_WholeChain(benchmark::State& state, bool at_10_hz) {
+  SimulatedServiceOptions options;
+  options.realtime = at_10_hz;  // frame sets at the cameras' 10 Hz, not one after the other
+  SimulatedCourtService simulated(options);
+  NavigationHub hub;
+  ApiContext context = api_context(simulated, hub);
+  measure_chain(
+      state, context, [&](const std::atomic<bool>& stop) { simulated.run(hub, stop); },
+      [&] { return simulated.health(); });
 }
 // The service's chain alone: what `serve --site` does with frames its cameras deliver.
 void BM_WholeChainReplayed(benchmark::State& state) {
@@ -236,34 +248,15 @@ void BM_WholeChainReplayed(benchmark::State& state) {
   std::vector<std::string> names;
   for (const SiteCamera& camera : court.site().cameras) names.push_back(camera.name);
   ApiContext context(hub, names, court.site().court, court.site().ball_radius_m);
-  HttpServerOptions o;
-  o.port = 0;
-  o.token = kToken;
-  HttpServer server(o, api_v1_routes(context));
-  HttpRobotLink link(link_to(server.port()));
-  std::atomic<bool> stop{false};
-  std::thread cameras([&] {
+  const auto cameras = [&](const std::atomic<bool>& stop) {
     auto next = std::chrono::steady_clock::now();
     for (std::uint64_t tick = 0; !stop; ++tick) {
       std::this_thread::sleep_until(next);
       next += milliseconds(100);
       publisher.publish(frame_set_of(sets[tick % kSets], utc_now_ns(), tick), hub);
     }
-  });
-  std::vector<double> ms;
-  for (auto _ : state) {
-    const std::optional<LinkUpdate> u = link.next(milliseconds(10000));
-    if (!u) {
-      state.SkipWithError("no update arrived");
-      break;
-    }
-    ms.push_back(1e-6 * static_cast<double>(u->received_ns - u->capture_time_ns));
-  }
-  stop = true;
-  cameras.join();
-  report(state, ms);
-  state.counters["pipeline_ms"] = publisher.health()["pipeline_ms"].get<double>();
-  state.counters["plan_ms"] = publisher.health()["plan_ms"].get<double>();
+  };
+  measure_chain(state, context, cameras, [&] { return publisher.health(); });
 }
 BENCHMARK(BM_WholeChainReplayed)->Iterations(300)->Unit(benchmark::kMillisecond)->UseRealTime();
 

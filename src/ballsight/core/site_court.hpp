@@ -3,6 +3,8 @@
 // plain numbers that the site file (world/site.hpp) reads and the planners
 // (plan/drivable_court.hpp) and the court drawings use.
 
+#include "ballsight/core/field_rect.hpp"
+
 namespace ballsight {
 
 /// Field frame: origin at the centre of the court on the net line, x along the length, y across,
@@ -24,6 +26,12 @@ struct SiteCourt {
   /// Closest the route comes to the mesh when the robot drives along the net: half its body's
   /// width and room (a ball nearer is reached straight from the lane's edge).
   double net_travel_clearance_m = 0.45;
+
+  /// The fenced area, centred on the court: where a ball or the robot reported may lie.
+  FieldRect fenced_area() const {
+    const Vec2 half(0.5 * area_length_m, 0.5 * area_width_m);
+    return {-half, half};
+  }
 };
 
 }  // namespace ballsight

@@ -8,7 +8,7 @@
 namespace ballsight::dds {
 namespace {
 
-const TopicQos kLatest{true, 1};       // transient-local, keep last 1
+const TopicQos kLatest{true, 1};  // transient-local, keep last 1
 // Updates written at most when several came at once: as many as the hub keeps, so that a robot
 // on `navigation` misses none that an HTTP client would get.
 constexpr std::uint64_t kBehind = NavigationHub::kKept;

@@ -19,11 +19,7 @@ void check_inside(const std::vector<Vec2>& points, const FieldRect& area, const 
 }  // namespace
 
 RobotReportsContext robot_reports_context(CourtService& service, NavigationHub& hub) {
-  const SiteCourt& court = service.site().court;
-  return {hub,
-          {Vec2(-0.5 * court.area_length_m, -0.5 * court.area_width_m),
-           Vec2(0.5 * court.area_length_m, 0.5 * court.area_width_m)},
-          [&service, &hub] { service.republish(hub); },
+  return {hub, service.site().court.fenced_area(), [&service, &hub] { service.republish(hub); },
           service.simulated_drive()};
 }
 

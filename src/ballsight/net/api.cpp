@@ -160,6 +160,13 @@ std::uint64_t resume_after(const std::string& query, const ApiContext& c) {
   return latest > 0 ? latest - 1 : 0;
 }
 
+/// A long-poll's answer: the first update newer than `after`; nullopt while none is.
+std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& c) {
+  const std::optional<NavigationUpdate> u = c.hub.first_after(after);
+  if (!u) return std::nullopt;
+  return ok(navigation_json(*u, c));
+}
+
 ApiResponse navigation_route(const ApiRequest&, const std::string& query, const ApiContext& c) {
   if (!query_text(query, "after")) {
     return ok({{"latest_seq", c.hub.latest_seq()},
@@ -382,12 +389,6 @@ std::variant<StreamSubscription, ApiResponse> stream_subscription(const ApiReque
   }
 }
 
-std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& c) {
-  const std::optional<NavigationUpdate> u = c.hub.first_after(after);
-  if (!u) return std::nullopt;
-  return ok(navigation_json(*u, c));
-}
-
 std::string navigation_message(const NavigationUpdate& update, const ApiContext& c) {
   return json_text(json{{"topic", "navigation"}, {"update", navigation_json(update, c)}});
 }
@@ -419,8 +420,7 @@ ApiContext::ApiContext(NavigationHub& hub_, std::vector<std::string> camera_name
       camera_names(std::move(camera_names_)),
       court(court_),
       ball_radius_m(ball_radius_m_),
-      area{Vec2(-0.5 * court_.area_length_m, -0.5 * court_.area_width_m),
-           Vec2(0.5 * court_.area_length_m, 0.5 * court_.area_width_m)} {}
+      area(court_.fenced_area()) {}
 
 ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
   const RequestTarget target = split_target(request.target);

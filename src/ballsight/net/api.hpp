@@ -51,8 +51,6 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& context);
 /// Foxglove's WebSocket channels and the hub's publications (api_channels.hpp). The calibration
 /// pages' APIs add their own (calibration/).
 ApiRoutes api_v1_routes(const ApiContext& context);
-/// A waiting long-poll's answer: the first update newer than `after`; nullopt while none is.
-std::optional<ApiResponse> poll_answer(std::uint64_t after, const ApiContext& context);
 
 /// What a WebSocket client of /api/v1/stream[?after=SEQ&topics=navigation,world,health&service=ID]
 /// asked for: every update newer than SEQ (from the latest when SEQ is 0 or ID is not this

@@ -22,8 +22,9 @@ std::vector<FieldCamera> site_field_cameras(const Site& site) {
 }
 
 FieldRect site_area(const Site& site) {
-  const Vec2 half(0.5 * site.court.area_length_m + 0.5, 0.5 * site.court.area_width_m + 0.5);
-  return {-half, half};
+  const FieldRect fenced = site.court.fenced_area();
+  const Vec2 margin(0.5, 0.5);
+  return {fenced.min_m - margin, fenced.max_m + margin};
 }
 
 BallsightPipelineOptions service_pipeline_options(const Site& site) {
