@@ -49,7 +49,7 @@ void add_eval_plan_command(CLI::App& eval);
 void add_eval_loop_command(CLI::App& eval);
 /// `eval tsplib` (eval_tsplib_command.cpp), registered on the `eval` group.
 void add_eval_tsplib_command(CLI::App& eval);
-/// `eval tennis-real` (eval_tennis_command.cpp), registered on the `eval` group.
+/// `eval detect-real` and `eval tennis-sim` (eval_tennis_command.cpp), registered on the `eval` group.
 void add_eval_tennis_command(CLI::App& eval);
 /// `eval nodes` (eval_nodes_command.cpp), registered on the `eval` group.
 void add_eval_nodes_command(CLI::App& eval);

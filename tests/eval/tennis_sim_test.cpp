@@ -21,14 +21,14 @@ TennisSimOptions two_scenes() {
 TEST(TennisSim, BallsightFindsMoreBallsThanTheReportAndFewWrong) {
   const TennisSimResult result = run_tennis_sim(two_scenes());
   ASSERT_EQ(result.methods.size(), 2u);
-  const BoxMatch& ballsight = result.methods[0].total;
-  const BoxMatch& report = result.methods[1].total;
+  const BallMatch& ballsight = result.methods[0].total;
+  const BallMatch& report = result.methods[1].total;
   EXPECT_GT(ballsight.labelled, 20);
   EXPECT_EQ(report.labelled, ballsight.labelled);
   EXPECT_GE(recall(ballsight), 0.7);
   EXPECT_GE(precision(ballsight), 0.95);
   EXPECT_GT(recall(ballsight), recall(report));
-  BoxMatch sum;
+  BallMatch sum;
   for (const auto& [condition, match] : result.methods[0].conditions) add_match(sum, match);
   EXPECT_EQ(sum.labelled, ballsight.labelled);
   EXPECT_EQ(sum.matched, ballsight.matched);
@@ -57,7 +57,7 @@ TEST(TennisSim, BallsightFindsBallsOnARedCourtAndUnderWarmLamps) {
   TennisSimOptions red;
   red.scenes = 3;
   sim::set_court_surface(red.court, sim::CourtSurface::red);
-  const BoxMatch on_red = run_tennis_sim(red).methods[0].total;
+  const BallMatch on_red = run_tennis_sim(red).methods[0].total;
   EXPECT_GE(recall(on_red), 0.8);
   EXPECT_GE(precision(on_red), 0.95);
   TennisSimOptions indoor;

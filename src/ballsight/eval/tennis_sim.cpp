@@ -9,6 +9,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/court_eval_scenes.hpp"
+#include "ballsight/eval/detect_real.hpp"
 #include "ballsight/sim/silhouette.hpp"
 
 namespace ballsight {
@@ -23,7 +24,7 @@ constexpr double kOtherSphereMarginPx = 2.0;
 constexpr int kOutlineSamples = 32;
 
 struct Labels {
-  std::vector<cv::Rect> boxes;
+  std::vector<LabelledBall> balls;
   std::vector<PhotoBall> others;  // every other sphere the frame holds (centre, radius)
 };
 
@@ -50,11 +51,12 @@ Labels frame_labels(const sim::CourtCamera& camera, const std::vector<sim::Scene
     const double r = 0.5 * std::max(x1 - x0, y1 - y0);
     if (spheres[k].kind == sim::ObjectKind::tennis_ball && view.visible &&
         r >= options.min_radius_px) {
-      labels.boxes.push_back(cv::Rect(cv::Point(static_cast<int>(std::floor(x0 + 0.5)),
-                                                static_cast<int>(std::floor(y0 + 0.5))),
-                                      cv::Point(static_cast<int>(std::ceil(x1 + 0.5)),
-                                                static_cast<int>(std::ceil(y1 + 0.5)))) &
-                             image);
+      labels.balls.push_back(
+          label_of_box(cv::Rect(cv::Point(static_cast<int>(std::floor(x0 + 0.5)),
+                                          static_cast<int>(std::floor(y0 + 0.5))),
+                                cv::Point(static_cast<int>(std::ceil(x1 + 0.5)),
+                                          static_cast<int>(std::ceil(y1 + 0.5)))) &
+                       image));
     } else {
       labels.others.push_back({*view.center_px, r, 0.0});
     }
@@ -62,19 +64,19 @@ Labels frame_labels(const sim::CourtCamera& camera, const std::vector<sim::Scene
   return labels;
 }
 
-// The detections that lie on no other sphere of the frame (or that lie in a box).
+// The detections that lie on no other sphere of the frame (or that lie on a label).
 std::vector<PhotoBall> judged(const std::vector<PhotoBall>& balls, const Labels& labels) {
   std::vector<PhotoBall> kept;
   for (const PhotoBall& ball : balls) {
-    const cv::Point2d c(ball.center_px.x() + 0.5, ball.center_px.y() + 0.5);
-    const bool in_box =
-        std::any_of(labels.boxes.begin(), labels.boxes.end(),
-                    [&](const cv::Rect& box) { return cv::Rect2d(box).contains(c); });
+    const bool on_label =
+        std::any_of(labels.balls.begin(), labels.balls.end(), [&](const LabelledBall& label) {
+          return (ball.center_px - label.center_px).norm() <= label.radius_px;
+        });
     const bool on_other =
         std::any_of(labels.others.begin(), labels.others.end(), [&](const PhotoBall& o) {
           return (ball.center_px - o.center_px).norm() <= o.radius_px + kOtherSphereMarginPx;
         });
-    if (in_box || !on_other) kept.push_back(ball);
+    if (on_label || !on_other) kept.push_back(ball);
   }
   return kept;
 }
@@ -108,8 +110,8 @@ TennisSimResult run_tennis_sim(const TennisSimOptions& options) {
       for (TennisSimMethod& method : result.methods) {
         const std::vector<PhotoBall> balls =
             method.method == "ballsight" ? detector.detect(frame) : report_hsv_balls(frame);
-        const BoxMatch match =
-            match_balls_to_boxes(labels.boxes, judged(balls, labels), frame.size());
+        const BallMatch match =
+            match_balls_to_labels(labels.balls, judged(balls, labels), frame.size());
         add_match(method.conditions[condition], match);
         add_match(method.total, match);
       }
@@ -121,11 +123,11 @@ TennisSimResult run_tennis_sim(const TennisSimOptions& options) {
 nlohmann::json tennis_sim_json(const TennisSimResult& result) {
   nlohmann::json methods = nlohmann::json::array();
   for (const TennisSimMethod& method : result.methods) {
-    nlohmann::json m = box_match_json(method.total);
+    nlohmann::json m = ball_match_json(method.total);
     m["method"] = method.method;
     m["recall_by_radius"] = recall_by_radius_json(recall_by_radius(method.total, kRadiusEdges));
     for (const auto& [condition, match] : method.conditions)
-      m["conditions"][condition] = box_match_json(match);
+      m["conditions"][condition] = ball_match_json(match);
     methods.push_back(m);
   }
   return {{"methods", methods}};
@@ -138,7 +140,7 @@ std::string tennis_sim_table(const TennisSimResult& result) {
       << std::setw(8) << "recall" << std::setw(10) << "precision"
       << "\n";
   const auto row = [&out](const std::string& method, const std::string& light,
-                          const BoxMatch& match) {
+                          const BallMatch& match) {
     out << std::left << std::setw(11) << method << std::setw(13) << light << std::right
         << std::setw(7) << match.labelled << std::setw(7) << match.detected << std::setw(7)
         << match.matched << std::setw(8) << fixed(recall(match), 3) << std::setw(10)

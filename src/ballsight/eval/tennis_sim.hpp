@@ -1,7 +1,7 @@
 #pragma once
-// `eval tennis-sim`: the camera-free ball detectors of `eval tennis-real` (ballsight's, the
+// `eval tennis-sim`: the camera-free ball detectors of `eval detect-real` (ballsight's, the
 // tennis report's HSV one) on the court simulator's camera frames, labelled from its truth like
-// the real photos: a box around the outline of every tennis ball the frame shows (its centre in
+// the real photos: the box around the outline of every tennis ball the frame shows (its centre in
 // the image, half of it or more unhidden) at `min_radius_px` or more. A detection on any other
 // sphere (a smaller or hidden ball, one whose centre lies outside the image, a reference ball, a
 // robot marker) is neither right nor wrong: it is left out before the matching. Figures per light
@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "ballsight/detect/ball_colours.hpp"
-#include "ballsight/eval/tennis_real.hpp"
+#include "ballsight/detect/ball_labels.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
 #include "ballsight/sim/tennis_court.hpp"
@@ -37,9 +37,9 @@ struct TennisSimOptions {
 };
 
 struct TennisSimMethod {
-  std::string method;                          // "ballsight", "report-hsv"
-  std::map<std::string, BoxMatch> conditions;  // by sim::light_condition_name
-  BoxMatch total;
+  std::string method;                           // "ballsight", "report-hsv"
+  std::map<std::string, BallMatch> conditions;  // by sim::light_condition_name
+  BallMatch total;
 };
 
 struct TennisSimResult {

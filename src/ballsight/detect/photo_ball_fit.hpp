@@ -1,0 +1,63 @@
+#pragma once
+// Fitting the camera-free ball detector's settings to labelled photos: a few numbers of its
+// colour model and its score threshold, each searched over a fixed grid in turn (coordinate
+// ascent, `rounds` passes), keeping a value only when it raises the mean over the sources of the
+// F1 score (each source weighs the same, however many balls it has). Deterministic: the same
+// photos and start give the same settings. Saved as JSON: {"format":
+// "ballsight-photo-ball-detector", "version": 1, "colours": <ball colours, ball_colours.hpp>,
+// "min_score": 0-1, "fitted_on": [source names], "mean_f1": the objective reached}.
+
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "ballsight/detect/ball_labels.hpp"
+#include "ballsight/detect/photo_balls.hpp"
+
+namespace ballsight {
+
+/// One source's photos, decoded.
+struct LabelledPhotos {
+  std::string source;
+  std::vector<std::string> files;                 // per image: its name in images/
+  std::vector<cv::Mat> images;                    // 8-bit BGR
+  std::vector<std::vector<LabelledBall>> labels;  // per image
+};
+
+/// Decodes every image of `source`; throws InputError naming an unreadable one.
+LabelledPhotos read_labelled_photos(const LabelledSource& source);
+
+/// A source's match when `detector` looks at every photo of it.
+BallMatch score_photos(PhotoBallDetector& detector, const LabelledPhotos& photos);
+
+struct PhotoBallFit {
+  PhotoBallOptions options;
+  std::vector<std::string> fitted_on;
+  double mean_f1 = 0.0;
+  int evaluations = 0;  // detector runs over all the photos
+};
+
+struct PhotoBallFitOptions {
+  PhotoBallOptions start;  // the search's first point; what it does not fit stays as given
+  int rounds = 2;
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
+/// The settings that score best on `sources` (none: InputError).
+PhotoBallFit fit_photo_ball_detector(std::span<const LabelledPhotos> sources,
+                                     const PhotoBallFitOptions& options);
+
+/// The hand-set start of the search: default_ball_colours() and a score threshold of 0.35.
+PhotoBallOptions hand_set_photo_ball_options();
+
+nlohmann::json photo_ball_fit_json(const PhotoBallFit& fit);
+/// The detector settings of a fit's JSON; throws InputError naming `where` and the field.
+PhotoBallOptions photo_ball_options_from_json(const nlohmann::json& json, const std::string& where);
+/// Reads the settings a fit wrote; errors name the file and the field.
+PhotoBallOptions read_photo_ball_options(const std::string& path);
+
+}  // namespace ballsight

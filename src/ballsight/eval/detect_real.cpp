@@ -1,0 +1,208 @@
+#include "ballsight/eval/detect_real.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+
+#include "ballsight/camera/image_file.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/core/file_io.hpp"
+#include "ballsight/core/statistics.hpp"
+#include "ballsight/core/text_format.hpp"
+#include "ballsight/detect/photo_ball_fit.hpp"
+#include "ballsight/detect/seed_detector.hpp"
+
+namespace ballsight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kSmallRadiusPx = 4.0;
+constexpr double kInnerDisc = 0.7;
+constexpr double kMinGrowthShare = 0.5;
+
+using Detector = std::function<std::vector<PhotoBall>(const cv::Mat&)>;
+
+void draw(const fs::path& path, const cv::Mat& bgr, std::span<const LabelledBall> labels,
+          std::span<const PhotoBall> balls) {
+  cv::Mat plot = bgr.clone();
+  const auto point = [](const Vec2& p) {
+    return cv::Point(static_cast<int>(std::lround(p.x() * 4)),
+                     static_cast<int>(std::lround(p.y() * 4)));
+  };
+  for (const LabelledBall& label : labels)
+    cv::circle(plot, point(label.center_px), static_cast<int>(std::lround(label.radius_px * 4)),
+               {0, 255, 0}, 1, cv::LINE_AA, 2);
+  for (const PhotoBall& ball : balls)
+    cv::circle(plot, point(ball.center_px), static_cast<int>(std::lround(ball.radius_px * 4)),
+               {255, 0, 255}, 1, cv::LINE_AA, 2);
+  ensure_directory(path.parent_path());
+  write_png_atomic(path, plot);
+}
+
+SourceScore score_source(const std::string& method, const Detector& detect,
+                         const LabelledPhotos& photos, const ColorClassTable& growth,
+                         const fs::path& draw_dir) {
+  SourceScore score{photos.source, {}, {}, 0.0, {}};
+  std::vector<double> ms;
+  for (std::size_t i = 0; i < photos.images.size(); ++i) {
+    const cv::Mat& bgr = photos.images[i];
+    const std::vector<LabelledBall>& labels = photos.labels[i];
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<PhotoBall> balls = detect(bgr);
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                     .count());
+    const BallMatch match = match_balls_to_labels(labels, balls, bgr.size());
+    for (std::size_t k = 0; k < labels.size(); ++k)
+      if (!match.label_matched[k])
+        ++score.misses[static_cast<std::size_t>(miss_cause(bgr, labels, k, growth))];
+    add_match(score.match, match);
+    if (!draw_dir.empty())
+      draw(draw_dir / method / photos.source / (fs::path(photos.files[i]).stem().string() + ".png"),
+           bgr, labels, balls);
+  }
+  score.median_milliseconds = median(ms);
+  return score;
+}
+
+SourceScore score_detector(const std::string& method, const PhotoBallOptions& settings,
+                           const LabelledPhotos& photos, const ColorClassTable& growth,
+                           const fs::path& draw_dir) {
+  PhotoBallDetector detector(settings);
+  return score_source(
+      method, [&detector](const cv::Mat& bgr) { return detector.detect(bgr); }, photos, growth,
+      draw_dir);
+}
+
+nlohmann::json misses_json(const std::array<int, kMissCauses>& misses) {
+  nlohmann::json json = nlohmann::json::object();
+  for (std::size_t c = 0; c < kMissCauses; ++c)
+    json[miss_cause_name(static_cast<MissCause>(c))] = misses[c];
+  return json;
+}
+
+}  // namespace
+
+const char* miss_cause_name(MissCause cause) {
+  switch (cause) {
+    case MissCause::border:
+      return "border";
+    case MissCause::small:
+      return "small";
+    case MissCause::touching:
+      return "touching";
+    case MissCause::off_colour:
+      return "off_colour";
+    case MissCause::other:
+      break;
+  }
+  return "other";
+}
+
+MissCause miss_cause(const cv::Mat& bgr, std::span<const LabelledBall> labels, std::size_t k,
+                     const ColorClassTable& growth) {
+  const LabelledBall& label = labels[k];
+  const Vec2& c = label.center_px;
+  const double r = label.radius_px;
+  if (c.x() - r < 0.5 || c.y() - r < 0.5 || c.x() + r > bgr.cols - 1.5 ||
+      c.y() + r > bgr.rows - 1.5)
+    return MissCause::border;
+  if (r < kSmallRadiusPx) return MissCause::small;
+  for (std::size_t j = 0; j < labels.size(); ++j)
+    if (j != k && (labels[j].center_px - c).norm() <= labels[j].radius_px + r)
+      return MissCause::touching;
+  const double inner = kInnerDisc * r;
+  int pixels = 0, grown = 0;
+  for (int y = static_cast<int>(std::ceil(c.y() - inner)); y <= c.y() + inner; ++y)
+    for (int x = static_cast<int>(std::ceil(c.x() - inner)); x <= c.x() + inner; ++x) {
+      if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows ||
+          (Vec2(x, y) - c).squaredNorm() > inner * inner)
+        continue;
+      ++pixels;
+      grown += (growth.classify(bgr.at<cv::Vec3b>(y, x)) & kBallGrowClass) != 0;
+    }
+  if (pixels > 0 && grown < kMinGrowthShare * pixels) return MissCause::off_colour;
+  return MissCause::other;
+}
+
+std::vector<PhotoBall> report_hsv_balls(const cv::Mat& bgr) {
+  const SeedDetectorOptions options;
+  std::vector<PhotoBall> balls;
+  for (const PixelDetection& d :
+       detect_seed_colour(bgr, options.ball, options.median_kernel_px, ObjectClass::ball))
+    balls.push_back({d.center_px, d.radius_px, 1.0});
+  return balls;
+}
+
+DetectRealResult run_detect_real(const DetectRealOptions& options) {
+  options.shipped.validate();
+  options.fit.validate();
+  const fs::path root = options.data_dir / "real" / "tennis";
+  std::vector<LabelledPhotos> sources;
+  for (const LabelledSource& source : read_labelled_sources(root))
+    sources.push_back(read_labelled_photos(source));
+  require(!sources.empty(), root.string(), "holds no labelled source (*/labels.csv)");
+  DetectRealResult result{{{"leave-one-source-out", {}}, {"shipped", {}}, {"report-hsv", {}}}};
+  const ColorClassTable growth = ball_colour_table(options.shipped.colours);
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    std::vector<LabelledPhotos> others;
+    for (std::size_t o = 0; o < sources.size(); ++o)
+      if (o != s) others.push_back(sources[o]);
+    if (!others.empty()) {
+      const PhotoBallFit fit = fit_photo_ball_detector(others, options.fit);
+      SourceScore score =
+          score_detector("leave-one-source-out", fit.options, sources[s], growth, options.draw_dir);
+      score.fit = photo_ball_fit_json(fit);
+      result.methods[0].sources.push_back(std::move(score));
+    }
+    result.methods[1].sources.push_back(
+        score_detector("shipped", options.shipped, sources[s], growth, options.draw_dir));
+    result.methods[2].sources.push_back(
+        score_source("report-hsv", report_hsv_balls, sources[s], growth, options.draw_dir));
+  }
+  return result;
+}
+
+nlohmann::json detect_real_json(const DetectRealResult& result) {
+  nlohmann::json methods = nlohmann::json::array();
+  for (const DetectRealMethod& method : result.methods) {
+    nlohmann::json sources = nlohmann::json::array();
+    for (const SourceScore& score : method.sources) {
+      nlohmann::json s = ball_match_json(score.match);
+      s["source"] = score.source;
+      s["misses"] = misses_json(score.misses);
+      s["median_milliseconds"] = score.median_milliseconds;
+      if (!score.fit.is_null()) s["fitted_without_it"] = score.fit;
+      sources.push_back(s);
+    }
+    methods.push_back({{"method", method.method}, {"sources", sources}});
+  }
+  return {{"methods", methods}};
+}
+
+std::string detect_real_table(const DetectRealResult& result) {
+  std::ostringstream out;
+  out << std::left << std::setw(22) << "method" << std::setw(32) << "source" << std::right
+      << std::setw(7) << "labels" << std::setw(6) << "found" << std::setw(6) << "match"
+      << std::setw(8) << "recall" << std::setw(8) << "prec" << std::setw(7) << "F1" << std::setw(8)
+      << "err_px" << std::setw(7) << "err/r"
+      << "  misses\n";
+  for (const DetectRealMethod& method : result.methods)
+    for (const SourceScore& s : method.sources) {
+      const nlohmann::json m = ball_match_json(s.match);
+      out << std::left << std::setw(22) << method.method << std::setw(32) << s.source << std::right
+          << std::setw(7) << s.match.labelled << std::setw(6) << s.match.detected << std::setw(6)
+          << s.match.matched << std::setw(8) << fixed(recall(s.match), 3) << std::setw(8)
+          << fixed(precision(s.match), 3) << std::setw(7) << fixed(f1_score(s.match), 3)
+          << std::setw(8) << fixed(m["median_center_error_px"].get<double>(), 2) << std::setw(7)
+          << fixed(m["median_center_error_radii"].get<double>(), 2) << "  "
+          << misses_json(s.misses).dump() << "\n";
+    }
+  return out.str();
+}
+
+}  // namespace ballsight
