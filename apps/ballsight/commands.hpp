@@ -57,7 +57,9 @@ void add_eval_nodes_command(CLI::App& eval);
 void add_node_commands(CLI::App& app);
 /// `omni-node`: a robot's omni camera on DDS (omni_node_command.cpp).
 void add_omni_node_command(CLI::App& app);
-/// `detect balls` and `colours learn` (detect_balls_command.cpp).
+/// `detect balls`, `detect fit` and `colours learn` (detect_balls_command.cpp).
 void add_detect_commands(CLI::App& app);
+/// `detect fit` (detect_fit_command.cpp), registered on the `detect` group.
+void add_detect_fit_command(CLI::App& detect);
 
 }  // namespace ballsight::app

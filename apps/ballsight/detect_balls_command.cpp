@@ -12,6 +12,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/detect/ball_colour_learning.hpp"
+#include "ballsight/detect/photo_ball_fit.hpp"
 #include "ballsight/detect/photo_balls.hpp"
 #include "commands.hpp"
 #include "option_parsing.hpp"
@@ -23,6 +24,7 @@ namespace {
 struct DetectArgs {
   std::string image;
   std::optional<std::string> colours;
+  std::optional<std::string> detector;
   std::optional<std::string> plot;
   bool json = false;
   PhotoBallOptions options;
@@ -47,6 +49,7 @@ cv::Mat plot_balls(const cv::Mat& bgr, const std::vector<PhotoBall>& balls) {
 }
 
 void run_detect(DetectArgs& args) {
+  if (args.detector) args.options = read_photo_ball_options(*args.detector);
   if (args.colours) args.options.colours = read_ball_colours(*args.colours);
   const cv::Mat image = read_image_bgr(args.image);
   PhotoBallDetector detector(args.options);
@@ -81,6 +84,11 @@ void add_detect_balls_command(CLI::App& detect) {
                   "A colour model learned with `colours learn` (default: optic yellow tennis "
                   "balls, in light and in shade, and stage orange ones)")
       ->type_name("FILE");
+  cmd->add_option("--detector", args->detector,
+                  "Settings written by `detect fit` (colour model, contrast split, score "
+                  "threshold; default: built in)")
+      ->type_name("FILE")
+      ->excludes("--colours");
   cmd->add_option("--min-radius-px", args->options.circles.min_radius_px,
                   "Smallest ball radius looked for")
       ->capture_default_str();
@@ -90,7 +98,8 @@ void add_detect_balls_command(CLI::App& detect) {
   cmd->add_option("--min-score", args->options.circles.min_score,
                   "Balls scoring less (0-1: outline seen, disc full, ring around empty) are left "
                   "out")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->excludes("--detector");
   cmd->add_flag("--json", args->json,
                 "Print JSON: {\"balls\": [{\"x_px\", \"y_px\", \"radius_px\", \"score\"}]}");
   cmd->add_option("--plot", args->plot, "Also write a PNG with the balls drawn")->type_name("PNG");
@@ -152,6 +161,7 @@ void add_detect_commands(CLI::App& app) {
   CLI::App* detect = app.add_subcommand("detect", "Find objects in photos");
   detect->require_subcommand(1);
   add_detect_balls_command(*detect);
+  add_detect_fit_command(*detect);
   CLI::App* colours = app.add_subcommand("colours", "Colour models of the objects detected");
   colours->require_subcommand(1);
   add_colours_learn_command(*colours);

@@ -68,6 +68,11 @@ void add_eval_tennis_command(CLI::App& eval) {
                   "Draw each image's labels and detections into this folder "
                   "(<method>/<source>/<image>.png)")
       ->type_name("DIR");
+  cmd->add_option("--methods", args->options.methods, "Which methods to run (comma-separated)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(
+          std::vector<std::string>(kDetectRealMethods.begin(), kDetectRealMethods.end())))
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print JSON instead of a table");
   cmd->callback([args] {
     if (args->colours) args->options.shipped.colours = read_ball_colours(*args->colours);

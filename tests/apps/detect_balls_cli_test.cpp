@@ -1,6 +1,8 @@
-// `ballsight detect balls` and `ballsight colours learn` as a user runs them.
+// `ballsight detect balls`, `detect fit` and `colours learn` as a user runs them.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -71,6 +73,41 @@ TEST(DetectBallsCli, BadInputGetsOneLineNamingIt) {
                                  (dir / "c.json").string()}),
                         "click 1");
   EXPECT_FALSE(std::filesystem::exists(dir / "c.json"));
+}
+
+// `detect fit` on a data folder of one labelled source (the photo with its two yellow balls and
+// one unlabelled pink ball), then `detect balls` with what it wrote.
+TEST(DetectBallsCli, FitsSettingsToALabelledSourceAndDetectsWithThem) {
+  TempDir dir;
+  const std::filesystem::path source = dir / "real" / "tennis" / "court-a";
+  std::filesystem::create_directories(source / "images");
+  std::filesystem::rename(write_photo(dir), source / "images" / "photo.png");
+  std::ofstream(source / "labels.csv")
+      << "image,cx,cy,r\nphoto.png,100,120,25\nphoto.png,150,120,25\n";
+  const std::string settings = (dir / "detector.json").string();
+  const CliResult fit =
+      run_cli({"detect", "fit", "--data", dir.path().string(), "--rounds", "1", "--out", settings});
+  ASSERT_EQ(fit.exit_code, 0) << fit.stderr_text;
+  EXPECT_NE(fit.stdout_text.find("fitted on 1 source"), std::string::npos) << fit.stdout_text;
+  EXPECT_NE(fit.stdout_text.find("mean F1 1.000"), std::string::npos) << fit.stdout_text;
+  const CliResult r =
+      run_cli({"detect", "balls", "--image", (source / "images" / "photo.png").string(),
+               "--detector", settings, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(nlohmann::json::parse(r.stdout_text)["balls"].size(), 2u);
+
+  expect_one_line_error(run_cli({"detect", "fit", "--data", dir.path().string(), "--leave-out",
+                                 "court-b", "--out", (dir / "x.json").string()}),
+                        "court-b");
+  expect_one_line_error(run_cli({"detect", "fit", "--data", dir.path().string(), "--leave-out",
+                                 "court-a", "--out", (dir / "x.json").string()}),
+                        "no labelled source");
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.json"));
+  std::ofstream(dir / "bad.json") << "{\"format\": \"ballsight-photo-ball-detector\"}";
+  expect_one_line_error(
+      run_cli({"detect", "balls", "--image", (source / "images" / "photo.png").string(),
+               "--detector", (dir / "bad.json").string()}),
+      "bad.json");
 }
 
 }  // namespace

@@ -128,6 +128,26 @@ TEST(PhotoBalls, FindsBallsOnAFloorOfABallsColour) {
   }
 }
 
+// A dark court of the balls' own hue (hue 68 deg, saturation 0.45, value 45-135, as a stock
+// photo's indoor green court lit from one side) grows into one blob with the balls: they are found
+// by the contrast split, brighter and more saturated than the court, and not without it.
+TEST(PhotoBalls, FindsBallsOnACourtOfTheirOwnHueByTheirContrast) {
+  const std::vector<DrawnBall> balls{{Vec2(40.3, 50.2), 6},   {Vec2(120.2, 60.7), 7},
+                                     {Vec2(210, 45), 8},      {Vec2(60.5, 170.5), 7.5},
+                                     {Vec2(150.5, 180.5), 6}, {Vec2(260.5, 160.5), 8}};
+  // Lit from one side: the court's value from 45 to 135 across the photo.
+  cv::Mat image = court({320, 240}, 1, cv::Scalar(50, 90, 85));
+  for (int y = 0; y < image.rows; ++y)
+    for (int x = 0; x < image.cols; ++x)
+      image.at<cv::Vec3b>(y, x) *= 0.5 + static_cast<double>(x) / image.cols;
+  for (const DrawnBall& b : balls) draw_ball(image, b);
+  PhotoBallDetector detector;
+  expect_found(detector.detect(image), balls);
+  PhotoBallOptions no_split;
+  no_split.split.min_contrast = 255.0;
+  EXPECT_LT(PhotoBallDetector(no_split).detect(image).size(), balls.size() / 2);
+}
+
 // A wooden floor with a patch in a shadow (a post's, say) of under 2 % of the photo: once the
 // floor's colours are taken out, the patch's darker wood still grows into one blob with the balls
 // lying in it; it is floor too, and its balls are found.

@@ -42,6 +42,28 @@ double median_or_zero(const std::vector<double>& values) {
 
 }  // namespace
 
+std::vector<std::pair<std::string, LabelledBall>> parse_ball_labels(std::string_view csv,
+                                                                    const std::string& where) {
+  std::istringstream text{std::string(csv)};
+  std::string line;
+  std::getline(text, line);
+  require(trim_blanks(line) == kHeader, where + ":1",
+          std::string("expected the header ") + kHeader);
+  std::vector<std::pair<std::string, LabelledBall>> rows;
+  for (int number = 2; std::getline(text, line); ++number) {
+    if (trim_blanks(line).empty()) continue;
+    const std::string at = where + ":" + std::to_string(number);
+    const std::vector<CsvField> fields = split_csv_fields(line);
+    require(fields.size() == 4 && !fields[0].text.empty(), at,
+            "expected an image name, cx, cy and r");
+    const LabelledBall ball{Vec2(csv_number(fields[1], at), csv_number(fields[2], at)),
+                            csv_number(fields[3], at)};
+    require(ball.radius_px > 0.0, at, "expected a radius above 0");
+    rows.emplace_back(std::string(fields[0].text), ball);
+  }
+  return rows;
+}
+
 LabelledSource read_labelled_source(const fs::path& folder) {
   LabelledSource source;
   source.name = folder.filename().string();
@@ -54,24 +76,10 @@ LabelledSource read_labelled_source(const fs::path& folder) {
   for (const fs::directory_entry& entry : fs::directory_iterator(source.images_dir))
     if (entry.is_regular_file() && is_image_file(entry.path()))
       balls[entry.path().filename().string()];
-  std::istringstream text(read_file(csv));
-  std::string line;
-  std::getline(text, line);
-  require(trim_blanks(line) == kHeader, csv.string() + ":1",
-          std::string("expected the header ") + kHeader);
-  for (int number = 2; std::getline(text, line); ++number) {
-    if (trim_blanks(line).empty()) continue;
-    const std::string where = csv.string() + ":" + std::to_string(number);
-    const std::vector<CsvField> fields = split_csv_fields(line);
-    require(fields.size() == 4 && !fields[0].text.empty(), where,
-            "expected an image name, cx, cy and r");
-    const auto it = balls.find(std::string(fields[0].text));
-    require(it != balls.end(), where,
-            "names " + std::string(fields[0].text) + ", which is not an image of " +
-                source.images_dir.string());
-    const LabelledBall ball{Vec2(csv_number(fields[1], where), csv_number(fields[2], where)),
-                            csv_number(fields[3], where)};
-    require(ball.radius_px > 0.0, where, "expected a radius above 0");
+  for (const auto& [file, ball] : parse_ball_labels(read_file(csv), csv.string())) {
+    const auto it = balls.find(file);
+    require(it != balls.end(), csv.string(),
+            "names " + file + ", which is not an image of " + source.images_dir.string());
     it->second.push_back(ball);
   }
   for (auto& [file, labels] : balls) source.images.push_back({file, std::move(labels)});

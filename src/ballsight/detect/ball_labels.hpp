@@ -13,6 +13,8 @@
 #include <opencv2/core.hpp>
 #include <span>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
@@ -36,6 +38,10 @@ struct LabelledSource {
   std::vector<LabelledImage> images;  // in file name order
 };
 
+/// The rows of a labels.csv (image name and label, in file order); throws InputError naming
+/// `where`:line of a malformed row or header.
+std::vector<std::pair<std::string, LabelledBall>> parse_ball_labels(std::string_view csv,
+                                                                    const std::string& where);
 /// The source of `folder` (its labels.csv and images/). Throws InputError naming the file and line
 /// of a malformed row, or a labelled image missing from images/.
 LabelledSource read_labelled_source(const std::filesystem::path& folder);

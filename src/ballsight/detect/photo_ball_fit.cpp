@@ -57,6 +57,12 @@ std::vector<Knob> knobs() {
        [](PhotoBallOptions& o, double v) {
          set_yellow_growth(o, [v](HueBand& b) { b.hue_max_deg = v; });
        }},
+      {"split min_contrast",
+       {20, 30, 40, 50, 60, 80, 255},
+       [](PhotoBallOptions& o, double v) { o.split.min_contrast = v; }},
+      {"split max_share",
+       {0.15, 0.2, 0.3, 0.4, 0.5},
+       [](PhotoBallOptions& o, double v) { o.split.max_share = v; }},
       {"yellow growth min_value",
        {15, 30, 50},
        [](PhotoBallOptions& o, double v) {
@@ -139,6 +145,9 @@ nlohmann::json photo_ball_fit_json(const PhotoBallFit& fit) {
           {"version", 1},
           {"colours", ball_colours_json(fit.options.colours)},
           {"min_score", fit.options.circles.min_score},
+          {"split",
+           {{"min_contrast", fit.options.split.min_contrast},
+            {"max_share", fit.options.split.max_share}}},
           {"fitted_on", fit.fitted_on},
           {"mean_f1", fit.mean_f1}};
 }
@@ -150,6 +159,9 @@ PhotoBallOptions photo_ball_options_from_json(const nlohmann::json& json,
   PhotoBallOptions options;
   options.colours = ball_colours_from_json(json_member(json, "colours", where), where + ".colours");
   options.circles.min_score = json_number(json, "min_score", where);
+  const nlohmann::json& split = json_member(json, "split", where);
+  options.split.min_contrast = json_number(split, "min_contrast", where + ".split");
+  options.split.max_share = json_number(split, "max_share", where + ".split");
   options.validate();
   return options;
 }

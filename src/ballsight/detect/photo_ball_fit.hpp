@@ -1,11 +1,12 @@
 #pragma once
 // Fitting the camera-free ball detector's settings to labelled photos: a few numbers of its
-// colour model and its score threshold, each searched over a fixed grid in turn (coordinate
-// ascent, `rounds` passes), keeping a value only when it raises the mean over the sources of the
-// F1 score (each source weighs the same, however many balls it has). Deterministic: the same
-// photos and start give the same settings. Saved as JSON: {"format":
+// colour model, of its contrast split and its score threshold, each searched over a fixed grid in
+// turn (coordinate ascent, `rounds` passes), keeping a value only when it raises the mean over the
+// sources of the F1 score (each source weighs the same, however many balls it has). Deterministic:
+// the same photos and start give the same settings. Saved as JSON: {"format":
 // "ballsight-photo-ball-detector", "version": 1, "colours": <ball colours, ball_colours.hpp>,
-// "min_score": 0-1, "fitted_on": [source names], "mean_f1": the objective reached}.
+// "min_score": 0-1, "split": {"min_contrast", "max_share"} (ContrastSplit), "fitted_on": [source
+// names], "mean_f1": the objective reached}.
 
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>

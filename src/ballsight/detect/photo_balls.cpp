@@ -22,6 +22,9 @@ void PhotoBallOptions::validate() const {
   require(circles.min_score >= 0.0 && circles.min_score <= 1.0, "min_score",
           "must be within [0, 1]");
   require(bands >= 0, "bands", "must be 0 (one per thread) or more");
+  require(split.min_contrast >= 0.0, "split.min_contrast", "must be 0 or more");
+  require(split.max_share > 0.0 && split.max_share <= 1.0, "split.max_share",
+          "must be within (0, 1]");
 }
 
 namespace {
@@ -71,6 +74,14 @@ constexpr int kMaxFloorPasses = 3;
 // By default a band per thread, each of at least this many rows (a band costs a pass over its
 // record of grown pixels, and a blob across k bands is grown k times).
 constexpr int kMinBandRows = 64;
+// A blob that is not of balls alone is split by contrast (ContrastSplit) when it could hold
+// kMinSplitBalls of the smallest balls and is smooth (kMaxSplitRoughness, as kMaxSurfaceRoughness
+// below: a court, not foliage, whose sunlit specks would become balls).
+constexpr double kMinSplitBalls = 4.0;
+// A part of a split smaller than a disc of this radius is left: specks (sunlit leaves in a field
+// of foliage) that, each a blob of its own, would excuse each other in the isolation test.
+constexpr double kMinSplitRadiusPx = 3.0;
+constexpr double kMaxSplitRoughness = 0.1;
 
 constexpr ColorClassMask kAnySeed = kBallSeedClass | kFarBallSeedClass;
 
@@ -130,7 +141,7 @@ bool of_hue_family(const cv::Vec3b& p, double ball_hue_deg) {
 // classes do not hold is floor (or floor and lines under a warm lamp), which a ball stands out
 // from whatever its hue.
 Appearance appearance(const cv::Mat& bgr, const cv::Mat1b& classes, const ColorClassTable& model,
-                      const BlobCircle& circle) {
+                      const BlobCircle& circle, int min_yellowness) {
   const double r = circle.radius_px;
   const double inner = 0.8 * r, ring_in = r + std::max(1.0, 0.2 * r),
                ring_out = r + std::max(3.0, 0.8 * r);
@@ -179,7 +190,8 @@ Appearance appearance(const cv::Mat& bgr, const cv::Mat1b& classes, const ColorC
   for (const auto& [p, photo_classes] : ring) {
     const bool floor =
         (model.classify(p) & kBallGrowClass) != 0 && (photo_classes & kBallGrowClass) == 0;
-    alike += saturation(p) >= kAlikeSaturation && of_hue_family(p, mean_hue) && !floor;
+    alike += saturation(p) >= kAlikeSaturation && of_hue_family(p, mean_hue) && !floor &&
+             yellowness(p) >= min_yellowness;
   }
   look.ring_alike =
       ring.empty() ? 0.0 : static_cast<double>(alike) / static_cast<double>(ring.size());
@@ -211,7 +223,8 @@ std::pair<double, double> wide_ring(double r) {
 
 // Whether a small ball stands apart (see above): its wide ring, less the balls `others`.
 bool stands_apart(const cv::Mat& bgr, const cv::Mat1b& classes, const PhotoBall& ball,
-                  double hue_deg_of_ball, const std::vector<PhotoBall>& others) {
+                  double hue_deg_of_ball, int min_yellowness,
+                  const std::vector<PhotoBall>& others) {
   const auto [ring_in, ring_out] = wide_ring(ball.radius_px);
   const Vec2& c = ball.center_px;
   int count = 0, seeds = 0, alike = 0;
@@ -232,7 +245,7 @@ bool stands_apart(const cv::Mat& bgr, const cv::Mat1b& classes, const PhotoBall&
       ++count;
       // Most ring pixels are of no ball colour: their hue is not asked.
       if ((row_classes[x] & (kAnySeed | kBallGrowClass)) == 0 ||
-          !of_hue_family(row[x], hue_deg_of_ball))
+          !of_hue_family(row[x], hue_deg_of_ball) || yellowness(row[x]) < min_yellowness)
         continue;
       if (is_seed(row_classes[x])) {
         ++seeds;
@@ -285,7 +298,7 @@ std::vector<PhotoBall> PhotoBallDetector::keep_isolated(const cv::Mat& bgr,
             (o.center_px - f.ball.center_px).norm() <= reach_px + o.radius_px + kOtherBallMarginPx)
           others.push_back(o);
       }
-      if (!stands_apart(bgr, classes_, f.ball, f.hue_deg, others)) continue;
+      if (!stands_apart(bgr, classes_, f.ball, f.hue_deg, f.min_yellowness, others)) continue;
     }
     kept[k] = true;
     balls.push_back(f.ball);
@@ -382,31 +395,43 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   // A blob of balls fills a good part of its box (one ball 0.79, three in a diagonal row 0.26);
   // foliage and leaf litter do not.
   const double area = static_cast<double>(band.blob.pixels.size());
-  const auto floor = [&] {
+  // Not a blob of balls alone: floor, when large and smooth; and the balls on it apart by their
+  // contrast.
+  const auto not_balls = [&] {
     if (area >= (floor_excluded_ ? kLaterFloorMinShare : kFloorMinShare) *
                     static_cast<double>(bgr.total()) &&
         blob_roughness(bgr, band.blob.pixels) <= kFloorMaxRoughness)
       band.floor.insert(band.floor.end(), band.blob.pixels.begin(), band.blob.pixels.end());
+    find_balls_by_contrast(bgr, band);
   };
   if (area < std::numbers::pi * min_r * min_r / 3.0) return;
   if (area > 6.0 * std::numbers::pi * max_r * max_r || area < kMinBoxFill * band.blob.bbox.area())
-    return floor();
+    return not_balls();
   // Most of a ball is of a seed colour (kMinSeedShare of its disc); a blob grown mostly through
   // the looser growth colours is shade, foliage or a wall.
+  if (seed_share(band.blob) < kMinBlobSeedShare) return not_balls();
+  if (fit_blob(bgr, band.blob, 0, band) < kFloorMaxExplained * area) not_balls();
+}
+
+double PhotoBallDetector::seed_share(const GrownBlob& blob) const {
   std::size_t seeds = 0;
   const ColorClassMask* classes = classes_.ptr<ColorClassMask>(0);
-  for (int index : band.blob.pixels) seeds += is_seed(classes[index]);
-  if (static_cast<double>(seeds) < kMinBlobSeedShare * area) return floor();
+  for (int index : blob.pixels) seeds += is_seed(classes[index]);
+  return static_cast<double>(seeds) / static_cast<double>(blob.pixels.size());
+}
+
+double PhotoBallDetector::fit_blob(const cv::Mat& bgr, const GrownBlob& grown, int min_yellowness,
+                                   Band& band) const {
   constexpr int kMargin = 3;
   const cv::Rect region =
-      cv::Rect(band.blob.bbox.x - kMargin, band.blob.bbox.y - kMargin,
-               band.blob.bbox.width + 2 * kMargin, band.blob.bbox.height + 2 * kMargin) &
+      cv::Rect(grown.bbox.x - kMargin, grown.bbox.y - kMargin, grown.bbox.width + 2 * kMargin,
+               grown.bbox.height + 2 * kMargin) &
       cv::Rect(0, 0, bgr.cols, bgr.rows);
   // The blob with a one-pixel frame, so that the flood from the frame reaches every outside
   // pixel; what it does not reach is a hole.
   band.patch.create(region.height + 2, region.width + 2);
   band.patch.setTo(0);
-  for (int index : band.blob.pixels)
+  for (int index : grown.pixels)
     band.patch(index / bgr.cols - region.y + 1, index % bgr.cols - region.x + 1) = 255;
   cv::floodFill(band.patch, cv::Point(0, 0), 128);
   BlobMask blob;
@@ -418,7 +443,7 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   std::vector<BlobCircle> balls;
   std::vector<double> hues;
   for (BlobCircle circle : circles_in_blob(blob, geometry)) {
-    const Appearance look = appearance(bgr, classes_, table_.model(), circle);
+    const Appearance look = appearance(bgr, classes_, table_.model(), circle, min_yellowness);
     if (look.seed_share < kMinSeedShare || look.roughness > kMaxRoughness) continue;
     circle.score *= 1.0 - look.ring_alike;
     if (circle.score < options_.circles.min_score) continue;
@@ -428,17 +453,46 @@ void PhotoBallDetector::find_circles(const cv::Mat& bgr, Band& band) const {
   double explained = 0.0;
   for (const BlobCircle& ball : balls)
     explained += std::numbers::pi * ball.radius_px * ball.radius_px;
-  if (explained < kFloorMaxExplained * area) floor();
-  if (balls.empty()) return;
+  if (balls.empty()) return explained;
   if (balls.size() == 1 && balls[0].radius_px <= kMaxLoneRadiusPx &&
-      blob_length(band.blob, bgr.cols) > 2.0 * balls[0].radius_px + kMaxLoneOverhangPx)
-    return;  // a flat scrap, not a ball
+      blob_length(grown, bgr.cols) > 2.0 * balls[0].radius_px + kMaxLoneOverhangPx)
+    return explained;  // a flat scrap, not a ball
   // Whether the blob's balls are a clump is judged by them alone, not by the circles dropped.
   const bool clump = is_clump(blob, balls);
   for (std::size_t k = 0; k < balls.size(); ++k)
-    band.found.push_back(
-        {{balls[k].center_px, balls[k].radius_px, balls[k].score}, hues[k], band.blobs, clump});
+    band.found.push_back({{balls[k].center_px, balls[k].radius_px, balls[k].score},
+                          hues[k],
+                          min_yellowness,
+                          band.blobs,
+                          clump});
   ++band.blobs;
+  return explained;
+}
+
+void PhotoBallDetector::find_balls_by_contrast(const cv::Mat& bgr, Band& band) const {
+  const GrownBlob& blob = band.blob;
+  const double min_r = options_.circles.min_radius_px;
+  if (static_cast<double>(blob.pixels.size()) < kMinSplitBalls * std::numbers::pi * min_r * min_r ||
+      blob_roughness(bgr, blob.pixels) > kMaxSplitRoughness)
+    return;
+  const auto split =
+      split_by_contrast(bgr, blob, options_.split,
+                        static_cast<std::size_t>(
+                            std::ceil(std::numbers::pi * kMinSplitRadiusPx * kMinSplitRadiusPx)));
+  if (!split) return;
+  const std::size_t before = band.found.size();
+  for (const GrownBlob& part : split->parts)
+    if (seed_share(part) >= kMinBlobSeedShare) fit_blob(bgr, part, split->threshold, band);
+  // A ball the whole blob already gave is not given twice.
+  const auto given = band.found.begin() + static_cast<std::ptrdiff_t>(before);
+  band.found.erase(
+      std::remove_if(given, band.found.end(),
+                     [&](const Found& f) {
+                       return std::any_of(band.found.begin(), given, [&](const Found& o) {
+                         return (o.ball.center_px - f.ball.center_px).norm() <= o.ball.radius_px;
+                       });
+                     }),
+      band.found.end());
 }
 
 }  // namespace ballsight

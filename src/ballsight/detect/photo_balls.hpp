@@ -15,6 +15,7 @@
 #include "ballsight/detect/blob_circles.hpp"
 #include "ballsight/detect/blob_growth.hpp"
 #include "ballsight/detect/colour_cast.hpp"
+#include "ballsight/detect/contrast_split.hpp"
 #include "ballsight/detect/floor_colours.hpp"
 
 namespace ballsight {
@@ -28,6 +29,9 @@ struct PhotoBall {
 struct PhotoBallOptions {
   BallColours colours = default_ball_colours();
   BlobCircleOptions circles;
+  /// A blob that is not of balls alone (a floor, a wall, a court of the balls' own hue) is
+  /// searched for the balls on it split by contrast (contrast_split.hpp).
+  ContrastSplit split;
   /// Horizontal bands of the image searched in parallel (cv::parallel_for_); 0: one per OpenCV
   /// thread. The balls found, and their order, do not depend on it: a blob belongs to the band of
   /// its first seed pixel (row by row).
@@ -53,6 +57,9 @@ class PhotoBallDetector {
   struct Found {
     PhotoBall ball;
     double hue_deg = 0.0;  // of its seed pixels
+    // The least yellowness (min(R, G) - B) of a pixel of its colour: 0, or the threshold of the
+    // contrast split it was found in (its surroundings are of its hue, but less yellow).
+    int min_yellowness = 0;
     int blob = 0;
     bool clump = false;
   };
@@ -72,6 +79,14 @@ class PhotoBallDetector {
   void search(const cv::Mat& bgr);
   void scan_band(const cv::Mat& bgr, cv::Range rows, Band& band) const;
   void find_circles(const cv::Mat& bgr, Band& band) const;
+  // The balls of `grown` into band.found (Found::min_yellowness); returns the area of their
+  // discs.
+  double fit_blob(const cv::Mat& bgr, const GrownBlob& grown, int min_yellowness, Band& band) const;
+  // The balls of band.blob, which is not of balls alone, apart by their contrast with the rest
+  // (contrast_split.hpp), when it is large and smooth enough.
+  void find_balls_by_contrast(const cv::Mat& bgr, Band& band) const;
+  // The share of `blob`'s pixels of a seed colour.
+  double seed_share(const GrownBlob& blob) const;
   // Takes the colours that make up the floor blobs out of the ball classes (into floor_table_,
   // then active); false when there is none to take.
   bool exclude_floor_colours(const cv::Mat& bgr);

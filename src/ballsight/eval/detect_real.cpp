@@ -1,5 +1,6 @@
 #include "ballsight/eval/detect_real.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -141,28 +142,44 @@ std::vector<PhotoBall> report_hsv_balls(const cv::Mat& bgr) {
 DetectRealResult run_detect_real(const DetectRealOptions& options) {
   options.shipped.validate();
   options.fit.validate();
+  for (const std::string& method : options.methods)
+    require(std::find(kDetectRealMethods.begin(), kDetectRealMethods.end(), method) !=
+                kDetectRealMethods.end(),
+            "methods", "unknown method " + method);
+  const auto wanted = [&](const char* method) {
+    return std::find(options.methods.begin(), options.methods.end(), method) !=
+           options.methods.end();
+  };
   const fs::path root = options.data_dir / "real" / "tennis";
   std::vector<LabelledPhotos> sources;
   for (const LabelledSource& source : read_labelled_sources(root))
     sources.push_back(read_labelled_photos(source));
   require(!sources.empty(), root.string(), "holds no labelled source (*/labels.csv)");
-  DetectRealResult result{{{"leave-one-source-out", {}}, {"shipped", {}}, {"report-hsv", {}}}};
+  DetectRealResult result;
+  for (const char* method : kDetectRealMethods)
+    if (wanted(method)) result.methods.push_back({method, {}});
   const ColorClassTable growth = ball_colour_table(options.shipped.colours);
+  const auto add = [&](const char* method, SourceScore score) {
+    for (DetectRealMethod& m : result.methods)
+      if (m.method == method) m.sources.push_back(std::move(score));
+  };
   for (std::size_t s = 0; s < sources.size(); ++s) {
     std::vector<LabelledPhotos> others;
     for (std::size_t o = 0; o < sources.size(); ++o)
       if (o != s) others.push_back(sources[o]);
-    if (!others.empty()) {
+    if (wanted(kDetectRealMethods[0]) && !others.empty()) {
       const PhotoBallFit fit = fit_photo_ball_detector(others, options.fit);
-      SourceScore score =
-          score_detector("leave-one-source-out", fit.options, sources[s], growth, options.draw_dir);
+      SourceScore score = score_detector(kDetectRealMethods[0], fit.options, sources[s], growth,
+                                         options.draw_dir);
       score.fit = photo_ball_fit_json(fit);
-      result.methods[0].sources.push_back(std::move(score));
+      add(kDetectRealMethods[0], std::move(score));
     }
-    result.methods[1].sources.push_back(
-        score_detector("shipped", options.shipped, sources[s], growth, options.draw_dir));
-    result.methods[2].sources.push_back(
-        score_source("report-hsv", report_hsv_balls, sources[s], growth, options.draw_dir));
+    if (wanted(kDetectRealMethods[1]))
+      add(kDetectRealMethods[1], score_detector(kDetectRealMethods[1], options.shipped, sources[s],
+                                                growth, options.draw_dir));
+    if (wanted(kDetectRealMethods[2]))
+      add(kDetectRealMethods[2], score_source(kDetectRealMethods[2], report_hsv_balls, sources[s],
+                                              growth, options.draw_dir));
   }
   return result;
 }

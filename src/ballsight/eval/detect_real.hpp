@@ -48,10 +48,15 @@ struct DetectRealResult {
   std::vector<DetectRealMethod> methods;
 };
 
+inline constexpr std::array<const char*, 3> kDetectRealMethods{"leave-one-source-out", "shipped",
+                                                                "report-hsv"};
+
 struct DetectRealOptions {
   std::filesystem::path data_dir = "../shared/data";
   PhotoBallOptions shipped;  // the detector as shipped
   PhotoBallFitOptions fit;   // how each source's leave-one-out settings are fitted
+  /// Which of kDetectRealMethods to run, in that order whatever the order here.
+  std::vector<std::string> methods{kDetectRealMethods.begin(), kDetectRealMethods.end()};
   /// Draws every image's labels (green) and each method's detections (magenta) into this folder
   /// as <method>/<source>/<image>.png; nothing when empty.
   std::filesystem::path draw_dir;
@@ -59,7 +64,7 @@ struct DetectRealOptions {
 
 /// Scores the methods on every source under data_dir/real/tennis, the sources one by one (with
 /// a single source there is nothing to leave it out of: no leave-one-source-out figure); throws
-/// InputError when there is none.
+/// InputError when there is none, or when a method is none of kDetectRealMethods.
 DetectRealResult run_detect_real(const DetectRealOptions& options);
 
 nlohmann::json detect_real_json(const DetectRealResult& result);
