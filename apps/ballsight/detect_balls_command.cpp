@@ -48,10 +48,22 @@ cv::Mat plot_balls(const cv::Mat& bgr, const std::vector<PhotoBall>& balls) {
   return plot;
 }
 
+// Whether any pixel's channels differ (a greyscale photo decoded as BGR has none).
+bool has_colour(const cv::Mat& bgr) {
+  for (int y = 0; y < bgr.rows; ++y) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; ++x)
+      if (row[x][0] != row[x][1] || row[x][1] != row[x][2]) return true;
+  }
+  return false;
+}
+
 void run_detect(DetectArgs& args) {
   if (args.detector) args.options = read_photo_ball_options(*args.detector);
   if (args.colours) args.options.colours = read_ball_colours(*args.colours);
   const cv::Mat image = read_image_bgr(args.image);
+  require(has_colour(image), args.image,
+          "a greyscale image (no pixel has colour): balls are found by their colour");
   PhotoBallDetector detector(args.options);
   const std::vector<PhotoBall> balls = detector.detect(image);
   if (args.plot) write_png_atomic(*args.plot, plot_balls(image, balls));

@@ -73,6 +73,14 @@ TEST(DetectBallsCli, BadInputGetsOneLineNamingIt) {
                                  (dir / "c.json").string()}),
                         "click 1");
   EXPECT_FALSE(std::filesystem::exists(dir / "c.json"));
+  // A greyscale photo is refused (balls are found by their colour); a 1x1 photo has no ball.
+  cv::imwrite((dir / "grey.png").string(), cv::imread(photo, cv::IMREAD_GRAYSCALE));
+  expect_one_line_error(run_cli({"detect", "balls", "--image", (dir / "grey.png").string()}),
+                        "greyscale");
+  cv::imwrite((dir / "one.png").string(), cv::Mat(1, 1, CV_8UC3, cv::Scalar(45, 245, 220)));
+  const CliResult one = run_cli({"detect", "balls", "--image", (dir / "one.png").string()});
+  EXPECT_EQ(one.exit_code, 0) << one.stderr_text;
+  EXPECT_NE(one.stdout_text.find("0 balls"), std::string::npos) << one.stdout_text;
 }
 
 // `detect fit` on a data folder of one labelled source (the photo with its two yellow balls and

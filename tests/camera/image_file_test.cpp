@@ -54,5 +54,29 @@ TEST(ImageFile, TooManyPixelsAreRefusedBeforeDecoding) {
             image.size());
 }
 
+// libjpeg decodes a cut JPEG with the missing rows grey and a warning; it is refused instead. A
+// 16-bit PNG is scaled to 8 bits and a greyscale one given three channels.
+TEST(ImageFile, ATruncatedJpegIsAnErrorAndOtherDepthsAreConverted) {
+  cv::Mat image(240, 320, CV_8UC3);
+  cv::randu(image, cv::Scalar::all(0), cv::Scalar::all(255));
+  const std::string jpeg = encoded(image, ".jpg");
+  EXPECT_EQ(decode_image_bgr(jpeg, "whole.jpg").size(), image.size());
+  try {
+    decode_image_bgr(jpeg.substr(0, jpeg.size() / 2), "cut.jpg");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "cut.jpg: JPEG without its end-of-image marker: truncated");
+  }
+  cv::Mat deep;
+  image.convertTo(deep, CV_16UC3, 257.0);
+  const cv::Mat from_deep = decode_image_bgr(encoded(deep, ".png"), "deep.png");
+  ASSERT_EQ(from_deep.type(), CV_8UC3);
+  EXPECT_EQ(cv::norm(from_deep, image, cv::NORM_INF), 0.0);
+  cv::Mat grey(10, 20, CV_8UC1, cv::Scalar(77));
+  const cv::Mat from_grey = decode_image_bgr(encoded(grey, ".png"), "grey.png");
+  ASSERT_EQ(from_grey.type(), CV_8UC3);
+  EXPECT_EQ(from_grey.at<cv::Vec3b>(5, 5), cv::Vec3b(77, 77, 77));
+}
+
 }  // namespace
 }  // namespace ballsight

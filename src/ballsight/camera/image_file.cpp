@@ -74,6 +74,12 @@ cv::Mat decode_image_bgr(std::string_view bytes, const std::string& where,
             "image of " + size_text(*declared) + " pixels is larger than the limit of " +
                 std::to_string(max_pixels) + " pixels; not decoded");
   }
+  // libjpeg decodes a truncated JPEG with a warning and fills the missing rows with grey.
+  constexpr std::size_t kEndSearchBytes = 1024;
+  require(!bytes.starts_with("\xFF\xD8") ||
+              bytes.find("\xFF\xD9", bytes.size() - std::min(bytes.size(), kEndSearchBytes)) !=
+                  std::string_view::npos,
+          where, "JPEG without its end-of-image marker: truncated");
   const std::vector<uchar> buffer(bytes.begin(), bytes.end());
   const cv::Mat image = buffer.empty() ? cv::Mat() : cv::imdecode(buffer, cv::IMREAD_COLOR);
   require(!image.empty(), where, "not a readable image (PNG, JPEG, ...)");

@@ -17,10 +17,12 @@ inline constexpr std::size_t kMaxImagePixels = (std::size_t{1} << 30) / 3;
 /// header cut short. Known before anything is decoded.
 std::optional<cv::Size> declared_image_size(std::string_view bytes);
 
-/// Decodes an image file's bytes as 8-bit BGR; throws InputError naming `where` when they are
-/// not a readable image, when its size differs from `expected_size`, or when its header declares
-/// more than `max_pixels` pixels (refused before decoding; other formats than PNG and JPEG are
-/// bounded by OpenCV's own limit, 2^30 pixels).
+/// Decodes an image file's bytes as 8-bit BGR (a 16-bit image scaled to 8 bits, a greyscale one
+/// given three equal channels); throws InputError naming `where` when they are not a readable
+/// image (a JPEG without its end-of-image marker in its last kilobyte is taken for truncated), when
+/// its size differs from `expected_size`, or when its header declares more than `max_pixels` pixels
+/// (refused before decoding; other formats than PNG and JPEG are bounded by OpenCV's own limit,
+/// 2^30 pixels).
 cv::Mat decode_image_bgr(std::string_view bytes, const std::string& where,
                          std::optional<cv::Size> expected_size = std::nullopt,
                          std::size_t max_pixels = kMaxImagePixels);
