@@ -27,7 +27,7 @@ struct DetectArgs {
   std::optional<std::string> detector;
   std::optional<std::string> plot;
   bool json = false;
-  PhotoBallOptions options;
+  PhotoBallOptions options = shipped_photo_ball_options();
 };
 
 cv::Mat plot_balls(const cv::Mat& bgr, const std::vector<PhotoBall>& balls) {
@@ -59,7 +59,12 @@ bool has_colour(const cv::Mat& bgr) {
 }
 
 void run_detect(DetectArgs& args) {
-  if (args.detector) args.options = read_photo_ball_options(*args.detector);
+  if (args.detector) {  // its colours, contrast split and threshold; the radii as given
+    PhotoBallOptions fitted = read_photo_ball_options(*args.detector);
+    fitted.circles.min_radius_px = args.options.circles.min_radius_px;
+    fitted.circles.max_radius_px = args.options.circles.max_radius_px;
+    args.options = fitted;
+  }
   if (args.colours) args.options.colours = read_ball_colours(*args.colours);
   const cv::Mat image = read_image_bgr(args.image);
   require(has_colour(image), args.image,

@@ -43,7 +43,7 @@ void run_fit(const FitArgs& args) {
   nlohmann::json json = photo_ball_fit_json(fit);
   std::string command = "ballsight detect fit --data " + args.data;
   for (const std::string& name : args.leave_out) command += " --leave-out " + name;
-  json["command"] = command + " --rounds " + std::to_string(args.rounds) + " --out FILE";
+  json["command"] = command + " --rounds " + std::to_string(args.rounds) + " --out " + args.out;
   write_file_atomic(args.out, json.dump(2) + "\n");
   std::cout << "fitted on " << sources.size() << " source" << (sources.size() == 1 ? "" : "s")
             << " (" << fit.evaluations << " runs): mean F1 " << fixed(fit.mean_f1, 3) << " -> "

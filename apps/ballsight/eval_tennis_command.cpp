@@ -33,11 +33,12 @@ void add_eval_tennis_sim_command(CLI::App& eval) {
   cmd->add_option("--min-radius-px", args->options.min_radius_px,
                   "Balls shown smaller are neither labelled nor counted against a detector")
       ->capture_default_str();
-  cmd->add_option("--colours", args->colours, "ballsight's colour model (default: built in)")
+  cmd->add_option("--colours", args->colours,
+                  "ballsight's colour model (default: the shipped detector's)")
       ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print JSON instead of a table");
   cmd->callback([args] {
-    if (args->colours) args->options.colours = read_ball_colours(*args->colours);
+    if (args->colours) args->options.detector.colours = read_ball_colours(*args->colours);
     const TennisSimResult result = run_tennis_sim(args->options);
     std::cout << (args->json ? tennis_sim_json(result).dump(2) + "\n" : tennis_sim_table(result));
   });

@@ -75,5 +75,20 @@ TEST(PhotoBallFit, SettingsRoundTripThroughAFileAndBadOnesAreErrors) {
   EXPECT_THROW(fit_photo_ball_detector({}, {}), InputError);
 }
 
+// The compiled-in shipped settings are the committed output of `ballsight detect fit`.
+TEST(PhotoBallFit, TheShippedSettingsAreTheCommittedFitsOutput) {
+  const std::string path =
+      std::string(BALLSIGHT_SOURCE_DIR) + "/src/ballsight/detect/shipped_photo_ball_detector.json";
+  const PhotoBallOptions committed = read_photo_ball_options(path);
+  const PhotoBallOptions shipped = shipped_photo_ball_options();
+  EXPECT_EQ(ball_colours_json(shipped.colours), ball_colours_json(committed.colours));
+  EXPECT_EQ(shipped.circles.min_score, committed.circles.min_score);
+  EXPECT_EQ(shipped.split.min_contrast, committed.split.min_contrast);
+  EXPECT_EQ(shipped.split.max_share, committed.split.max_share);
+  const nlohmann::json file = nlohmann::json::parse(read_file(path));
+  EXPECT_TRUE(file["command"].get<std::string>().starts_with("ballsight detect fit "));
+  EXPECT_EQ(file["fitted_on"].size(), 3u);
+}
+
 }  // namespace
 }  // namespace ballsight

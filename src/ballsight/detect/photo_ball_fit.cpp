@@ -13,6 +13,10 @@ namespace {
 
 constexpr const char* kFormat = "ballsight-photo-ball-detector";
 
+constexpr const char* kShippedJson =
+#include "shipped_photo_ball_detector.inc"
+    ;
+
 // What the search tries: one number of the settings and the grid of its values.
 struct Knob {
   const char* name;
@@ -116,6 +120,12 @@ void PhotoBallFitOptions::validate() const {
 
 PhotoBallOptions hand_set_photo_ball_options() {
   return {};
+}
+
+PhotoBallOptions shipped_photo_ball_options() {
+  static const PhotoBallOptions shipped = photo_ball_options_from_json(
+      nlohmann::json::parse(kShippedJson), "detect/shipped_photo_ball_detector.json");
+  return shipped;
 }
 
 PhotoBallFit fit_photo_ball_detector(std::span<const LabelledPhotos> sources,

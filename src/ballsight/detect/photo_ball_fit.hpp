@@ -52,8 +52,12 @@ struct PhotoBallFitOptions {
 PhotoBallFit fit_photo_ball_detector(std::span<const LabelledPhotos> sources,
                                      const PhotoBallFitOptions& options);
 
-/// The hand-set start of the search: default_ball_colours() and a score threshold of 0.35.
+/// The hand-set start of the search: default_ball_colours(), a score threshold of 0.35 and the
+/// contrast split's 40 / 0.3 (PhotoBallOptions' defaults).
 PhotoBallOptions hand_set_photo_ball_options();
+/// The detector as shipped: the settings `ballsight detect fit` wrote on every real labelled
+/// source (detect/shipped_photo_ball_detector.json, which names the command), compiled in.
+PhotoBallOptions shipped_photo_ball_options();
 
 nlohmann::json photo_ball_fit_json(const PhotoBallFit& fit);
 /// The detector settings of a fit's JSON; throws InputError naming `where` and the field.

@@ -169,8 +169,8 @@ DetectRealResult run_detect_real(const DetectRealOptions& options) {
       if (o != s) others.push_back(sources[o]);
     if (wanted(kDetectRealMethods[0]) && !others.empty()) {
       const PhotoBallFit fit = fit_photo_ball_detector(others, options.fit);
-      SourceScore score = score_detector(kDetectRealMethods[0], fit.options, sources[s], growth,
-                                         options.draw_dir);
+      SourceScore score =
+          score_detector(kDetectRealMethods[0], fit.options, sources[s], growth, options.draw_dir);
       score.fit = photo_ball_fit_json(fit);
       add(kDetectRealMethods[0], std::move(score));
     }

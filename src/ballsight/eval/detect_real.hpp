@@ -49,12 +49,12 @@ struct DetectRealResult {
 };
 
 inline constexpr std::array<const char*, 3> kDetectRealMethods{"leave-one-source-out", "shipped",
-                                                                "report-hsv"};
+                                                               "report-hsv"};
 
 struct DetectRealOptions {
   std::filesystem::path data_dir = "../shared/data";
-  PhotoBallOptions shipped;  // the detector as shipped
-  PhotoBallFitOptions fit;   // how each source's leave-one-out settings are fitted
+  PhotoBallOptions shipped = shipped_photo_ball_options();  // the detector as shipped
+  PhotoBallFitOptions fit;  // how each source's leave-one-out settings are fitted
   /// Which of kDetectRealMethods to run, in that order whatever the order here.
   std::vector<std::string> methods{kDetectRealMethods.begin(), kDetectRealMethods.end()};
   /// Draws every image's labels (green) and each method's detections (magenta) into this folder

@@ -90,15 +90,13 @@ void TennisSimOptions::validate() const {
   court.validate();
   rig.validate();
   scenario.validate();
-  colours.validate("ball colours");
+  detector.validate();
 }
 
 TennisSimResult run_tennis_sim(const TennisSimOptions& options) {
   options.validate();
   const CourtEvalScenes scenes(options.court, options.rig, options.seed);
-  PhotoBallOptions ballsight_options;
-  ballsight_options.colours = options.colours;
-  PhotoBallDetector detector(ballsight_options);
+  PhotoBallDetector detector(options.detector);
   TennisSimResult result{{{"ballsight", {}, {}}, {"report-hsv", {}, {}}}};
   for (int k = 0; k < options.scenes; ++k) {
     const auto [scene, renders, truth] = scenes.render(options.scenario, k);

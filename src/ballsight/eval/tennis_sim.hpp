@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "ballsight/detect/ball_colours.hpp"
 #include "ballsight/detect/ball_labels.hpp"
+#include "ballsight/detect/photo_ball_fit.hpp"
 #include "ballsight/sim/court_rig.hpp"
 #include "ballsight/sim/court_scenario.hpp"
 #include "ballsight/sim/tennis_court.hpp"
@@ -28,8 +28,8 @@ struct TennisSimOptions {
   sim::TennisCourtSpec court;
   sim::CourtRigOptions rig;  // the simulator's 1280 x 720 unless told otherwise
   sim::CourtScenarioOptions scenario;
-  double min_radius_px = 2.0;                    // smaller balls are neither labelled nor wrong
-  BallColours colours = default_ball_colours();  // ballsight's colour model
+  double min_radius_px = 2.0;  // smaller balls are neither labelled nor wrong
+  PhotoBallOptions detector = shipped_photo_ball_options();  // ballsight's detector
 
   static constexpr int kMaxScenes = 1000;
   /// Throws InputError naming the first invalid field.
