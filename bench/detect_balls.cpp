@@ -1,4 +1,5 @@
-// `detect balls` on 640x480 photos: each real labelled photo of at most 640x480
+// `detect balls` (the shipped settings) on 640x480 photos: each real labelled photo of at most
+// 640x480
 // (../shared/data/real/tennis) padded to 640x480 with its own edge (real_<file>; skipped when the
 // data is absent), a drawn hard court with six balls of 3 to 60 px radius (drawn_court), and the
 // same court with a white line under a hall's warm lamp (drawn_court_warm_lamp: the colour table is
@@ -17,6 +18,7 @@
 
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/detect/ball_labels.hpp"
+#include "ballsight/detect/photo_ball_fit.hpp"
 #include "ballsight/detect/photo_balls.hpp"
 #include "ballsight/eval/court_eval_scenes.hpp"
 
@@ -26,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 void detect(benchmark::State& state, const cv::Mat& image) {
-  PhotoBallOptions options;
+  PhotoBallOptions options = shipped_photo_ball_options();
   options.bands = static_cast<int>(state.range(0));
   PhotoBallDetector detector(options);
   std::size_t balls = 0;

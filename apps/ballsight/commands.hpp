@@ -49,7 +49,8 @@ void add_eval_plan_command(CLI::App& eval);
 void add_eval_loop_command(CLI::App& eval);
 /// `eval tsplib` (eval_tsplib_command.cpp), registered on the `eval` group.
 void add_eval_tsplib_command(CLI::App& eval);
-/// `eval detect-real` and `eval tennis-sim` (eval_tennis_command.cpp), registered on the `eval` group.
+/// `eval detect-real` and `eval tennis-sim` (eval_tennis_command.cpp), registered on the `eval`
+/// group.
 void add_eval_tennis_command(CLI::App& eval);
 /// `eval nodes` (eval_nodes_command.cpp), registered on the `eval` group.
 void add_eval_nodes_command(CLI::App& eval);
@@ -57,7 +58,7 @@ void add_eval_nodes_command(CLI::App& eval);
 void add_node_commands(CLI::App& app);
 /// `omni-node`: a robot's omni camera on DDS (omni_node_command.cpp).
 void add_omni_node_command(CLI::App& app);
-/// `detect balls`, `detect fit` and `colours learn` (detect_balls_command.cpp).
+/// `detect balls` and `colours learn` (detect_balls_command.cpp), with `detect fit`.
 void add_detect_commands(CLI::App& app);
 /// `detect fit` (detect_fit_command.cpp), registered on the `detect` group.
 void add_detect_fit_command(CLI::App& detect);

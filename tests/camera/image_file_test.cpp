@@ -67,6 +67,14 @@ TEST(ImageFile, ATruncatedJpegIsAnErrorAndOtherDepthsAreConverted) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "cut.jpg: JPEG without its end-of-image marker: truncated");
   }
+  // More than a kilobyte after the end (a phone's appended data) is no truncation; an end marker
+  // inside a segment before the scan (an EXIF thumbnail's) does not hide one.
+  EXPECT_EQ(decode_image_bgr(jpeg + std::string(4096, '\0'), "trailer.jpg").size(), image.size());
+  const std::string app1 = std::string("\xFF\xE1\x00\x09thumb", 9) + "\xFF\xD9";
+  const std::string with_thumbnail = jpeg.substr(0, 2) + app1 + jpeg.substr(2);
+  EXPECT_EQ(decode_image_bgr(with_thumbnail, "thumb.jpg").size(), image.size());
+  EXPECT_THROW(decode_image_bgr(with_thumbnail.substr(0, with_thumbnail.size() / 2), "cut.jpg"),
+               InputError);
   cv::Mat deep;
   image.convertTo(deep, CV_16UC3, 257.0);
   const cv::Mat from_deep = decode_image_bgr(encoded(deep, ".png"), "deep.png");

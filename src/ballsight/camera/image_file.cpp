@@ -24,8 +24,10 @@ std::uint32_t big_endian(std::string_view bytes, std::size_t at, std::size_t cou
   return v;
 }
 
-// JPEG: the frame header (SOF0-SOF15 but DHT, JPG and DAC) after the segments before it.
-std::optional<cv::Size> jpeg_size(std::string_view bytes) {
+// JPEG: where the first segment whose marker `stop` accepts begins, walking the segments before
+// it; nothing when the walk fails first.
+template <typename Stop>
+std::optional<std::size_t> jpeg_segment(std::string_view bytes, Stop stop) {
   std::size_t at = 2;
   while (at + 4 <= bytes.size()) {
     if (static_cast<std::uint8_t>(bytes[at]) != 0xFF) return std::nullopt;
@@ -38,18 +40,31 @@ std::optional<cv::Size> jpeg_size(std::string_view bytes) {
       at += 2;
       continue;
     }
+    if (stop(marker)) return at;
     const std::uint32_t length = big_endian(bytes, at + 2, 2);
-    const bool frame =
-        marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
-    if (frame) {
-      if (at + 9 > bytes.size()) return std::nullopt;
-      return cv::Size(static_cast<int>(big_endian(bytes, at + 7, 2)),
-                      static_cast<int>(big_endian(bytes, at + 5, 2)));
-    }
     if (length < 2) return std::nullopt;
     at += 2 + length;
   }
   return std::nullopt;
+}
+
+// JPEG: the frame header (SOF0-SOF15 but DHT, JPG and DAC).
+std::optional<cv::Size> jpeg_size(std::string_view bytes) {
+  const std::optional<std::size_t> at = jpeg_segment(bytes, [](std::uint8_t marker) {
+    return marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+  });
+  if (!at || *at + 9 > bytes.size()) return std::nullopt;
+  return cv::Size(static_cast<int>(big_endian(bytes, *at + 7, 2)),
+                  static_cast<int>(big_endian(bytes, *at + 5, 2)));
+}
+
+// Whether a JPEG was cut short: its main image's scan (after the start-of-scan segment; an EXIF
+// thumbnail's lies inside an APP1 segment before it) has no end-of-image marker after it. The
+// entropy-coded data holds no 0xFF 0xD9 but that marker (0xFF bytes are stuffed).
+bool jpeg_truncated(std::string_view bytes) {
+  const std::optional<std::size_t> scan =
+      jpeg_segment(bytes, [](std::uint8_t marker) { return marker == 0xDA; });
+  return scan && bytes.find("\xFF\xD9", *scan) == std::string_view::npos;
 }
 
 }  // namespace
@@ -75,11 +90,8 @@ cv::Mat decode_image_bgr(std::string_view bytes, const std::string& where,
                 std::to_string(max_pixels) + " pixels; not decoded");
   }
   // libjpeg decodes a truncated JPEG with a warning and fills the missing rows with grey.
-  constexpr std::size_t kEndSearchBytes = 1024;
-  require(!bytes.starts_with("\xFF\xD8") ||
-              bytes.find("\xFF\xD9", bytes.size() - std::min(bytes.size(), kEndSearchBytes)) !=
-                  std::string_view::npos,
-          where, "JPEG without its end-of-image marker: truncated");
+  require(!bytes.starts_with("\xFF\xD8") || !jpeg_truncated(bytes), where,
+          "JPEG without its end-of-image marker: truncated");
   const std::vector<uchar> buffer(bytes.begin(), bytes.end());
   const cv::Mat image = buffer.empty() ? cv::Mat() : cv::imdecode(buffer, cv::IMREAD_COLOR);
   require(!image.empty(), where, "not a readable image (PNG, JPEG, ...)");

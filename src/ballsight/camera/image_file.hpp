@@ -19,7 +19,7 @@ std::optional<cv::Size> declared_image_size(std::string_view bytes);
 
 /// Decodes an image file's bytes as 8-bit BGR (a 16-bit image scaled to 8 bits, a greyscale one
 /// given three equal channels); throws InputError naming `where` when they are not a readable
-/// image (a JPEG without its end-of-image marker in its last kilobyte is taken for truncated), when
+/// image (a JPEG without an end-of-image marker after its scan is taken for truncated), when
 /// its size differs from `expected_size`, or when its header declares more than `max_pixels` pixels
 /// (refused before decoding; other formats than PNG and JPEG are bounded by OpenCV's own limit,
 /// 2^30 pixels).

@@ -1,6 +1,7 @@
 #include "ballsight/detect/ball_labels.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -42,14 +43,13 @@ double median_or_zero(const std::vector<double>& values) {
 
 }  // namespace
 
-std::vector<std::pair<std::string, LabelledBall>> parse_ball_labels(std::string_view csv,
-                                                                    const std::string& where) {
+std::vector<LabelRow> parse_ball_labels(std::string_view csv, const std::string& where) {
   std::istringstream text{std::string(csv)};
   std::string line;
   std::getline(text, line);
   require(trim_blanks(line) == kHeader, where + ":1",
           std::string("expected the header ") + kHeader);
-  std::vector<std::pair<std::string, LabelledBall>> rows;
+  std::vector<LabelRow> rows;
   for (int number = 2; std::getline(text, line); ++number) {
     if (trim_blanks(line).empty()) continue;
     const std::string at = where + ":" + std::to_string(number);
@@ -59,7 +59,7 @@ std::vector<std::pair<std::string, LabelledBall>> parse_ball_labels(std::string_
     const LabelledBall ball{Vec2(csv_number(fields[1], at), csv_number(fields[2], at)),
                             csv_number(fields[3], at)};
     require(ball.radius_px > 0.0, at, "expected a radius above 0");
-    rows.emplace_back(std::string(fields[0].text), ball);
+    rows.push_back({std::string(fields[0].text), ball, number});
   }
   return rows;
 }
@@ -76,11 +76,11 @@ LabelledSource read_labelled_source(const fs::path& folder) {
   for (const fs::directory_entry& entry : fs::directory_iterator(source.images_dir))
     if (entry.is_regular_file() && is_image_file(entry.path()))
       balls[entry.path().filename().string()];
-  for (const auto& [file, ball] : parse_ball_labels(read_file(csv), csv.string())) {
-    const auto it = balls.find(file);
-    require(it != balls.end(), csv.string(),
-            "names " + file + ", which is not an image of " + source.images_dir.string());
-    it->second.push_back(ball);
+  for (const LabelRow& row : parse_ball_labels(read_file(csv), csv.string())) {
+    const auto it = balls.find(row.image);
+    require(it != balls.end(), csv.string() + ":" + std::to_string(row.line),
+            "names " + row.image + ", which is not an image of " + source.images_dir.string());
+    it->second.push_back(row.ball);
   }
   for (auto& [file, labels] : balls) source.images.push_back({file, std::move(labels)});
   require(!source.images.empty(), source.images_dir.string(), "holds no image");
@@ -111,7 +111,10 @@ BallMatch match_balls_to_labels(std::span<const LabelledBall> labels,
   match.detected = static_cast<int>(balls.size());
   match.label_matched.assign(labels.size(), false);
   for (const LabelledBall& label : labels) match.label_radius_px.push_back(label.radius_px);
-  for (const PhotoBall& ball : balls) {
+  std::vector<PhotoBall> best_first(balls.begin(), balls.end());
+  std::stable_sort(best_first.begin(), best_first.end(),
+                   [](const PhotoBall& a, const PhotoBall& b) { return a.score > b.score; });
+  for (const PhotoBall& ball : best_first) {
     const Vec2 c = visible_center(ball, image_size);
     std::size_t best = labels.size();
     double best_distance = std::numeric_limits<double>::infinity();

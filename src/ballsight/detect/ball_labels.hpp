@@ -14,7 +14,6 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
@@ -38,10 +37,15 @@ struct LabelledSource {
   std::vector<LabelledImage> images;  // in file name order
 };
 
-/// The rows of a labels.csv (image name and label, in file order); throws InputError naming
-/// `where`:line of a malformed row or header.
-std::vector<std::pair<std::string, LabelledBall>> parse_ball_labels(std::string_view csv,
-                                                                    const std::string& where);
+/// A row of a labels.csv.
+struct LabelRow {
+  std::string image;
+  LabelledBall ball;
+  int line = 0;  // 1-based, in the file
+};
+/// The rows of a labels.csv, in file order; throws InputError naming `where`:line of a malformed
+/// row or header.
+std::vector<LabelRow> parse_ball_labels(std::string_view csv, const std::string& where);
 /// The source of `folder` (its labels.csv and images/). Throws InputError naming the file and line
 /// of a malformed row, or a labelled image missing from images/.
 LabelledSource read_labelled_source(const std::filesystem::path& folder);
@@ -62,7 +66,7 @@ struct BallMatch {
   std::vector<bool> label_matched;         // per label
 };
 
-/// Matches `balls` (best first) to `labels` in an image of `image_size`.
+/// Matches `balls`, taken best score first, to `labels` in an image of `image_size`.
 BallMatch match_balls_to_labels(std::span<const LabelledBall> labels,
                                 std::span<const PhotoBall> balls, cv::Size image_size);
 

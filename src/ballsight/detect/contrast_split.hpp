@@ -5,6 +5,7 @@
 // min(R, G) - B is higher (docs/detect-balls.md). A blob is split at Otsu's threshold of its
 // pixels' yellowness into the connected parts of its brighter class, when the split is clear.
 
+#include <algorithm>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <vector>

@@ -11,7 +11,7 @@ namespace ballsight {
 
 namespace {
 
-constexpr const char* kFormat = "ballsight-photo-ball-detector";
+constexpr const char* kDetectorFormat = "ballsight-photo-ball-detector";
 
 constexpr const char* kShippedJson =
 #include "shipped_photo_ball_detector.inc"
@@ -118,10 +118,6 @@ void PhotoBallFitOptions::validate() const {
   require(rounds >= 1 && rounds <= 10, "rounds", "must be within [1, 10]");
 }
 
-PhotoBallOptions hand_set_photo_ball_options() {
-  return {};
-}
-
 PhotoBallOptions shipped_photo_ball_options() {
   static const PhotoBallOptions shipped = photo_ball_options_from_json(
       nlohmann::json::parse(kShippedJson), "detect/shipped_photo_ball_detector.json");
@@ -151,7 +147,7 @@ PhotoBallFit fit_photo_ball_detector(std::span<const LabelledPhotos> sources,
 }
 
 nlohmann::json photo_ball_fit_json(const PhotoBallFit& fit) {
-  return {{"format", kFormat},
+  return {{"format", kDetectorFormat},
           {"version", 1},
           {"colours", ball_colours_json(fit.options.colours)},
           {"min_score", fit.options.circles.min_score},
@@ -164,15 +160,19 @@ nlohmann::json photo_ball_fit_json(const PhotoBallFit& fit) {
 
 PhotoBallOptions photo_ball_options_from_json(const nlohmann::json& json,
                                               const std::string& where) {
-  json_require_string(json, "format", where, kFormat);
-  require(json_int(json, "version", where, 1, 1) == 1, where + ".version", "expected 1");
+  json_require_string(json, "format", where, kDetectorFormat);
+  json_int(json, "version", where, 1, 1);
   PhotoBallOptions options;
   options.colours = ball_colours_from_json(json_member(json, "colours", where), where + ".colours");
   options.circles.min_score = json_number(json, "min_score", where);
   const nlohmann::json& split = json_member(json, "split", where);
   options.split.min_contrast = json_number(split, "min_contrast", where + ".split");
   options.split.max_share = json_number(split, "max_share", where + ".split");
-  options.validate();
+  try {
+    options.validate();
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
   return options;
 }
 

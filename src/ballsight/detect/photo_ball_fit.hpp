@@ -41,7 +41,9 @@ struct PhotoBallFit {
 };
 
 struct PhotoBallFitOptions {
-  PhotoBallOptions start;  // the search's first point; what it does not fit stays as given
+  /// The search's first point (by default the hand-set PhotoBallOptions: default_ball_colours(),
+  /// a score threshold of 0.35, the contrast split's 40 / 0.3); what it does not fit stays.
+  PhotoBallOptions start;
   int rounds = 2;
 
   /// Throws InputError naming the first invalid field.
@@ -52,9 +54,6 @@ struct PhotoBallFitOptions {
 PhotoBallFit fit_photo_ball_detector(std::span<const LabelledPhotos> sources,
                                      const PhotoBallFitOptions& options);
 
-/// The hand-set start of the search: default_ball_colours(), a score threshold of 0.35 and the
-/// contrast split's 40 / 0.3 (PhotoBallOptions' defaults).
-PhotoBallOptions hand_set_photo_ball_options();
 /// The detector as shipped: the settings `ballsight detect fit` wrote on every real labelled
 /// source (detect/shipped_photo_ball_detector.json, which names the command), compiled in.
 PhotoBallOptions shipped_photo_ball_options();

@@ -19,10 +19,10 @@
 
 namespace ballsight {
 
-/// Why a label was missed, the first that holds, in this order: its box touches the image border;
-/// its radius is below 4 px; another label's disc touches or overlaps its own; less than half of
-/// its inner disc (0.7 of its radius) is of the shipped colour model's growth colours; none of
-/// these.
+/// Why a label was missed, the first that holds, in this order: its disc (of the label's radius)
+/// comes within a pixel of the image border; its radius is below 4 px; another label's disc
+/// touches or overlaps its own; less than half of its inner disc (0.7 of its radius) is of the
+/// shipped colour model's growth colours; none of these.
 enum class MissCause { border, small, touching, off_colour, other };
 inline constexpr std::size_t kMissCauses = 5;
 const char* miss_cause_name(MissCause cause);
