@@ -1,4 +1,5 @@
 // `ballsight detect fit`: the photo detector's settings fitted to labelled photo sources.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -8,6 +9,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/detect/photo_ball_fit.hpp"
+#include "ballsight/eval/tennis_sim.hpp"
 #include "commands.hpp"
 
 namespace ballsight::app {
@@ -18,6 +20,7 @@ struct FitArgs {
   std::string data = "../shared/data";
   std::vector<std::string> leave_out;
   int rounds = PhotoBallFitOptions{}.rounds;
+  int sim_scenes = 0;
   std::string out;
 };
 
@@ -37,13 +40,15 @@ void run_fit(const FitArgs& args) {
     require(std::find(left.begin(), left.end(), name) != left.end(), "--leave-out",
             name + " is no source of " + root.string());
   require(!sources.empty(), root.string(), "holds no labelled source to fit on (*/labels.csv)");
+  if (args.sim_scenes > 0) sources.push_back(simulated_fitting_photos(args.sim_scenes));
   PhotoBallFitOptions options;
   options.rounds = args.rounds;
   const PhotoBallFit fit = fit_photo_ball_detector(sources, options);
   nlohmann::json json = photo_ball_fit_json(fit);
   std::string command = "ballsight detect fit --data " + args.data;
   for (const std::string& name : args.leave_out) command += " --leave-out " + name;
-  json["command"] = command + " --rounds " + std::to_string(args.rounds) + " --out " + args.out;
+  json["command"] = command + " --sim-scenes " + std::to_string(args.sim_scenes) + " --rounds " +
+                    std::to_string(args.rounds) + " --out " + args.out;
   write_file_atomic(args.out, json.dump(2) + "\n");
   std::cout << "fitted on " << sources.size() << " source" << (sources.size() == 1 ? "" : "s")
             << " (" << fit.evaluations << " runs): mean F1 " << fixed(fit.mean_f1, 3) << " -> "
@@ -62,6 +67,11 @@ void add_detect_fit_command(CLI::App& detect) {
   cmd->add_option("--data", args->data, "The data folder")->capture_default_str();
   cmd->add_option("--leave-out", args->leave_out, "A source not to fit on (repeatable)")
       ->type_name("NAME");
+  cmd->add_option("--sim-scenes", args->sim_scenes,
+                  "Also fit on the court simulator's frames of this many scenes (1920x1080, four "
+                  "cameras each, with distractors; seed 1), a source like the others")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
   cmd->add_option("--rounds", args->rounds, "Passes over the settings")
       ->check(CLI::Range(1, 10))
       ->capture_default_str();

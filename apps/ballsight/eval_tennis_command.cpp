@@ -69,6 +69,11 @@ void add_eval_tennis_command(CLI::App& eval) {
                   "Draw each image's labels and detections into this folder "
                   "(<method>/<source>/<image>.png)")
       ->type_name("DIR");
+  cmd->add_option("--sim-scenes", args->options.sim_scenes,
+                  "Scenes of the court simulator each leave-one-source-out fit also fits on (as "
+                  "the shipped settings were)")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
   cmd->add_option("--methods", args->options.methods, "Which methods to run (comma-separated)")
       ->delimiter(',')
       ->check(CLI::IsMember(

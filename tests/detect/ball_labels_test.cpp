@@ -94,6 +94,23 @@ TEST(BallLabels, ABallCutByTheBorderIsComparedByItsVisiblePart) {
   EXPECT_NEAR(match.center_error_px[0], 0.0, 1e-9);
 }
 
+// A detection on an ignored object (a simulated frame's reference ball, say) is neither right nor
+// wrong, unless it lies on a label too.
+TEST(BallLabels, ADetectionOnAnIgnoredObjectIsLeftOut) {
+  const std::array<LabelledBall, 1> labels{LabelledBall{Vec2(20, 20), 5.0}};
+  const std::array<LabelledBall, 2> ignored{LabelledBall{Vec2(60, 20), 4.0},
+                                            LabelledBall{Vec2(24, 20), 3.0}};
+  const std::array<PhotoBall, 4> balls{
+      PhotoBall{Vec2(61, 21), 4.0, 0.9},    // on an ignored object: left out
+      PhotoBall{Vec2(65.5, 20), 4.0, 0.8},  // within its radius and the 2 px margin: left out
+      PhotoBall{Vec2(23, 20), 5.0, 0.7},    // on the label and an ignored object: kept
+      PhotoBall{Vec2(90, 20), 4.0, 0.6}};   // on nothing: kept (a false detection)
+  const std::vector<PhotoBall> kept = without_ignored(balls, labels, ignored);
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept[0].center_px, Vec2(23, 20));
+  EXPECT_EQ(kept[1].center_px, Vec2(90, 20));
+}
+
 TEST(BallLabels, RecallByRadiusCountsEachLabelInItsRange) {
   BallMatch total;
   const std::array<LabelledBall, 3> labels{LabelledBall{Vec2(10, 10), 2.0},

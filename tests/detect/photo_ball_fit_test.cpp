@@ -15,7 +15,7 @@ namespace {
 // Photos of dim yellow balls (value 95, saturation 0.53: no seed of the shade colour) on a green
 // court, three to a photo.
 LabelledPhotos dim_balls() {
-  LabelledPhotos photos{"dim", {}, {}, {}};
+  LabelledPhotos photos{"dim", {}, {}, {}, {}};
   for (int k = 0; k < 3; ++k) {
     cv::Mat3b image(120, 160, cv::Vec3b(40, 110, 30));
     std::vector<LabelledBall> labels;
@@ -93,7 +93,7 @@ TEST(PhotoBallFit, TheBuildHoldsTheCommittedShippedSettings) {
   EXPECT_EQ(shipped.split.max_share, committed.split.max_share);
   const nlohmann::json file = nlohmann::json::parse(read_file(path));
   EXPECT_TRUE(file["command"].get<std::string>().starts_with("ballsight detect fit "));
-  EXPECT_EQ(file["fitted_on"].size(), 3u);
+  EXPECT_EQ(file["fitted_on"].size(), 4u);  // the three real sources and the simulator
 }
 
 }  // namespace

@@ -104,6 +104,24 @@ LabelledBall label_of_box(const cv::Rect2d& box) {
           0.25 * (box.width + box.height)};
 }
 
+std::vector<PhotoBall> without_ignored(std::span<const PhotoBall> balls,
+                                       std::span<const LabelledBall> labels,
+                                       std::span<const LabelledBall> ignored) {
+  const auto within = [](const PhotoBall& ball, const LabelledBall& label, double margin) {
+    return (ball.center_px - label.center_px).norm() <= label.radius_px + margin;
+  };
+  std::vector<PhotoBall> kept;
+  for (const PhotoBall& ball : balls) {
+    const bool on_label = std::any_of(labels.begin(), labels.end(),
+                                      [&](const LabelledBall& l) { return within(ball, l, 0.0); });
+    const bool on_ignored = std::any_of(ignored.begin(), ignored.end(), [&](const LabelledBall& o) {
+      return within(ball, o, kIgnoredMarginPx);
+    });
+    if (on_label || !on_ignored) kept.push_back(ball);
+  }
+  return kept;
+}
+
 BallMatch match_balls_to_labels(std::span<const LabelledBall> labels,
                                 std::span<const PhotoBall> balls, cv::Size image_size) {
   BallMatch match;

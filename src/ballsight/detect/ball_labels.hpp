@@ -66,6 +66,14 @@ struct BallMatch {
   std::vector<bool> label_matched;         // per label
 };
 
+/// `balls` less those that lie on an ignored object (within its radius and kIgnoredMarginPx: a
+/// simulated frame's reference balls, markers and balls too small or hidden to be labelled, on
+/// which a detection is neither right nor wrong) and on no label (within its radius).
+std::vector<PhotoBall> without_ignored(std::span<const PhotoBall> balls,
+                                       std::span<const LabelledBall> labels,
+                                       std::span<const LabelledBall> ignored);
+inline constexpr double kIgnoredMarginPx = 2.0;
+
 /// Matches `balls`, taken best score first, to `labels` in an image of `image_size`.
 BallMatch match_balls_to_labels(std::span<const LabelledBall> labels,
                                 std::span<const PhotoBall> balls, cv::Size image_size);

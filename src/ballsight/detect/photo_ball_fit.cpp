@@ -94,7 +94,7 @@ double mean_f1(const PhotoBallOptions& options, std::span<const LabelledPhotos> 
 }  // namespace
 
 LabelledPhotos read_labelled_photos(const LabelledSource& source) {
-  LabelledPhotos photos{source.name, {}, {}, {}};
+  LabelledPhotos photos{source.name, {}, {}, {}, {}};
   for (const LabelledImage& image : source.images) {
     photos.files.push_back(image.file);
     photos.images.push_back(read_image_bgr(source.images_dir / image.file));
@@ -105,9 +105,12 @@ LabelledPhotos read_labelled_photos(const LabelledSource& source) {
 
 BallMatch score_photos(PhotoBallDetector& detector, const LabelledPhotos& photos) {
   BallMatch total;
-  for (std::size_t k = 0; k < photos.images.size(); ++k)
-    add_match(total, match_balls_to_labels(photos.labels[k], detector.detect(photos.images[k]),
-                                           photos.images[k].size()));
+  for (std::size_t k = 0; k < photos.images.size(); ++k) {
+    std::vector<PhotoBall> balls = detector.detect(photos.images[k]);
+    if (k < photos.ignored.size())
+      balls = without_ignored(balls, photos.labels[k], photos.ignored[k]);
+    add_match(total, match_balls_to_labels(photos.labels[k], balls, photos.images[k].size()));
+  }
   return total;
 }
 

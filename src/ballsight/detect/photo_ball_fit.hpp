@@ -25,6 +25,9 @@ struct LabelledPhotos {
   std::vector<std::string> files;                 // per image: its name in images/
   std::vector<cv::Mat> images;                    // 8-bit BGR
   std::vector<std::vector<LabelledBall>> labels;  // per image
+  /// Per image (or none): objects a detection on which is neither right nor wrong
+  /// (without_ignored).
+  std::vector<std::vector<LabelledBall>> ignored;
 };
 
 /// Decodes every image of `source`; throws InputError naming an unreadable one.

@@ -6,6 +6,7 @@
 #include <functional>
 #include <iomanip>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <sstream>
 
 #include "ballsight/camera/image_file.hpp"
@@ -15,6 +16,7 @@
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/detect/photo_ball_fit.hpp"
 #include "ballsight/detect/seed_detector.hpp"
+#include "ballsight/eval/tennis_sim.hpp"
 
 namespace ballsight {
 
@@ -163,11 +165,17 @@ DetectRealResult run_detect_real(const DetectRealOptions& options) {
     for (DetectRealMethod& m : result.methods)
       if (m.method == method) m.sources.push_back(std::move(score));
   };
+  require(options.sim_scenes >= 0, "sim_scenes", "must be 0 or more");
+  const std::optional<LabelledPhotos> simulated =
+      options.sim_scenes > 0 && wanted(kDetectRealMethods[0])
+          ? std::optional(simulated_fitting_photos(options.sim_scenes))
+          : std::nullopt;
   for (std::size_t s = 0; s < sources.size(); ++s) {
     std::vector<LabelledPhotos> others;
     for (std::size_t o = 0; o < sources.size(); ++o)
       if (o != s) others.push_back(sources[o]);
-    if (wanted(kDetectRealMethods[0]) && !others.empty()) {
+    if (simulated) others.push_back(*simulated);
+    if (wanted(kDetectRealMethods[0]) && others.size() > (simulated ? 1u : 0u)) {
       const PhotoBallFit fit = fit_photo_ball_detector(others, options.fit);
       SourceScore score =
           score_detector(kDetectRealMethods[0], fit.options, sources[s], growth, options.draw_dir);

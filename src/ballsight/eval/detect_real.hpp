@@ -51,10 +51,16 @@ struct DetectRealResult {
 inline constexpr std::array<const char*, 3> kDetectRealMethods{"leave-one-source-out", "shipped",
                                                                "report-hsv"};
 
+/// The simulator's scenes the shipped settings were fitted on (their JSON names the command).
+inline constexpr int kShippedSimScenes = 4;
+
 struct DetectRealOptions {
   std::filesystem::path data_dir = "../shared/data";
   PhotoBallOptions shipped = shipped_photo_ball_options();  // the detector as shipped
   PhotoBallFitOptions fit;  // how each source's leave-one-out settings are fitted
+  /// Scenes of the simulator fitted on beside the other real sources (simulated_fitting_photos;
+  /// as the shipped settings were: `detect fit --sim-scenes`); 0: none.
+  int sim_scenes = kShippedSimScenes;
   /// Which of kDetectRealMethods to run, in that order whatever the order here.
   std::vector<std::string> methods{kDetectRealMethods.begin(), kDetectRealMethods.end()};
   /// Draws every image's labels (green) and each method's detections (magenta) into this folder

@@ -20,12 +20,11 @@ namespace {
 // border may be smaller than min_radius_px).
 constexpr std::array<double, 8> kRadiusEdges{0.0, 2.0, 3.0, 4.0, 5.0, 7.0, 10.0, 20.0};
 
-constexpr double kOtherSphereMarginPx = 2.0;
 constexpr int kOutlineSamples = 32;
 
 struct Labels {
   std::vector<LabelledBall> balls;
-  std::vector<PhotoBall> others;  // every other sphere the frame holds (centre, radius)
+  std::vector<LabelledBall> others;  // every other sphere the frame holds
 };
 
 // Camera `c`'s labels: a box (pixel edges, clipped to the image) around the outline of every
@@ -58,27 +57,10 @@ Labels frame_labels(const sim::CourtCamera& camera, const std::vector<sim::Scene
                                           static_cast<int>(std::ceil(y1 + 0.5)))) &
                        image));
     } else {
-      labels.others.push_back({*view.center_px, r, 0.0});
+      labels.others.push_back({*view.center_px, r});
     }
   }
   return labels;
-}
-
-// The detections that lie on no other sphere of the frame (or that lie on a label).
-std::vector<PhotoBall> judged(const std::vector<PhotoBall>& balls, const Labels& labels) {
-  std::vector<PhotoBall> kept;
-  for (const PhotoBall& ball : balls) {
-    const bool on_label =
-        std::any_of(labels.balls.begin(), labels.balls.end(), [&](const LabelledBall& label) {
-          return (ball.center_px - label.center_px).norm() <= label.radius_px;
-        });
-    const bool on_other =
-        std::any_of(labels.others.begin(), labels.others.end(), [&](const PhotoBall& o) {
-          return (ball.center_px - o.center_px).norm() <= o.radius_px + kOtherSphereMarginPx;
-        });
-    if (on_label || !on_other) kept.push_back(ball);
-  }
-  return kept;
 }
 
 }  // namespace
@@ -108,14 +90,41 @@ TennisSimResult run_tennis_sim(const TennisSimOptions& options) {
       for (TennisSimMethod& method : result.methods) {
         const std::vector<PhotoBall> balls =
             method.method == "ballsight" ? detector.detect(frame) : report_hsv_balls(frame);
-        const BallMatch match =
-            match_balls_to_labels(labels.balls, judged(balls, labels), frame.size());
+        const BallMatch match = match_balls_to_labels(
+            labels.balls, without_ignored(balls, labels.balls, labels.others), frame.size());
         add_match(method.conditions[condition], match);
         add_match(method.total, match);
       }
     }
   }
   return result;
+}
+
+LabelledPhotos simulated_labelled_photos(const TennisSimOptions& options) {
+  options.validate();
+  const CourtEvalScenes scenes(options.court, options.rig, options.seed);
+  LabelledPhotos photos{"simulator", {}, {}, {}, {}};
+  for (int k = 0; k < options.scenes; ++k) {
+    const auto [scene, renders, truth] = scenes.render(options.scenario, k);
+    const std::vector<sim::SceneSphere> spheres = scene.spheres();
+    for (std::size_t c = 0; c < renders.size(); ++c) {
+      Labels labels = frame_labels(scenes.rig().cameras[c], spheres, truth, c, options);
+      photos.files.push_back("scene" + std::to_string(k) + "_camera" + std::to_string(c) + ".png");
+      photos.images.push_back(renders[c].bgr);
+      photos.labels.push_back(std::move(labels.balls));
+      photos.ignored.push_back(std::move(labels.others));
+    }
+  }
+  return photos;
+}
+
+LabelledPhotos simulated_fitting_photos(int scenes) {
+  TennisSimOptions options;
+  options.scenes = scenes;
+  options.rig.width = 1920;
+  options.rig.height = 1080;
+  options.scenario.distractors = true;
+  return simulated_labelled_photos(options);
 }
 
 nlohmann::json tennis_sim_json(const TennisSimResult& result) {
