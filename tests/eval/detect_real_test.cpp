@@ -14,7 +14,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The robot-competition frames and the stock photos, each fold fitted in one round.
+// The robot-competition frames and the stock photos, each fold fitted in one round on the other
+// and the simulator's frames of one scene.
 TEST(DetectReal, ScoresEachSourceFittedWithoutIt) {
   const fs::path real = test::shared_data_dir() / "real" / "tennis";
   const std::vector<std::string> names{"philipsens-TennisBallBot", "pickup-robot-competition-2025"};
@@ -28,6 +29,7 @@ TEST(DetectReal, ScoresEachSourceFittedWithoutIt) {
   DetectRealOptions options;
   options.data_dir = dir.path();
   options.fit.rounds = 1;
+  options.sim_scenes = 1;  // the simulator's four frames of one scene in every fold's fit
   const DetectRealResult result = run_detect_real(options);
   ASSERT_EQ(result.methods.size(), 3u);
   for (const DetectRealMethod& method : result.methods) {
@@ -41,8 +43,8 @@ TEST(DetectReal, ScoresEachSourceFittedWithoutIt) {
   }
   const DetectRealMethod& loso = result.methods[0];
   EXPECT_EQ(loso.method, "leave-one-source-out");
-  EXPECT_EQ(loso.sources[0].fit["fitted_on"], nlohmann::json({names[1]}));
-  EXPECT_EQ(loso.sources[1].fit["fitted_on"], nlohmann::json({names[0]}));
+  EXPECT_EQ(loso.sources[0].fit["fitted_on"], nlohmann::json({names[1], "simulator"}));
+  EXPECT_EQ(loso.sources[1].fit["fitted_on"], nlohmann::json({names[0], "simulator"}));
   // On the robot's frames: the shipped level (docs/RESULTS.md), and near it fitted without them
   // (here on one source in one round; RESULTS' 0.900 is of two sources and two rounds).
   const SourceScore& robot = result.methods[1].sources[1];
