@@ -76,10 +76,7 @@ void save_omni_model(const std::filesystem::path& path, const OmniGroundModel& m
 }
 
 std::unique_ptr<OmniGroundModel> load_omni_model(const std::filesystem::path& path) {
-  const std::string text = read_file(path, kMaxDocumentBytes);
-  const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
-  require(!document.is_discarded(), path.string(), "not valid JSON");
-  return omni_model_from_json(document, path.string());
+  return omni_model_from_json(read_json_document(path), path.string());
 }
 
 }  // namespace ballsight

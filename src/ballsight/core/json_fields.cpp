@@ -3,8 +3,16 @@
 #include <cmath>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/file_io.hpp"
 
 namespace ballsight {
+
+nlohmann::json read_json_document(const std::filesystem::path& path) {
+  nlohmann::json document =
+      nlohmann::json::parse(read_file(path, kMaxDocumentBytes), nullptr, false);
+  require(!document.is_discarded(), path.string(), "not valid JSON");
+  return document;
+}
 
 const nlohmann::json& json_member(const nlohmann::json& object, const std::string& key,
                                   const std::string& where) {

@@ -2,11 +2,16 @@
 // Reading fields of a JSON document with errors that name the field's path and what was
 // expected (InputError "<where>.<key>: expected ...").
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 namespace ballsight {
+
+/// The JSON document of a file of at most kMaxDocumentBytes (file_io.hpp); throws InputError
+/// naming the file when it cannot be read or is not valid JSON.
+nlohmann::json read_json_document(const std::filesystem::path& path);
 
 /// The object member `key`; throws when `object` is not an object or lacks it.
 const nlohmann::json& json_member(const nlohmann::json& object, const std::string& key,

@@ -122,10 +122,7 @@ BallColours ball_colours_from_json(const nlohmann::json& json, const std::string
 }
 
 BallColours read_ball_colours(const std::string& path) {
-  const nlohmann::json document =
-      nlohmann::json::parse(read_file(path, kMaxDocumentBytes), nullptr, false);
-  require(!document.is_discarded(), path, "not valid JSON");
-  return ball_colours_from_json(document, path);
+  return ball_colours_from_json(read_json_document(path), path);
 }
 
 void write_ball_colours(const std::string& path, const BallColours& colours) {

@@ -4,7 +4,6 @@
 
 #include "ballsight/camera/image_file.hpp"
 #include "ballsight/core/error.hpp"
-#include "ballsight/core/file_io.hpp"
 #include "ballsight/core/json_fields.hpp"
 
 namespace ballsight {
@@ -180,10 +179,7 @@ PhotoBallOptions photo_ball_options_from_json(const nlohmann::json& json,
 }
 
 PhotoBallOptions read_photo_ball_options(const std::string& path) {
-  const nlohmann::json document =
-      nlohmann::json::parse(read_file(path, kMaxDocumentBytes), nullptr, false);
-  require(!document.is_discarded(), path, "not valid JSON");
-  return photo_ball_options_from_json(document, path);
+  return photo_ball_options_from_json(read_json_document(path), path);
 }
 
 }  // namespace ballsight
