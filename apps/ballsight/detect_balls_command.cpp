@@ -179,6 +179,7 @@ void add_detect_commands(CLI::App& app) {
   detect->require_subcommand(1);
   add_detect_balls_command(*detect);
   add_detect_fit_command(*detect);
+  add_detect_patches_command(*detect);
   CLI::App* colours = app.add_subcommand("colours", "Colour models of the objects detected");
   colours->require_subcommand(1);
   add_colours_learn_command(*colours);

@@ -26,19 +26,8 @@ struct FitArgs {
 
 void run_fit(const FitArgs& args) {
   const std::filesystem::path root = std::filesystem::path(args.data) / "real" / "tennis";
-  std::vector<LabelledPhotos> sources;
-  std::vector<std::string> left;
-  for (const LabelledSource& source : read_labelled_sources(root)) {
-    if (std::find(args.leave_out.begin(), args.leave_out.end(), source.name) !=
-        args.leave_out.end()) {
-      left.push_back(source.name);
-      continue;
-    }
-    sources.push_back(read_labelled_photos(source));
-  }
-  for (const std::string& name : args.leave_out)
-    require(std::find(left.begin(), left.end(), name) != left.end(), "--leave-out",
-            name + " is no source of " + root.string());
+  std::vector<LabelledPhotos> sources =
+      read_photo_sources(root, args.leave_out, "--leave-out").others;
   require(!sources.empty(), root.string(), "holds no labelled source to fit on (*/labels.csv)");
   if (args.sim_scenes > 0) sources.push_back(simulated_fitting_photos(args.sim_scenes));
   PhotoBallFitOptions options;

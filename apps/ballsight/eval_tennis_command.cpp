@@ -50,6 +50,7 @@ void add_eval_tennis_command(CLI::App& eval) {
   struct Args {
     DetectRealOptions options;
     std::optional<std::string> colours;
+    std::optional<std::string> detector;
     std::optional<std::string> draw;
     bool json = false;
   };
@@ -64,6 +65,10 @@ void add_eval_tennis_command(CLI::App& eval) {
       ->capture_default_str();
   cmd->add_option("--colours", args->colours,
                   "The shipped detector's colour model (default: built in)")
+      ->type_name("FILE");
+  cmd->add_option("--detector", args->detector,
+                  "Score these settings (`detect fit`'s output) as the shipped detector (default: "
+                  "built in); --colours then replaces their colour model")
       ->type_name("FILE");
   cmd->add_option("--draw", args->draw,
                   "Draw each image's labels and detections into this folder "
@@ -81,6 +86,7 @@ void add_eval_tennis_command(CLI::App& eval) {
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print JSON instead of a table");
   cmd->callback([args] {
+    if (args->detector) args->options.shipped = read_photo_ball_options(*args->detector);
     if (args->colours) args->options.shipped.colours = read_ball_colours(*args->colours);
     if (args->draw) args->options.draw_dir = *args->draw;
     const DetectRealResult result = run_detect_real(args->options);

@@ -1,4 +1,5 @@
-// `ballsight detect balls`, `detect fit` and `colours learn` as a user runs them.
+// `ballsight detect balls`, `detect fit`, `detect patches` and `colours learn` as a user runs
+// them.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -22,6 +23,17 @@ std::string write_photo(const TempDir& dir) {
   const std::string path = (dir / "photo.png").string();
   cv::imwrite(path, image);
   return path;
+}
+
+// A data folder of one labelled source, court-a: the photo with its two yellow balls labelled
+// (the pink one is not); returns the source's folder.
+std::filesystem::path write_labelled_source(const TempDir& dir) {
+  const std::filesystem::path source = dir / "real" / "tennis" / "court-a";
+  std::filesystem::create_directories(source / "images");
+  std::filesystem::rename(write_photo(dir), source / "images" / "photo.png");
+  std::ofstream(source / "labels.csv")
+      << "image,cx,cy,r\nphoto.png,100,120,25\nphoto.png,150,120,25\n";
+  return source;
 }
 
 TEST(DetectBallsCli, PrintsTheBallsAsJsonAndDrawsThem) {
@@ -87,11 +99,7 @@ TEST(DetectBallsCli, BadInputGetsOneLineNamingIt) {
 // one unlabelled pink ball), then `detect balls` with what it wrote.
 TEST(DetectBallsCli, FitsSettingsToALabelledSourceAndDetectsWithThem) {
   TempDir dir;
-  const std::filesystem::path source = dir / "real" / "tennis" / "court-a";
-  std::filesystem::create_directories(source / "images");
-  std::filesystem::rename(write_photo(dir), source / "images" / "photo.png");
-  std::ofstream(source / "labels.csv")
-      << "image,cx,cy,r\nphoto.png,100,120,25\nphoto.png,150,120,25\n";
+  const std::filesystem::path source = write_labelled_source(dir);
   const std::string settings = (dir / "detector.json").string();
   const CliResult fit =
       run_cli({"detect", "fit", "--data", dir.path().string(), "--rounds", "1", "--out", settings});
@@ -116,6 +124,45 @@ TEST(DetectBallsCli, FitsSettingsToALabelledSourceAndDetectsWithThem) {
       run_cli({"detect", "balls", "--image", (source / "images" / "photo.png").string(),
                "--detector", (dir / "bad.json").string()}),
       "bad.json");
+}
+
+// `detect patches` on the same source: a NumPy file of every candidate's patch and a CSV that
+// tells the two balls from the rest.
+TEST(DetectBallsCli, WritesTheCandidatesPatchesWithTheirTruth) {
+  TempDir dir;
+  const std::filesystem::path source = write_labelled_source(dir);
+  const std::string out = (dir / "patches").string();
+  const CliResult r = run_cli(
+      {"detect", "patches", "--data", dir.path().string(), "--source", "court-a", "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  std::ifstream csv(out + ".csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "source,image,x_px,y_px,radius_px,response,truth");
+  int rows = 0;
+  int balls = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    balls += line.ends_with(",ball");
+  }
+  EXPECT_EQ(balls, 2);
+  // The NumPy header names as many patches as the CSV has rows, and the data follows it.
+  std::ifstream npy(out + ".npy", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(npy)), {});
+  ASSERT_GT(bytes.size(), 10u);
+  EXPECT_EQ(bytes.substr(0, 6), "\x93NUMPY");
+  const std::size_t header =
+      10 + static_cast<unsigned char>(bytes[8]) + 256 * static_cast<unsigned char>(bytes[9]);
+  EXPECT_EQ(header % 64, 0u);
+  EXPECT_NE(bytes.find("'shape': (" + std::to_string(rows) + ", 32, 32, 3)"), std::string::npos);
+  EXPECT_EQ(bytes.size(), header + static_cast<std::size_t>(rows) * 32 * 32 * 3);
+
+  expect_one_line_error(run_cli({"detect", "patches", "--data", dir.path().string(), "--source",
+                                 "court-b", "--out", (dir / "x").string()}),
+                        "court-b");
+  expect_one_line_error(run_cli({"detect", "patches", "--out", (dir / "x").string()}),
+                        "--sim-scenes");
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.npy"));
 }
 
 }  // namespace

@@ -11,13 +11,13 @@
 namespace ballsight {
 namespace {
 
-constexpr unsigned kSeed = 99;
+constexpr unsigned kClassesSeed = 99;
 const YuvRange kOrange{{40, 60, 150}, {230, 125, 230}};
 
 TEST(ColorClassTable, AgreesWithCvtColorAndInRangeAwayFromBoundaries) {
-  SCOPED_TRACE("seed " + std::to_string(kSeed));
+  SCOPED_TRACE("seed " + std::to_string(kClassesSeed));
   const ColorClassTable table({{1, kOrange}});
-  std::mt19937 rng(kSeed);
+  std::mt19937 rng(kClassesSeed);
   std::uniform_int_distribution<int> byte(0, 255);
   cv::Mat bgr(200, 200, CV_8UC3);
   for (int i = 0; i < bgr.rows * bgr.cols; ++i)
@@ -63,7 +63,7 @@ TEST(ColorClassTable, RejectsInvalidRanges) {
 
 TEST(ColorClassTable, GrowingOnTheClassImageIsGrowingThroughTheTable) {
   // Blocks of random colours, so that regions of a class are of many shapes and sizes.
-  std::mt19937 rng(kSeed);
+  std::mt19937 rng(kClassesSeed);
   std::uniform_int_distribution<int> byte(0, 255);
   cv::Mat small(24, 32, CV_8UC3), bgr;
   for (int i = 0; i < small.rows * small.cols; ++i)

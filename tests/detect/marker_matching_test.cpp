@@ -11,7 +11,7 @@
 namespace ballsight {
 namespace {
 
-constexpr unsigned kSeed = 4242;
+constexpr unsigned kMatchingSeed = 4242;
 
 // The omnivision paper's layout: rays every 10 degrees, markers every 50 cm from 60 to 460 cm.
 std::vector<Vec2> paper_layout() {
@@ -49,8 +49,8 @@ OmniRig misaligned_rig() {
 }
 
 TEST(MarkerMatching, MatchesEveryMarkerOfAMisalignedRig) {
-  SCOPED_TRACE("seed " + std::to_string(kSeed));
-  std::mt19937 rng(kSeed);
+  SCOPED_TRACE("seed " + std::to_string(kMatchingSeed));
+  std::mt19937 rng(kMatchingSeed);
   const std::vector<Vec2> layout = paper_layout();
   const Detections d = observe(misaligned_rig(), layout, rng);
   ASSERT_EQ(d.pixels.size(), layout.size());
@@ -64,8 +64,8 @@ TEST(MarkerMatching, MatchesEveryMarkerOfAMisalignedRig) {
 }
 
 TEST(MarkerMatching, SurvivesMissingMarkersAndClutter) {
-  SCOPED_TRACE("seed " + std::to_string(kSeed));
-  std::mt19937 rng(kSeed);
+  SCOPED_TRACE("seed " + std::to_string(kMatchingSeed));
+  std::mt19937 rng(kMatchingSeed);
   const std::vector<Vec2> layout = paper_layout();
   const OmniRig rig = misaligned_rig();
   Detections d = observe(rig, layout, rng);

@@ -1,6 +1,7 @@
 #include "ballsight/detect/contrast_split.hpp"
 
 #include <array>
+#include <opencv2/imgproc.hpp>
 
 namespace ballsight {
 

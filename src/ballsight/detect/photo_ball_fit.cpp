@@ -1,5 +1,6 @@
 #include "ballsight/detect/photo_ball_fit.hpp"
 
+#include <algorithm>
 #include <functional>
 
 #include "ballsight/camera/image_file.hpp"
@@ -100,6 +101,21 @@ LabelledPhotos read_labelled_photos(const LabelledSource& source) {
     photos.labels.push_back(image.balls);
   }
   return photos;
+}
+
+PhotoSources read_photo_sources(const std::filesystem::path& root,
+                                std::span<const std::string> names, const std::string& option) {
+  PhotoSources out;
+  for (const LabelledSource& source : read_labelled_sources(root)) {
+    const bool named = std::find(names.begin(), names.end(), source.name) != names.end();
+    (named ? out.named : out.others).push_back(read_labelled_photos(source));
+  }
+  for (const std::string& name : names) {
+    require(std::any_of(out.named.begin(), out.named.end(),
+                        [&](const LabelledPhotos& p) { return p.source == name; }),
+            option, name + " is no source of " + root.string());
+  }
+  return out;
 }
 
 BallMatch score_photos(PhotoBallDetector& detector, const LabelledPhotos& photos) {

@@ -8,6 +8,7 @@
 // "min_score": 0-1, "split": {"min_contrast", "max_share"} (ContrastSplit), "fitted_on": [source
 // names], "mean_f1": the objective reached}.
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <span>
@@ -32,6 +33,15 @@ struct LabelledPhotos {
 
 /// Decodes every image of `source`; throws InputError naming an unreadable one.
 LabelledPhotos read_labelled_photos(const LabelledSource& source);
+
+/// The labelled sources under a folder (read_labelled_sources), decoded, those named apart.
+struct PhotoSources {
+  std::vector<LabelledPhotos> named;   // in the folder's order
+  std::vector<LabelledPhotos> others;  // the rest
+};
+/// Throws InputError, where `option`, naming a name that is no source under `root`.
+PhotoSources read_photo_sources(const std::filesystem::path& root,
+                                std::span<const std::string> names, const std::string& option);
 
 /// A source's match when `detector` looks at every photo of it.
 BallMatch score_photos(PhotoBallDetector& detector, const LabelledPhotos& photos);

@@ -153,9 +153,7 @@ DetectRealResult run_detect_real(const DetectRealOptions& options) {
            options.methods.end();
   };
   const fs::path root = options.data_dir / "real" / "tennis";
-  std::vector<LabelledPhotos> sources;
-  for (const LabelledSource& source : read_labelled_sources(root))
-    sources.push_back(read_labelled_photos(source));
+  const std::vector<LabelledPhotos> sources = read_photo_sources(root, {}, "--data").others;
   require(!sources.empty(), root.string(), "holds no labelled source (*/labels.csv)");
   DetectRealResult result;
   for (const char* method : kDetectRealMethods)

@@ -118,9 +118,10 @@ LabelledPhotos simulated_labelled_photos(const TennisSimOptions& options) {
   return photos;
 }
 
-LabelledPhotos simulated_fitting_photos(int scenes) {
+LabelledPhotos simulated_fitting_photos(int scenes, std::uint64_t seed) {
   TennisSimOptions options;
   options.scenes = scenes;
+  options.seed = seed;
   options.rig.width = 1920;
   options.rig.height = 1080;
   options.scenario.distractors = true;

@@ -52,9 +52,9 @@ TennisSimResult run_tennis_sim(const TennisSimOptions& options);
 /// on: the labels of eval tennis-sim, every other sphere ignored (LabelledPhotos::ignored).
 LabelledPhotos simulated_labelled_photos(const TennisSimOptions& options);
 /// The simulator's source the detector's settings are fitted on beside the real photos
-/// (`detect fit --sim-scenes`, eval detect-real): `scenes` scenes of seed 1 at 1920x1080, the
+/// (`detect fit --sim-scenes`, eval detect-real): `scenes` scenes of `seed` at 1920x1080, the
 /// court cameras' size, with distractors (leaves, a bottle).
-LabelledPhotos simulated_fitting_photos(int scenes);
+LabelledPhotos simulated_fitting_photos(int scenes, std::uint64_t seed = 1);
 
 nlohmann::json tennis_sim_json(const TennisSimResult& result);
 std::string tennis_sim_table(const TennisSimResult& result);
