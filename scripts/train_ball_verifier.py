@@ -4,10 +4,11 @@
 OpenCV's DNN module (detect/ball_verifier.hpp).
 
     scripts/train_ball_verifier.py --train PREFIX [--train PREFIX ...] \
-        [--score PREFIX ...] --seed 1 --out model.onnx
+        [--synthetic N] [--score PREFIX ...] --seed 1 --out model.onnx
 
 PREFIX.npy holds uint8 patches N x 32 x 32 x 3 (BGR), PREFIX.csv their truth;
-unknown ones are left out. The network sees BGR / 255. Deterministic for a
+unknown ones are left out. --synthetic adds N patches of the patch simulator
+(ball_patch_sim.py). The network sees BGR / 255. Deterministic for a
 seed on one thread. Needs Debian's python3-torch and python3-onnx.
 """
 import argparse
@@ -17,6 +18,8 @@ import sys
 import numpy as np
 import torch
 from torch import nn
+
+import ball_patch_sim
 
 
 def load(prefix):
@@ -80,6 +83,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--train", action="append", required=True, metavar="PREFIX")
     p.add_argument("--score", action="append", default=[], metavar="PREFIX")
+    p.add_argument("--synthetic", type=int, default=0, metavar="N")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--epochs", type=int, default=12)
     p.add_argument("--out", required=True)
@@ -89,6 +93,8 @@ def main():
     torch.set_num_threads(1)
     gen = torch.Generator().manual_seed(args.seed)
     sets = [load(prefix) for prefix in args.train]
+    if args.synthetic > 0:
+        sets.append(ball_patch_sim.patches(args.synthetic, np.random.default_rng(args.seed)))
     x = to_tensor(np.concatenate([s[0] for s in sets]))
     y = torch.from_numpy(np.concatenate([s[1] for s in sets]))
     print(f"training on {len(y)} patches, {int(y.sum())} balls")
@@ -96,7 +102,7 @@ def main():
     net = network()
     optimiser = torch.optim.Adam(net.parameters(), lr=2e-3)
     # Balls are few: weigh them so that both classes count alike.
-    weight = torch.tensor((len(y) - y.sum()) / max(y.sum(), 1))
+    weight = (len(y) - y.sum()) / max(y.sum(), 1)
     loss_fn = nn.BCEWithLogitsLoss(pos_weight=weight)
     for epoch in range(args.epochs):
         order = torch.randperm(len(y), generator=gen)

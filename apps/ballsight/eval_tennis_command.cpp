@@ -51,6 +51,7 @@ void add_eval_tennis_command(CLI::App& eval) {
     DetectRealOptions options;
     std::optional<std::string> colours;
     std::optional<std::string> detector;
+    std::optional<std::string> verifier;
     std::optional<std::string> draw;
     bool json = false;
   };
@@ -79,13 +80,22 @@ void add_eval_tennis_command(CLI::App& eval) {
                   "the shipped settings were)")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
-  cmd->add_option("--methods", args->options.methods, "Which methods to run (comma-separated)")
-      ->delimiter(',')
-      ->check(CLI::IsMember(
-          std::vector<std::string>(kDetectRealMethods.begin(), kDetectRealMethods.end())))
-      ->capture_default_str();
+  CLI::Option* methods =
+      cmd->add_option("--methods", args->options.methods, "Which methods to run (comma-separated)")
+          ->delimiter(',')
+          ->check(CLI::IsMember(
+              std::vector<std::string>(kDetectRealMethods.begin(), kDetectRealMethods.end())))
+          ->capture_default_str();
+  cmd->add_option("--verifier", args->verifier,
+                  "A ball verifier (ONNX, scripts/train_ball_verifier.py): also score the "
+                  "\"verified\" method")
+      ->type_name("FILE");
   cmd->add_flag("--json", args->json, "Print JSON instead of a table");
-  cmd->callback([args] {
+  cmd->callback([args, methods] {
+    if (args->verifier) {
+      args->options.verifier = *args->verifier;
+      if (methods->count() == 0) args->options.methods.emplace_back(kDetectRealMethods[3]);
+    }
     if (args->detector) args->options.shipped = read_photo_ball_options(*args->detector);
     if (args->colours) args->options.shipped.colours = read_ball_colours(*args->colours);
     if (args->draw) args->options.draw_dir = *args->draw;

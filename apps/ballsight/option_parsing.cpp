@@ -70,6 +70,16 @@ void add_court_scene_options(CLI::App& command, int& scenes, sim::CourtRigOption
   command.add_option("--height", rig.height, "Camera image height, px")->capture_default_str();
   command.add_flag("--distractors", scenario.distractors,
                    "Fallen leaves and a water bottle of a ball's colour on some scenes");
+  command
+      .add_option("--jpeg-quality", scenario.jpeg_quality,
+                  "Every frame saved as a JPEG of this quality and decoded (0: none)")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+  command
+      .add_option("--motion-blur-px", scenario.motion_blur_px,
+                  "Every frame smeared by this many pixels, in a direction drawn per scene")
+      ->check(CLI::Range(0.0, 64.0))
+      ->capture_default_str();
   add_court_look_options(command, court, scenario);
 }
 

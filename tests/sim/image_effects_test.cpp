@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "ballsight/core/error.hpp"
 
@@ -50,6 +53,62 @@ TEST(ImageEffects, AColourCastScalesEachChannelOnTopOfTheBrightness) {
   EXPECT_EQ(image.at<cv::Vec3b>(2, 1), cv::Vec3b(40, 80, 120));
   effects.channel_gain = {1.0, 0.0, 1.0};
   EXPECT_THROW(apply_image_effects(image, effects, 1), InputError);
+}
+
+// A white dot smeared along a direction spreads over the smear's length along it and stays one
+// pixel wide across it; the light it spreads is kept.
+TEST(ImageEffects, AMotionBlurSmearsAlongItsDirection) {
+  for (const double deg : {0.0, 90.0, 30.0}) {
+    SCOPED_TRACE(deg);
+    cv::Mat image(41, 41, CV_8UC3, cv::Scalar::all(0));
+    image.at<cv::Vec3b>(20, 20) = cv::Vec3b(250, 250, 250);
+    ImageEffects effects;
+    effects.motion_blur_px = 10.0;
+    effects.motion_blur_deg = deg;
+    apply_image_effects(image, effects, 1);
+    cv::Mat grey;
+    cv::extractChannel(image, grey, 0);
+    EXPECT_NEAR(cv::sum(grey)[0], 250.0, 12.0);  // rounding per pixel
+    double spread_along = 0.0, spread_across = 0.0, total = 0.0;
+    const double a = deg * std::numbers::pi / 180.0;
+    for (int y = 0; y < grey.rows; ++y)
+      for (int x = 0; x < grey.cols; ++x) {
+        const double w = grey.at<uchar>(y, x);
+        const double u = (x - 20) * std::cos(a) + (y - 20) * std::sin(a);
+        const double v = -(x - 20) * std::sin(a) + (y - 20) * std::cos(a);
+        spread_along += w * u * u;
+        spread_across += w * v * v;
+        total += w;
+      }
+    // A box of length L has a variance of L^2 / 12; across it, the spread of the bilinear taps.
+    EXPECT_NEAR(std::sqrt(spread_along / total), 10.0 / std::sqrt(12.0), 0.4);
+    EXPECT_LT(std::sqrt(spread_across / total), 0.5);
+  }
+  ImageEffects bad;
+  bad.motion_blur_px = -1.0;
+  EXPECT_THROW(bad.validate(), InputError);
+}
+
+// Saved as a JPEG and decoded: the blocks and the halved chroma of a phone's or an IP camera's
+// frame, the same bytes for the same quality, and a smaller change at a higher quality.
+TEST(ImageEffects, AJpegRoundTripLosesDetailByItsQuality) {
+  cv::Mat image(64, 64, CV_8UC3, cv::Scalar(90, 140, 60));
+  cv::circle(image, {30, 30}, 6, cv::Scalar(45, 235, 215), -1, cv::LINE_AA);
+  const auto saved = [&](int quality) {
+    cv::Mat out = image.clone();
+    ImageEffects effects;
+    effects.jpeg_quality = quality;
+    apply_image_effects(out, effects, 1);
+    return out;
+  };
+  EXPECT_EQ(cv::norm(saved(40), saved(40), cv::NORM_INF), 0.0);
+  const double low = cv::norm(saved(20), image, cv::NORM_L1);
+  const double high = cv::norm(saved(95), image, cv::NORM_L1);
+  EXPECT_GT(low, 0.0);
+  EXPECT_LT(high, low);
+  ImageEffects bad;
+  bad.jpeg_quality = 101;
+  EXPECT_THROW(bad.validate(), InputError);
 }
 
 }  // namespace

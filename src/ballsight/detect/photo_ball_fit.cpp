@@ -119,9 +119,14 @@ PhotoSources read_photo_sources(const std::filesystem::path& root,
 }
 
 BallMatch score_photos(PhotoBallDetector& detector, const LabelledPhotos& photos) {
+  return score_photos(photos, [&](std::size_t k) { return detector.detect(photos.images[k]); });
+}
+
+BallMatch score_photos(const LabelledPhotos& photos,
+                       const std::function<std::vector<PhotoBall>(std::size_t)>& balls_of) {
   BallMatch total;
   for (std::size_t k = 0; k < photos.images.size(); ++k) {
-    std::vector<PhotoBall> balls = detector.detect(photos.images[k]);
+    std::vector<PhotoBall> balls = balls_of(k);
     if (k < photos.ignored.size())
       balls = without_ignored(balls, photos.labels[k], photos.ignored[k]);
     add_match(total, match_balls_to_labels(photos.labels[k], balls, photos.images[k].size()));

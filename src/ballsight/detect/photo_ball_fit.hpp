@@ -9,6 +9,7 @@
 // names], "mean_f1": the objective reached}.
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <span>
@@ -45,6 +46,9 @@ PhotoSources read_photo_sources(const std::filesystem::path& root,
 
 /// A source's match when `detector` looks at every photo of it.
 BallMatch score_photos(PhotoBallDetector& detector, const LabelledPhotos& photos);
+/// A source's match for the balls `balls_of(k)` in photo k.
+BallMatch score_photos(const LabelledPhotos& photos,
+                       const std::function<std::vector<PhotoBall>(std::size_t)>& balls_of);
 
 struct PhotoBallFit {
   PhotoBallOptions options;

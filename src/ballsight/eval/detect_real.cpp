@@ -14,6 +14,7 @@
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/statistics.hpp"
 #include "ballsight/core/text_format.hpp"
+#include "ballsight/detect/ball_verifier.hpp"
 #include "ballsight/detect/photo_ball_fit.hpp"
 #include "ballsight/detect/seed_detector.hpp"
 #include "ballsight/eval/tennis_sim.hpp"
@@ -79,6 +80,32 @@ SourceScore score_detector(const std::string& method, const PhotoBallOptions& se
   return score_source(
       method, [&detector](const cv::Mat& bgr) { return detector.detect(bgr); }, photos, growth,
       draw_dir);
+}
+
+// The verified method on sources[s], its threshold fitted on the other sources.
+SourceScore score_verified(const std::vector<LabelledPhotos>& sources,
+                           const std::vector<std::vector<VerifiedPhoto>>& verified, std::size_t s,
+                           const PhotoBallOptions& shipped, BallVerifier& verifier,
+                           const ColorClassTable& growth, const fs::path& draw_dir) {
+  std::vector<LabelledPhotos> others;
+  std::vector<std::vector<VerifiedPhoto>> seen;
+  for (std::size_t o = 0; o < sources.size(); ++o) {
+    if (o == s) continue;
+    others.push_back(sources[o]);
+    seen.push_back(verified[o]);
+  }
+  const double min_probability = fit_min_probability(others, seen);
+  PhotoBallDetector detector(shipped);
+  SourceScore score = score_source(
+      kDetectRealMethods[3],
+      [&](const cv::Mat& bgr) {
+        const std::vector<BallCandidate> candidates = find_ball_candidates(bgr);
+        return with_verified_candidates(detector.detect(bgr), candidates,
+                                        verifier.probabilities(bgr, candidates), min_probability);
+      },
+      sources[s], growth, draw_dir);
+  score.fit = {{"min_probability", min_probability}};
+  return score;
 }
 
 nlohmann::json misses_json(const std::array<int, kMissCauses>& misses) {
@@ -168,6 +195,15 @@ DetectRealResult run_detect_real(const DetectRealOptions& options) {
       options.sim_scenes > 0 && wanted(kDetectRealMethods[0])
           ? std::optional(simulated_fitting_photos(options.sim_scenes))
           : std::nullopt;
+  std::optional<BallVerifier> verifier;
+  std::vector<std::vector<VerifiedPhoto>> verified;  // per source
+  if (wanted(kDetectRealMethods[3])) {
+    require(!options.verifier.empty(), "methods", "verified needs a verifier model (--verifier)");
+    verifier = BallVerifier::read(options.verifier);
+    PhotoBallDetector detector(options.shipped);
+    for (const LabelledPhotos& source : sources)
+      verified.push_back(verify_photos(detector, *verifier, source));
+  }
   for (std::size_t s = 0; s < sources.size(); ++s) {
     std::vector<LabelledPhotos> others;
     for (std::size_t o = 0; o < sources.size(); ++o)
@@ -186,6 +222,9 @@ DetectRealResult run_detect_real(const DetectRealOptions& options) {
     if (wanted(kDetectRealMethods[2]))
       add(kDetectRealMethods[2], score_source(kDetectRealMethods[2], report_hsv_balls, sources[s],
                                               growth, options.draw_dir));
+    if (verifier && sources.size() > 1)
+      add(kDetectRealMethods[3], score_verified(sources, verified, s, options.shipped, *verifier,
+                                                growth, options.draw_dir));
   }
   return result;
 }

@@ -48,8 +48,10 @@ struct DetectRealResult {
   std::vector<DetectRealMethod> methods;
 };
 
-inline constexpr std::array<const char*, 3> kDetectRealMethods{"leave-one-source-out", "shipped",
-                                                               "report-hsv"};
+/// "verified": the shipped detector with the candidates a learned verifier (--verifier) takes
+/// for balls, its threshold fitted leave one source out (detect/ball_verifier.hpp).
+inline constexpr std::array<const char*, 4> kDetectRealMethods{"leave-one-source-out", "shipped",
+                                                               "report-hsv", "verified"};
 
 /// The simulator's scenes the shipped settings were fitted on (their JSON names the command).
 inline constexpr int kShippedSimScenes = 4;
@@ -62,7 +64,9 @@ struct DetectRealOptions {
   /// as the shipped settings were: `detect fit --sim-scenes`); 0: none.
   int sim_scenes = kShippedSimScenes;
   /// Which of kDetectRealMethods to run, in that order whatever the order here.
-  std::vector<std::string> methods{kDetectRealMethods.begin(), kDetectRealMethods.end()};
+  std::vector<std::string> methods{kDetectRealMethods.begin(), kDetectRealMethods.begin() + 3};
+  /// The verifier's ONNX model (scripts/train_ball_verifier.py), which "verified" needs.
+  std::filesystem::path verifier;
   /// Draws every image's labels (green) and each method's detections (magenta) into this folder
   /// as <method>/<source>/<image>.png; nothing when empty.
   std::filesystem::path draw_dir;

@@ -156,6 +156,8 @@ void CourtScenarioOptions::validate() const {
   ImageEffects effects;
   effects.noise_sigma = noise_sigma;
   if (brightness_gain) effects.brightness_gain = *brightness_gain;
+  effects.jpeg_quality = jpeg_quality;
+  effects.motion_blur_px = motion_blur_px;
   effects.validate();
 }
 
@@ -278,6 +280,11 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
     scene.bottles.push_back(bottle);
   }
   scene.effects.noise_sigma = options.noise_sigma;
+  scene.effects.jpeg_quality = options.jpeg_quality;
+  if (options.motion_blur_px > 0.0) {
+    scene.effects.motion_blur_px = options.motion_blur_px;
+    scene.effects.motion_blur_deg = uniform(rng, 0.0, 180.0);
+  }
   scene.validate();
   return scene;
 }

@@ -30,6 +30,12 @@ struct CourtScenarioOptions {
   /// (most of them yellow-green), on about a quarter a yellow-green water bottle standing.
   /// Off by default: the court detector does not reject all of them yet (docs/court-eval.md).
   bool distractors = false;
+  /// Every frame saved as a JPEG of this quality and decoded (ImageEffects::jpeg_quality); 0:
+  /// none.
+  int jpeg_quality = 0;
+  /// Every frame smeared by this many pixels (ImageEffects::motion_blur_px), in a direction
+  /// drawn per scene; 0: none. Drawn last, so that the scenes of a seed stay as they were.
+  double motion_blur_px = 0.0;
 
   static constexpr int kMaxBalls = 200;
   /// Throws InputError naming the first invalid field.

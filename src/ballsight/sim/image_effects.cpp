@@ -2,8 +2,11 @@
 
 #include <array>
 #include <cmath>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
+#include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight::sim {
@@ -56,6 +59,30 @@ void add_quantile_noise(cv::Mat& bgr, double sigma, std::uint64_t seed) {
   }
 }
 
+// A box smear of `length` px along `deg` (the kernel a line of that length, drawn
+// anti-aliased), the image's edges repeated.
+void smear(cv::Mat& bgr, double length, double deg) {
+  const int half = static_cast<int>(std::ceil(length / 2.0));
+  const int size = 2 * half + 1;
+  cv::Mat1f kernel(size, size, 0.0f);
+  const double a = rad_from_deg(deg);
+  // Samples along the line, a tenth of a pixel apart, each spread bilinearly.
+  const int samples = std::max(2, static_cast<int>(std::ceil(length * 10.0)));
+  for (int i = 0; i < samples; ++i) {
+    const double t = length * ((i + 0.5) / samples - 0.5);
+    const double x = half + t * std::cos(a), y = half + t * std::sin(a);
+    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+    const double fx = x - x0, fy = y - y0;
+    for (int dy = 0; dy <= 1; ++dy)
+      for (int dx = 0; dx <= 1; ++dx)
+        if (x0 + dx < size && y0 + dy < size)
+          kernel(y0 + dy, x0 + dx) +=
+              static_cast<float>((dx ? fx : 1.0 - fx) * (dy ? fy : 1.0 - fy));
+  }
+  kernel /= cv::sum(kernel)[0];
+  cv::filter2D(bgr, bgr, -1, kernel, cv::Point(-1, -1), 0.0, cv::BORDER_REPLICATE);
+}
+
 }  // namespace
 
 void ImageEffects::validate() const {
@@ -65,6 +92,11 @@ void ImageEffects::validate() const {
           "sigma must be in [0, 10] px");
   require(std::isfinite(noise_sigma) && noise_sigma >= 0.0 && noise_sigma <= 64.0, "noise",
           "sigma must be in [0, 64] grey levels");
+  require(std::isfinite(motion_blur_px) && motion_blur_px >= 0.0 && motion_blur_px <= 64.0,
+          "motion_blur", "length must be in [0, 64] px");
+  require(std::isfinite(motion_blur_deg), "motion_blur", "direction must be finite");
+  require(jpeg_quality >= 0 && jpeg_quality <= 100, "jpeg_quality",
+          "must be in [1, 100], or 0 for none");
   for (int c = 0; c < 3; ++c)
     require(std::isfinite(channel_gain[c]) && channel_gain[c] > 0.0 && channel_gain[c] <= 2.0,
             "channel_gain", "each channel's gain must be in (0, 2]");
@@ -81,6 +113,7 @@ void apply_image_effects(cv::Mat& bgr, const ImageEffects& effects, std::uint64_
   if (effects.blur_sigma_px > 0.0) {
     cv::GaussianBlur(bgr, bgr, cv::Size(), effects.blur_sigma_px);
   }
+  if (effects.motion_blur_px > 0.0) smear(bgr, effects.motion_blur_px, effects.motion_blur_deg);
   if (effects.noise_sigma > 0.0 && effects.quantile_noise) {
     add_quantile_noise(bgr, effects.noise_sigma, seed);
   } else if (effects.noise_sigma > 0.0) {
@@ -91,6 +124,11 @@ void apply_image_effects(cv::Mat& bgr, const ImageEffects& effects, std::uint64_
     bgr.convertTo(sum, CV_16SC3);
     sum += noise;
     sum.convertTo(bgr, CV_8UC3);
+  }
+  if (effects.jpeg_quality > 0) {
+    std::vector<uchar> bytes;
+    cv::imencode(".jpg", bgr, bytes, {cv::IMWRITE_JPEG_QUALITY, effects.jpeg_quality});
+    bgr = cv::imdecode(bytes, cv::IMREAD_COLOR);
   }
 }
 
