@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <opencv2/imgproc.hpp>
 
 #include "ballsight/core/error.hpp"
 #include "temp_dir.hpp"
@@ -21,6 +24,54 @@ TEST(BallVerifier, AFileThatIsNoModelIsAnErrorNamingIt) {
   }
   EXPECT_THROW(BallVerifier::read(dir / "missing.onnx"), InputError);
   EXPECT_THROW(BallVerifier("", "empty"), InputError);
+}
+
+// The smallest verifier (scripts/make_mean_colour_verifier.py): the logit is 40 times the mean
+// yellowness G + R - 2 B (of BGR / 255) of the patch's middle half less that of the rest, less 3.
+const std::filesystem::path kMeanColourModel =
+    std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "tests/detect/data/mean_colour_verifier.onnx";
+
+TEST(BallVerifier, RunsAModelOnEachCandidatesPatch) {
+  BallVerifier verifier = BallVerifier::read(kMeanColourModel);
+  cv::Mat image(120, 160, CV_8UC3, cv::Scalar(128, 128, 128));
+  image(cv::Rect(20, 20, 21, 21)).setTo(cv::Scalar(40, 220, 200));
+  // The square fills the middle half of the first patch, all of the third; the second is grey.
+  const std::vector<BallCandidate> candidates{
+      {Vec2(30.0, 30.0), 10.5, 1.0}, {Vec2(120.0, 80.0), 10.0, 1.0}, {Vec2(30.0, 30.0), 2.5, 1.0}};
+  const std::vector<double> p = verifier.probabilities(image, candidates);
+  ASSERT_EQ(p.size(), 3u);
+  // Yellow in the middle: 40 * (220 + 200 - 80) / 255 - 3 = 50.3; even: -3.
+  EXPECT_NEAR(p[0], 1.0, 1e-6);
+  EXPECT_NEAR(p[1], 1.0 / (1.0 + std::exp(3.0)), 1e-4);
+  EXPECT_NEAR(p[2], 1.0 / (1.0 + std::exp(3.0)), 1e-4);
+  EXPECT_TRUE(verifier.probabilities(image, {}).empty());
+}
+
+// The threshold is the one of the best F1 on the sources: a yellow ball on a grey floor, which
+// the verifier finds and a detector of pink balls does not.
+TEST(BallVerifier, TheThresholdIsFittedOnTheLabelledSources) {
+  BallVerifier verifier = BallVerifier::read(kMeanColourModel);
+  cv::Mat image(120, 160, CV_8UC3, cv::Scalar(128, 128, 128));
+  cv::circle(image, {30, 30}, 10, cv::Scalar(40, 220, 200), -1, cv::LINE_AA);
+  LabelledPhotos photos{"drawn", {"square.png"}, {image}, {{{Vec2(30.0, 30.0), 10.0}}}, {}};
+  // The detector looks for pink balls only: it finds nothing.
+  PhotoBallOptions options;
+  BallColour pink{"pink", {}, {}};
+  pink.seed = {300.0, 340.0, 0.0, 0.5, 80.0};
+  pink.grow = {290.0, 350.0, 0.0, 0.3, 40.0};
+  options.colours = BallColours{{pink}};
+  PhotoBallDetector detector(options);
+  const std::vector<std::vector<VerifiedPhoto>> seen{verify_photos(detector, verifier, photos)};
+  ASSERT_EQ(seen[0].size(), 1u);
+  EXPECT_TRUE(seen[0][0].balls.empty());
+  EXPECT_FALSE(seen[0][0].candidates.empty());
+  const double t = fit_min_probability(std::span<const LabelledPhotos>(&photos, 1), seen);
+  const std::vector<PhotoBall> kept =
+      with_verified_candidates(seen[0][0].balls, seen[0][0].candidates, seen[0][0].probability, t);
+  const BallMatch match = score_photos(photos, [&](std::size_t) { return kept; });
+  EXPECT_EQ(match.matched, 1);
+  EXPECT_EQ(match.detected, 1);
+  EXPECT_LE(t, 1.0);
 }
 
 TEST(BallVerifier, CandidatesAreAddedBestFirstWhereNoBallIs) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <numeric>
 
 #include "ballsight/core/error.hpp"
@@ -15,6 +16,9 @@ BallVerifier::BallVerifier(std::string_view onnx, const std::string& where) {
     net_ = cv::dnn::readNetFromONNX(onnx.data(), onnx.size());
   } catch (const cv::Exception&) {
     throw InputError(where + ": is no ONNX model OpenCV can read");
+  } catch (const std::bad_alloc&) {
+    // OpenCV's importer allocates what the file's sizes say (docs/detect-balls.md).
+    throw InputError(where + ": asks for more memory than there is (a corrupt model?)");
   }
   require(!net_.empty(), where, "holds an empty ONNX model");
   // The model must take patches and give one number each.
