@@ -8,6 +8,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/file_io.hpp"
+#include "ballsight/detect/onnx_sizes.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight {
@@ -30,6 +32,29 @@ TEST(BallVerifier, AFileThatIsNoModelIsAnErrorNamingIt) {
 // yellowness G + R - 2 B (of BGR / 255) of the patch's middle half less that of the rest, less 3.
 const std::filesystem::path kMeanColourModel =
     std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "tests/detect/data/mean_colour_verifier.onnx";
+
+// Models the fuzzer made that crash OpenCV 4.6's importer are refused before it reads them.
+TEST(BallVerifier, ATensorNotAsLongAsItsDimsSayIsRefusedBeforeOpenCvReadsIt) {
+  const std::filesystem::path corpus =
+      std::filesystem::path(BALLSIGHT_SOURCE_DIR) / "fuzz/corpus/ball_verifier_onnx";
+  const auto refusal = [](const std::filesystem::path& path) -> std::string {
+    try {
+      check_onnx_sizes(read_file(path), path.filename().string());
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(refusal(kMeanColourModel), "");
+  EXPECT_EQ(refusal(corpus / "raw_data_shorter_than_dims.onnx"),
+            "raw_data_shorter_than_dims.onnx: holds a tensor whose raw data is not as long as its "
+            "dims say");
+  EXPECT_NE(refusal(corpus / "unknown_data_type.onnx").find("unknown data type"),
+            std::string::npos);
+  EXPECT_NE(refusal(corpus / "external_data.onnx").find("outside the file"), std::string::npos);
+  EXPECT_NE(refusal(corpus / "truncated.onnx"), "");
+  EXPECT_THROW(BallVerifier::read(corpus / "raw_data_shorter_than_dims.onnx"), InputError);
+}
 
 TEST(BallVerifier, RunsAModelOnEachCandidatesPatch) {
   BallVerifier verifier = BallVerifier::read(kMeanColourModel);

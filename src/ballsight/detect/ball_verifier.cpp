@@ -8,16 +8,17 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/detect/ball_patches.hpp"
+#include "ballsight/detect/onnx_sizes.hpp"
 
 namespace ballsight {
 
 BallVerifier::BallVerifier(std::string_view onnx, const std::string& where) {
+  check_onnx_sizes(onnx, where);
   try {
     net_ = cv::dnn::readNetFromONNX(onnx.data(), onnx.size());
   } catch (const cv::Exception&) {
     throw InputError(where + ": is no ONNX model OpenCV can read");
   } catch (const std::bad_alloc&) {
-    // OpenCV's importer allocates what the file's sizes say (docs/detect-balls.md).
     throw InputError(where + ": asks for more memory than there is (a corrupt model?)");
   }
   require(!net_.empty(), where, "holds an empty ONNX model");
