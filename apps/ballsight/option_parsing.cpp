@@ -70,6 +70,18 @@ void add_court_scene_options(CLI::App& command, int& scenes, sim::CourtRigOption
   command.add_option("--height", rig.height, "Camera image height, px")->capture_default_str();
   command.add_flag("--distractors", scenario.distractors,
                    "Fallen leaves and a water bottle of a ball's colour on some scenes");
+  command.add_option_function<std::string>(
+      "--camera-height-m",
+      [&rig](const std::string& text) {
+        const std::vector<double> range =
+            parse_numbers(text, 2, "--camera-height-m", "MIN,MAX in metres");
+        require(range[0] >= 0.2 && range[1] >= range[0] && range[1] <= 30.0, "--camera-height-m",
+                "MIN must be at least 0.2 m and MAX within [MIN, 30] m");
+        rig.pole_height_min_m = range[0];
+        rig.pole_height_max_m = range[1];
+      },
+      "The cameras' heights, each drawn in MIN,MAX (default 4,6: corner masts; 0.3,0.5: a "
+      "robot's view across the court)");
   command
       .add_option("--jpeg-quality", scenario.jpeg_quality,
                   "Every frame saved as a JPEG of this quality and decoded (0: none)")

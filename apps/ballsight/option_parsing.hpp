@@ -38,8 +38,9 @@ std::optional<sim::LightCondition> parse_light(const std::string& name);
 void add_court_look_options(CLI::App& command, sim::TennisCourtSpec& court,
                             sim::CourtScenarioOptions& scenario);
 
-/// Adds the simulated court's `--scenes`, `--width`, `--height` and `--distractors`, and the
-/// court look options above (eval court, eval tennis-sim).
+/// Adds the simulated court's `--scenes`, `--width`, `--height`, `--distractors`,
+/// `--camera-height-m`, `--jpeg-quality` and `--motion-blur-px`, and the court look options above
+/// (eval court, eval tennis-sim).
 void add_court_scene_options(CLI::App& command, int& scenes, sim::CourtRigOptions& rig,
                              sim::TennisCourtSpec& court, sim::CourtScenarioOptions& scenario);
 

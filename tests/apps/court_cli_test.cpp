@@ -139,6 +139,9 @@ TEST(EvalCourtCli, JsonShapeAndPictures) {
     EXPECT_TRUE(fs::exists(temp / "plots" / picture)) << picture;
   expect_one_line_error(run_cli({"eval", "court", "--scenes", "0"}), "scenes");
   expect_one_line_error(run_cli({"eval", "court", "--plot-mistakes"}), "--plot-dir");
+  expect_one_line_error(run_cli({"eval", "court", "--camera-height-m", "5,1"}),
+                        "--camera-height-m");
+  expect_one_line_error(run_cli({"eval", "tennis-sim", "--jpeg-quality", "101"}), "--jpeg-quality");
 }
 
 }  // namespace

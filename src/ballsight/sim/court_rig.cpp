@@ -53,8 +53,8 @@ void CourtRigOptions::validate() const {
   require(height >= 32 && height <= 8192, "height", "must be in [32, 8192] px");
   require(std::isfinite(hfov_deg) && hfov_deg >= 40.0 && hfov_deg <= 110.0, "hfov_deg",
           "must be in [40, 110] degrees");
-  require(std::isfinite(pole_height_min_m) && pole_height_min_m >= 1.0, "pole_height_min_m",
-          "must be at least 1 m");
+  require(std::isfinite(pole_height_min_m) && pole_height_min_m >= 0.2, "pole_height_min_m",
+          "must be at least 0.2 m");
   require(std::isfinite(pole_height_max_m) && pole_height_max_m >= pole_height_min_m &&
               pole_height_max_m <= 30.0,
           "pole_height_max_m", "must be in [pole_height_min_m, 30] m");

@@ -35,6 +35,8 @@ struct CourtRigOptions {
   int width = 1280;
   int height = 720;
   double hfov_deg = 90.0;  // horizontal field of view including the lens distortion
+  /// Each camera's height, drawn in this range: a corner mast by default, down to a robot's
+  /// camera a few decimetres above the court.
   double pole_height_min_m = 4.0;
   double pole_height_max_m = 6.0;
 
