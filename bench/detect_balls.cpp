@@ -15,8 +15,8 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <thread>
 #include <opencv2/imgproc.hpp>
+#include <thread>
 #include <vector>
 
 #include "ballsight/camera/image_file.hpp"
