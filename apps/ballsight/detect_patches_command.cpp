@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ballsight/core/enum_names.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/detect/ball_patches.hpp"
@@ -44,17 +45,9 @@ std::string npy_header(std::size_t count) {
   return header + dict;
 }
 
-const char* truth_name(CandidateTruth truth) {
-  switch (truth) {
-    case CandidateTruth::ball:
-      return "ball";
-    case CandidateTruth::not_ball:
-      return "not_ball";
-    case CandidateTruth::unknown:
-      break;
-  }
-  return "unknown";
-}
+constexpr EnumNames<CandidateTruth, 3> kTruthNames{{{CandidateTruth::ball, "ball"},
+                                                    {CandidateTruth::not_ball, "not_ball"},
+                                                    {CandidateTruth::unknown, "unknown"}}};
 
 void run_patches(const PatchArgs& args) {
   std::vector<LabelledPhotos> photos =
@@ -83,7 +76,7 @@ void run_patches(const PatchArgs& args) {
         const BallCandidate& c = candidates[k];
         csv << source.source << ",\"" << source.files[i] << "\"," << c.center_px.x() << ","
             << c.center_px.y() << "," << c.radius_px << "," << c.response << ","
-            << truth_name(truth[k]) << "\n";
+            << enum_name(kTruthNames, truth[k]) << "\n";
         ++count;
       }
     }

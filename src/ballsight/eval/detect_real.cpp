@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "ballsight/camera/image_file.hpp"
+#include "ballsight/core/enum_names.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/statistics.hpp"
@@ -108,29 +109,23 @@ SourceScore score_verified(const std::vector<LabelledPhotos>& sources,
   return score;
 }
 
+constexpr EnumNames<MissCause, kMissCauses> kMissCauseNames{{{MissCause::border, "border"},
+                                                             {MissCause::small, "small"},
+                                                             {MissCause::touching, "touching"},
+                                                             {MissCause::off_colour, "off_colour"},
+                                                             {MissCause::other, "other"}}};
+
 nlohmann::json misses_json(const std::array<int, kMissCauses>& misses) {
   nlohmann::json json = nlohmann::json::object();
   for (std::size_t c = 0; c < kMissCauses; ++c)
-    json[miss_cause_name(static_cast<MissCause>(c))] = misses[c];
+    json[std::string(miss_cause_name(static_cast<MissCause>(c)))] = misses[c];
   return json;
 }
 
 }  // namespace
 
-const char* miss_cause_name(MissCause cause) {
-  switch (cause) {
-    case MissCause::border:
-      return "border";
-    case MissCause::small:
-      return "small";
-    case MissCause::touching:
-      return "touching";
-    case MissCause::off_colour:
-      return "off_colour";
-    case MissCause::other:
-      break;
-  }
-  return "other";
+std::string_view miss_cause_name(MissCause cause) {
+  return enum_name(kMissCauseNames, cause);
 }
 
 MissCause miss_cause(const cv::Mat& bgr, std::span<const LabelledBall> labels, std::size_t k,

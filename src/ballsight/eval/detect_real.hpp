@@ -11,6 +11,7 @@
 #include <opencv2/core.hpp>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ballsight/detect/ball_labels.hpp"
@@ -25,7 +26,7 @@ namespace ballsight {
 /// shipped colour model's growth colours; none of these.
 enum class MissCause { border, small, touching, off_colour, other };
 inline constexpr std::size_t kMissCauses = 5;
-const char* miss_cause_name(MissCause cause);
+std::string_view miss_cause_name(MissCause cause);
 
 /// The cause of missing `labels[k]` in `bgr`; `growth` classifies the inner disc's pixels.
 MissCause miss_cause(const cv::Mat& bgr, std::span<const LabelledBall> labels, std::size_t k,
