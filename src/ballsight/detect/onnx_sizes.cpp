@@ -112,68 +112,53 @@ class OnnxWalk {
   explicit OnnxWalk(const std::string& where) : where_(where) {}
 
   void model(std::string_view bytes) {
-    WireReader in(bytes, where_);
-    while (!in.done()) {
-      const auto [field, wire] = in.read_tag();
-      if (field == 7 && wire == length)  // ModelProto.graph
-        graph(in.read_bytes(), 0);
-      else
-        in.skip(wire);
-    }
+    messages(bytes, [&](std::uint64_t field, std::string_view message) {
+      if (field == 7) graph(message, 0);  // ModelProto.graph
+    });
   }
 
  private:
-  void graph(std::string_view bytes, int depth) {
-    require(depth <= kMaxDepth, where_, "nests its graphs too deep");
+  // Calls visit(field, bytes) for each length-delimited field of a message (the nested messages
+  // among them), skipping the others.
+  template <typename Visit>
+  void messages(std::string_view bytes, Visit visit) const {
     WireReader in(bytes, where_);
     while (!in.done()) {
       const auto [field, wire] = in.read_tag();
-      if (field == 1 && wire == length)  // GraphProto.node
-        node(in.read_bytes(), depth);
-      else if (field == 5 && wire == length)  // GraphProto.initializer
-        tensor(in.read_bytes());
-      else if (field == 15 && wire == length)  // GraphProto.sparse_initializer
-        sparse_tensor(in.read_bytes());
+      if (wire == length)
+        visit(field, in.read_bytes());
       else
         in.skip(wire);
     }
+  }
+
+  void graph(std::string_view bytes, int depth) {
+    require(depth <= kMaxDepth, where_, "nests its graphs too deep");
+    messages(bytes, [&](std::uint64_t field, std::string_view message) {
+      if (field == 1) node(message, depth);     // GraphProto.node
+      if (field == 5) tensor(message);          // GraphProto.initializer
+      if (field == 15) sparse_tensor(message);  // GraphProto.sparse_initializer
+    });
   }
 
   void node(std::string_view bytes, int depth) {
-    WireReader in(bytes, where_);
-    while (!in.done()) {
-      const auto [field, wire] = in.read_tag();
-      if (field == 5 && wire == length)  // NodeProto.attribute
-        attribute(in.read_bytes(), depth);
-      else
-        in.skip(wire);
-    }
+    messages(bytes, [&](std::uint64_t field, std::string_view message) {
+      if (field == 5) attribute(message, depth);  // NodeProto.attribute
+    });
   }
 
   void attribute(std::string_view bytes, int depth) {
-    WireReader in(bytes, where_);
-    while (!in.done()) {
-      const auto [field, wire] = in.read_tag();
-      if ((field == 5 || field == 10) && wire == length)  // AttributeProto.t, .tensors
-        tensor(in.read_bytes());
-      else if ((field == 6 || field == 11) && wire == length)  // AttributeProto.g, .graphs
-        graph(in.read_bytes(), depth + 1);
-      else if ((field == 22 || field == 23) && wire == length)  // .sparse_tensor(s)
-        sparse_tensor(in.read_bytes());
-      else
-        in.skip(wire);
-    }
+    messages(bytes, [&](std::uint64_t field, std::string_view message) {
+      if (field == 5 || field == 10) tensor(message);            // AttributeProto.t, .tensors
+      if (field == 6 || field == 11) graph(message, depth + 1);  // AttributeProto.g, .graphs
+      if (field == 22 || field == 23) sparse_tensor(message);    // .sparse_tensor(s)
+    });
   }
 
   void sparse_tensor(std::string_view bytes) {
-    WireReader in(bytes, where_);
-    while (!in.done()) {
-      const auto [field, wire] = in.read_tag();
-      if ((field == 1 || field == 2) && wire == length)  // values, indices
-        tensor(in.read_bytes());
-      else
-        in.skip(wire);
-    }
+    messages(bytes, [&](std::uint64_t field, std::string_view message) {
+      if (field == 1 || field == 2) tensor(message);  // SparseTensorProto.values, .indices
+    });
   }
 
   // Counts the elements of a repeated scalar field, packed (length) or one at a time.
@@ -241,15 +226,14 @@ class OnnxWalk {
       }
     }
     require(!external, where_, "keeps a tensor's data outside the file");
+    const std::string too_large =
+        "holds a tensor of more than " + std::to_string(kMaxOnnxTensorElements) + " elements";
     long long elements = 1;
     for (const std::uint64_t d : dims) {
-      require(
-          d <= static_cast<std::uint64_t>(kMaxOnnxTensorElements), where_,
-          "holds a tensor of more than " + std::to_string(kMaxOnnxTensorElements) + " elements");
+      // Each dim is bounded first, so that the product cannot overflow.
+      require(d <= static_cast<std::uint64_t>(kMaxOnnxTensorElements), where_, too_large);
       elements *= static_cast<long long>(d);
-      require(
-          elements <= kMaxOnnxTensorElements, where_,
-          "holds a tensor of more than " + std::to_string(kMaxOnnxTensorElements) + " elements");
+      require(elements <= kMaxOnnxTensorElements, where_, too_large);
     }
     const std::optional<long long> size = element_bytes(type);
     require(size.has_value(), where_, "holds a tensor of an unknown data type");
