@@ -67,9 +67,8 @@ void run_patches(const PatchArgs& args) {
   for (const LabelledPhotos& source : photos) {
     for (std::size_t i = 0; i < source.images.size(); ++i) {
       const std::vector<BallCandidate> candidates = find_ball_candidates(source.images[i]);
-      const std::vector<LabelledBall> none;
-      const std::vector<CandidateTruth> truth = candidate_truth(
-          candidates, source.labels[i], source.ignored.empty() ? none : source.ignored[i]);
+      const std::vector<CandidateTruth> truth =
+          candidate_truth(candidates, source.labels[i], source.ignored_in(i));
       for (std::size_t k = 0; k < candidates.size(); ++k) {
         const cv::Mat patch = ball_patch(source.images[i], candidates[k]);
         pixels.append(reinterpret_cast<const char*>(patch.data), patch.total() * 3);

@@ -91,8 +91,7 @@ TEST(BallVerifier, TheThresholdIsFittedOnTheLabelledSources) {
   EXPECT_TRUE(seen[0][0].balls.empty());
   EXPECT_FALSE(seen[0][0].candidates.empty());
   const double t = fit_min_probability(std::span<const LabelledPhotos>(&photos, 1), seen);
-  const std::vector<PhotoBall> kept =
-      with_verified_candidates(seen[0][0].balls, seen[0][0].candidates, seen[0][0].probability, t);
+  const std::vector<PhotoBall> kept = with_verified_candidates(seen[0][0], t);
   const BallMatch match = score_photos(photos, [&](std::size_t) { return kept; });
   EXPECT_EQ(match.matched, 1);
   EXPECT_EQ(match.detected, 1);
@@ -106,14 +105,14 @@ TEST(BallVerifier, CandidatesAreAddedBestFirstWhereNoBallIs) {
                                               {Vec2(103.0, 50.0), 6.0, 7.0},   // on the next
                                               {Vec2(200.0, 50.0), 6.0, 1.0}};  // unlikely
   const std::vector<double> probability{0.99, 0.95, 0.97, 0.5};
-  const std::vector<PhotoBall> out = with_verified_candidates(balls, candidates, probability, 0.9);
+  const std::vector<PhotoBall> out =
+      with_verified_candidates({balls, candidates, probability}, 0.9);
   ASSERT_EQ(out.size(), 2u);
   EXPECT_EQ(out[0].center_px, Vec2(50.0, 50.0));
   EXPECT_EQ(out[1].center_px, Vec2(103.0, 50.0));  // the likelier of the two that overlap
   EXPECT_DOUBLE_EQ(out[1].score, 0.97);
-  EXPECT_EQ(with_verified_candidates(balls, candidates, probability, 1.1).size(), 1u);
-  EXPECT_THROW(with_verified_candidates(balls, candidates, std::vector<double>{0.5}, 0.9),
-               InputError);
+  EXPECT_EQ(with_verified_candidates({balls, candidates, probability}, 1.1).size(), 1u);
+  EXPECT_THROW(with_verified_candidates({balls, candidates, {0.5}}, 0.9), InputError);
 }
 
 }  // namespace

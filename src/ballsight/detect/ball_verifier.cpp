@@ -52,12 +52,12 @@ std::vector<double> BallVerifier::probabilities(const cv::Mat& bgr,
   return out;
 }
 
-std::vector<PhotoBall> with_verified_candidates(std::vector<PhotoBall> balls,
-                                                std::span<const BallCandidate> candidates,
-                                                std::span<const double> probability,
-                                                double min_probability) {
+std::vector<PhotoBall> with_verified_candidates(const VerifiedPhoto& seen, double min_probability) {
+  const std::vector<BallCandidate>& candidates = seen.candidates;
+  const std::vector<double>& probability = seen.probability;
   require(probability.size() == candidates.size(), "verified candidates",
           "need one probability per candidate");
+  std::vector<PhotoBall> balls = seen.balls;
   std::vector<std::size_t> order(candidates.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -73,14 +73,17 @@ std::vector<PhotoBall> with_verified_candidates(std::vector<PhotoBall> balls,
   return balls;
 }
 
+VerifiedPhoto verify_photo(PhotoBallDetector& detector, BallVerifier& verifier,
+                           const cv::Mat& bgr) {
+  VerifiedPhoto seen{detector.detect(bgr), find_ball_candidates(bgr), {}};
+  seen.probability = verifier.probabilities(bgr, seen.candidates);
+  return seen;
+}
+
 std::vector<VerifiedPhoto> verify_photos(PhotoBallDetector& detector, BallVerifier& verifier,
                                          const LabelledPhotos& photos) {
   std::vector<VerifiedPhoto> out;
-  for (const cv::Mat& bgr : photos.images) {
-    VerifiedPhoto seen{detector.detect(bgr), find_ball_candidates(bgr), {}};
-    seen.probability = verifier.probabilities(bgr, seen.candidates);
-    out.push_back(std::move(seen));
-  }
+  for (const cv::Mat& bgr : photos.images) out.push_back(verify_photo(detector, verifier, bgr));
   return out;
 }
 
@@ -93,10 +96,8 @@ double fit_min_probability(std::span<const LabelledPhotos> sources,
   for (auto t = kVerifierThresholds.rbegin(); t != kVerifierThresholds.rend(); ++t) {
     double f1 = 0.0;
     for (std::size_t s = 0; s < sources.size(); ++s) {
-      const BallMatch total = score_photos(sources[s], [&](std::size_t i) {
-        const VerifiedPhoto& v = seen[s][i];
-        return with_verified_candidates(v.balls, v.candidates, v.probability, *t);
-      });
+      const BallMatch total = score_photos(
+          sources[s], [&](std::size_t i) { return with_verified_candidates(seen[s][i], *t); });
       f1 += f1_score(total) / static_cast<double>(sources.size());
     }
     if (f1 > best_f1) {

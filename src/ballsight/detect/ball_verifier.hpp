@@ -34,14 +34,6 @@ class BallVerifier {
   cv::dnn::Net net_;
 };
 
-/// The photo detector's balls and, after them, each candidate of `probability` at least
-/// `min_probability` (best first) that lies on no ball kept so far (centres farther apart than
-/// the larger radius); an added ball's score is its probability.
-std::vector<PhotoBall> with_verified_candidates(std::vector<PhotoBall> balls,
-                                                std::span<const BallCandidate> candidates,
-                                                std::span<const double> probability,
-                                                double min_probability);
-
 /// What the photo detector and the verifier make of one photo.
 struct VerifiedPhoto {
   std::vector<PhotoBall> balls;
@@ -49,9 +41,16 @@ struct VerifiedPhoto {
   std::vector<double> probability;  // per candidate
 };
 
-/// Every photo of a source seen by the detector and the verifier.
+/// The photo's balls as the detector finds them and the verifier's candidates.
+VerifiedPhoto verify_photo(PhotoBallDetector& detector, BallVerifier& verifier, const cv::Mat& bgr);
+/// Every photo of a source, verify_photo'd.
 std::vector<VerifiedPhoto> verify_photos(PhotoBallDetector& detector, BallVerifier& verifier,
                                          const LabelledPhotos& photos);
+
+/// The photo detector's balls and, after them, each candidate of probability at least
+/// `min_probability` (best first) that lies on no ball kept so far (centres farther apart than
+/// the larger radius); an added ball's score is its probability.
+std::vector<PhotoBall> with_verified_candidates(const VerifiedPhoto& seen, double min_probability);
 
 /// The thresholds fit_min_probability chooses from; above 1, no candidate is added.
 inline constexpr std::array<double, 7> kVerifierThresholds{0.9,     0.99,     0.999, 0.9999,

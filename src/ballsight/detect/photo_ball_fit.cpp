@@ -126,9 +126,8 @@ BallMatch score_photos(const LabelledPhotos& photos,
                        const std::function<std::vector<PhotoBall>(std::size_t)>& balls_of) {
   BallMatch total;
   for (std::size_t k = 0; k < photos.images.size(); ++k) {
-    std::vector<PhotoBall> balls = balls_of(k);
-    if (k < photos.ignored.size())
-      balls = without_ignored(balls, photos.labels[k], photos.ignored[k]);
+    const std::vector<PhotoBall> balls =
+        without_ignored(balls_of(k), photos.labels[k], photos.ignored_in(k));
     add_match(total, match_balls_to_labels(photos.labels[k], balls, photos.images[k].size()));
   }
   return total;

@@ -30,6 +30,12 @@ struct LabelledPhotos {
   /// Per image (or none): objects a detection on which is neither right nor wrong
   /// (without_ignored).
   std::vector<std::vector<LabelledBall>> ignored;
+
+  /// The ignored objects of photo k (none when the source has none).
+  std::span<const LabelledBall> ignored_in(std::size_t k) const {
+    return k < ignored.size() ? std::span<const LabelledBall>(ignored[k])
+                              : std::span<const LabelledBall>();
+  }
 };
 
 /// Decodes every image of `source`; throws InputError naming an unreadable one.

@@ -83,26 +83,27 @@ SourceScore score_detector(const std::string& method, const PhotoBallOptions& se
       draw_dir);
 }
 
-// The verified method on sources[s], its threshold fitted on the other sources.
+// Every item of `items` but the one at `left_out`, in order.
+template <typename T>
+std::vector<T> all_but(const std::vector<T>& items, std::size_t left_out) {
+  std::vector<T> out;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (i != left_out) out.push_back(items[i]);
+  return out;
+}
+
+// The verified method on sources[s], its threshold fitted on the other sources. The source's
+// photos are verified again as they are scored, so that their time is measured.
 SourceScore score_verified(const std::vector<LabelledPhotos>& sources,
                            const std::vector<std::vector<VerifiedPhoto>>& verified, std::size_t s,
                            const PhotoBallOptions& shipped, BallVerifier& verifier,
                            const ColorClassTable& growth, const fs::path& draw_dir) {
-  std::vector<LabelledPhotos> others;
-  std::vector<std::vector<VerifiedPhoto>> seen;
-  for (std::size_t o = 0; o < sources.size(); ++o) {
-    if (o == s) continue;
-    others.push_back(sources[o]);
-    seen.push_back(verified[o]);
-  }
-  const double min_probability = fit_min_probability(others, seen);
+  const double min_probability = fit_min_probability(all_but(sources, s), all_but(verified, s));
   PhotoBallDetector detector(shipped);
   SourceScore score = score_source(
       kDetectRealMethods[3],
       [&](const cv::Mat& bgr) {
-        const std::vector<BallCandidate> candidates = find_ball_candidates(bgr);
-        return with_verified_candidates(detector.detect(bgr), candidates,
-                                        verifier.probabilities(bgr, candidates), min_probability);
+        return with_verified_candidates(verify_photo(detector, verifier, bgr), min_probability);
       },
       sources[s], growth, draw_dir);
   score.fit = {{"min_probability", min_probability}};
@@ -196,13 +197,13 @@ DetectRealResult run_detect_real(const DetectRealOptions& options) {
     require(!options.verifier.empty(), "methods", "verified needs a verifier model (--verifier)");
     verifier = BallVerifier::read(options.verifier);
     PhotoBallDetector detector(options.shipped);
-    for (const LabelledPhotos& source : sources)
-      verified.push_back(verify_photos(detector, *verifier, source));
+    // With a single source there is nothing to fit the threshold on: no figure.
+    if (sources.size() > 1)
+      for (const LabelledPhotos& source : sources)
+        verified.push_back(verify_photos(detector, *verifier, source));
   }
   for (std::size_t s = 0; s < sources.size(); ++s) {
-    std::vector<LabelledPhotos> others;
-    for (std::size_t o = 0; o < sources.size(); ++o)
-      if (o != s) others.push_back(sources[o]);
+    std::vector<LabelledPhotos> others = all_but(sources, s);
     if (simulated) others.push_back(*simulated);
     if (wanted(kDetectRealMethods[0]) && others.size() > (simulated ? 1u : 0u)) {
       const PhotoBallFit fit = fit_photo_ball_detector(others, options.fit);
@@ -217,7 +218,7 @@ DetectRealResult run_detect_real(const DetectRealOptions& options) {
     if (wanted(kDetectRealMethods[2]))
       add(kDetectRealMethods[2], score_source(kDetectRealMethods[2], report_hsv_balls, sources[s],
                                               growth, options.draw_dir));
-    if (verifier && sources.size() > 1)
+    if (!verified.empty())
       add(kDetectRealMethods[3], score_verified(sources, verified, s, options.shipped, *verifier,
                                                 growth, options.draw_dir));
   }
