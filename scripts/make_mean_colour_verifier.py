@@ -3,7 +3,8 @@
 detect/ball_verifier.hpp: the mean yellowness (G + R - 2 B, of BGR / 255) of the
 patch's middle half less that of the rest, times 40, less 3, as the logit. A
 yellow ball's patch at its own size scores near 1; a grey one, or one inside a
-ball (yellow all over), near 0. Needs Debian's python3-torch and python3-onnx.
+ball (yellow all over), near 0. Needs Debian's python3-torch and python3-onnx
+(scripts/setup --training).
 
     scripts/make_mean_colour_verifier.py OUT.onnx
 """

@@ -9,7 +9,8 @@ OpenCV's DNN module (detect/ball_verifier.hpp).
 PREFIX.npy holds uint8 patches N x 32 x 32 x 3 (BGR), PREFIX.csv their truth;
 unknown ones are left out. --synthetic adds N patches of the patch simulator
 (ball_patch_sim.py). The network sees BGR / 255. Deterministic for a
-seed on one thread. Needs Debian's python3-torch and python3-onnx.
+seed on one thread. Needs Debian's python3-torch and python3-onnx (scripts/setup
+--training).
 """
 import argparse
 import csv

@@ -62,6 +62,7 @@ void add_omni_node_command(CLI::App& app);
 void add_detect_commands(CLI::App& app);
 /// `detect fit` (detect_fit_command.cpp), registered on the `detect` group.
 void add_detect_fit_command(CLI::App& detect);
+/// `detect patches` (detect_patches_command.cpp), registered on the `detect` group.
 void add_detect_patches_command(CLI::App& detect);
 
 }  // namespace ballsight::app
