@@ -105,9 +105,7 @@ std::uint64_t UpdatePublisher::publish_result(
       views[k].detections = std::move(*result.detections[k]);  // not needed past the world model
     }
   }
-  std::vector<Vec2> seen;
-  for (const FusedBall& b : result.world.balls) seen.push_back(b.position_m);
-  hub.confirm_collected(seen);
+  hub.frames_fused(result.world.capture_time_ns);
   const std::lock_guard plan_lock(plan_mutex_);
   last_world_ = std::move(result.world);
   const auto plan_started = Clock::now();

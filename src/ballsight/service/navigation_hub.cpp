@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <random>
+#include <tuple>
 
 #include "ballsight/core/error.hpp"
 
@@ -59,6 +60,13 @@ std::size_t first_index_after(const std::deque<NavigationUpdate>& recent, std::u
   if (recent.empty() || recent.back().seq <= after) return recent.size();
   const std::uint64_t first = recent.front().seq;
   return static_cast<std::size_t>(after + 1 > first ? after + 1 - first : 0);
+}
+
+std::vector<Vec2> positions(const std::vector<External<Vec2>>& reports) {
+  std::vector<Vec2> out;
+  out.reserve(reports.size());
+  for (const External<Vec2>& r : reports) out.push_back(r.value);
+  return out;
 }
 
 }  // namespace
@@ -124,7 +132,8 @@ std::optional<External<std::vector<Vec2>>> NavigationHub::balls() const {
 
 void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
   const std::lock_guard lock(mutex_);
-  collected_.insert(collected_.end(), positions.begin(), positions.end());
+  const std::int64_t now = utc_now_ns();
+  for (const Vec2& p : positions) collected_.push_back({p, now});
   if (collected_.size() > kMaxCollected) {
     collected_.erase(
         collected_.begin(),
@@ -132,24 +141,45 @@ void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
   }
 }
 
-bool reported_collected(const Vec2& p, const std::vector<Vec2>& collected) {
-  return std::any_of(collected.begin(), collected.end(),
-                     [&](const Vec2& q) { return (q - p).norm() < kCollectedMatchM; });
+std::vector<bool> taken_by_reports(const std::vector<Vec2>& balls,
+                                   const std::vector<Vec2>& collected) {
+  struct Pair {
+    double distance;
+    std::size_t report, ball;
+  };
+  std::vector<Pair> pairs;
+  for (std::size_t r = 0; r < collected.size(); ++r) {
+    for (std::size_t b = 0; b < balls.size(); ++b) {
+      const double d = (collected[r] - balls[b]).norm();
+      if (d < kCollectedMatchM) pairs.push_back({d, r, b});
+    }
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
+    return std::tie(a.distance, a.report, a.ball) < std::tie(b.distance, b.report, b.ball);
+  });
+  std::vector<bool> taken(balls.size(), false);
+  std::vector<bool> used(collected.size(), false);
+  for (const Pair& p : pairs) {
+    if (used[p.report] || taken[p.ball]) continue;
+    used[p.report] = true;
+    taken[p.ball] = true;
+  }
+  return taken;
 }
 
 ClientReports NavigationHub::reports() const {
   const std::lock_guard lock(mutex_);
-  return {robot_, balls_, collected_};
+  return {robot_, balls_, positions(collected_)};
 }
 
-void NavigationHub::confirm_collected(const std::vector<Vec2>& seen) {
+void NavigationHub::frames_fused(std::int64_t capture_ns) {
   const std::lock_guard lock(mutex_);
-  std::erase_if(collected_, [&](const Vec2& c) { return !reported_collected(c, seen); });
+  std::erase_if(collected_, [&](const External<Vec2>& c) { return c.set_ns < capture_ns; });
 }
 
 std::vector<Vec2> NavigationHub::collected() const {
   const std::lock_guard lock(mutex_);
-  return collected_;
+  return positions(collected_);
 }
 
 }  // namespace ballsight

@@ -44,14 +44,19 @@ struct External {
 struct ClientReports {
   std::optional<External<Pose2D>> robot;             // a pose a client set
   std::optional<External<std::vector<Vec2>>> balls;  // a ball list a client set
-  std::vector<Vec2> collected;  // balls the robot reported collected, not yet confirmed gone
+  /// Where the robot reported balls collected that no frames captured since have been fused
+  /// into a world model (the frames before the report may still show them).
+  std::vector<Vec2> collected;
 };
 
-/// A ball reported collected within this of a ball seen is that ball.
+/// A ball reported collected is a ball seen this close to where it was reported.
 constexpr double kCollectedMatchM = 0.30;
 
-/// Whether a ball at `p` is one of `collected` (within kCollectedMatchM).
-bool reported_collected(const Vec2& p, const std::vector<Vec2>& collected);
+/// Per ball of `balls`: whether one of the reports `collected` accounts for it. Each report takes
+/// one ball, the nearest within kCollectedMatchM that a nearer report did not take (the closest
+/// report-ball pairs first): a report in a cluster of balls stands for one ball, not the cluster.
+std::vector<bool> taken_by_reports(const std::vector<Vec2>& balls,
+                                   const std::vector<Vec2>& collected);
 
 class NavigationHub {
  public:
@@ -93,14 +98,17 @@ class NavigationHub {
   std::optional<External<Pose2D>> robot() const;
   void set_balls(std::vector<Vec2> balls);
   std::optional<External<std::vector<Vec2>>> balls() const;
-  /// Balls the robot reports collected: the planner leaves them out until the cameras confirm
-  /// they are gone. At most kMaxCollected are kept (the oldest go first).
+  /// Balls the robot reports collected (stamped now): the planner leaves them out until a world
+  /// model of frames captured after the report is made. At most kMaxCollected are kept (the
+  /// oldest go first).
   void add_collected(const std::vector<Vec2>& positions);
   std::vector<Vec2> collected() const;
   /// The robot pose, ball list and collected balls clients reported, as one consistent value.
   ClientReports reports() const;
-  /// Forgets the reports the cameras have confirmed: no ball `seen` is near them any more.
-  void confirm_collected(const std::vector<Vec2>& seen);
+  /// A world model of frames captured at `capture_ns` (UTC) was made: the reports made before
+  /// then are forgotten, since those frames show what the robot took gone; a ball they still
+  /// show there was not taken, or is another one, and is planned again.
+  void frames_fused(std::int64_t capture_ns);
 
   static constexpr std::size_t kMaxCollected = 4096;
 
@@ -117,7 +125,7 @@ class NavigationHub {
   std::uint64_t acknowledged_ = 0;
   std::optional<External<Pose2D>> robot_;
   std::optional<External<std::vector<Vec2>>> balls_;
-  std::vector<Vec2> collected_;
+  std::vector<External<Vec2>> collected_;
 };
 
 }  // namespace ballsight

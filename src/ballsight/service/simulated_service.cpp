@@ -189,9 +189,20 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     }
     std::vector<int> removed;
     if (!driving) {  // no robot drives: balls reported collected are taken off by hand
-      const std::vector<Vec2> collected = hub.collected();
+      std::vector<Vec2> at;
+      std::vector<int> ids;
+      for (const sim::SceneSphere& b : s.world->scene().balls) {
+        if (b.kind != sim::ObjectKind::tennis_ball) continue;
+        at.push_back(b.center_in_field.head<2>());
+        ids.push_back(b.id);
+      }
+      const std::vector<bool> taken = taken_by_reports(at, hub.collected());
+      std::vector<int> gone;
+      for (std::size_t k = 0; k < ids.size(); ++k) {
+        if (taken[k]) gone.push_back(ids[k]);
+      }
       removed = s.world->remove_balls_if([&](const sim::SceneSphere& b) {
-        return reported_collected(b.center_in_field.head<2>(), collected);
+        return std::find(gone.begin(), gone.end(), b.id) != gone.end();
       });
     }
     // The cameras rendered side by side (the pipeline after them is a few ms).

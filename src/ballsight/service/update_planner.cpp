@@ -24,12 +24,14 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
   std::vector<Vec2> balls;
   for (const FusedBall& b : world.balls) balls.push_back(b.position_m);
   if (reports.balls && reports.balls->set_ns > capture_ns) balls = reports.balls->value;
-  std::erase_if(balls, [&](const Vec2& b) { return reported_collected(b, reports.collected); });
   // Two detections closer than a ball's radius would be one ball twice: keep the first.
+  const std::vector<bool> taken = taken_by_reports(balls, reports.collected);
   std::vector<Vec2> distinct;
-  for (const Vec2& b : balls) {
-    if (std::none_of(distinct.begin(), distinct.end(),
-                     [&](const Vec2& d) { return (d - b).norm() < site.ball_radius_m; })) {
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const Vec2& b = balls[i];
+    if (!taken[i] && std::none_of(distinct.begin(), distinct.end(), [&](const Vec2& d) {
+          return (d - b).norm() < site.ball_radius_m;
+        })) {
       distinct.push_back(b);
     }
   }
