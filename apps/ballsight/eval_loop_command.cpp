@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "ballsight/core/csv_fields.hpp"
@@ -17,6 +18,8 @@ namespace {
 struct EvalLoopArgs {
   eval::LoopEvalOptions options;
   std::string systems;
+  double command_latency_ms = 0.0;
+  std::optional<double> steer_ahead_ms;
   bool json = false;
 };
 
@@ -26,6 +29,8 @@ std::unique_ptr<RobotLink> connect_over_loopback(CourtService& service, Navigati
 
 void run_eval_loop(const EvalLoopArgs& args) {
   eval::LoopEvalOptions options = args.options;
+  options.robot.body.command_latency_s = args.command_latency_ms / 1000.0;
+  options.robot.steer_ahead_s = args.steer_ahead_ms.value_or(args.command_latency_ms) / 1000.0;
   if (!args.systems.empty()) {
     for (const CsvField& item : split_csv_fields(args.systems)) {
       options.systems.emplace_back(item.text);
@@ -80,6 +85,20 @@ void add_eval_loop_command(CLI::App& eval) {
       ->capture_default_str();
   cmd->add_option("--systems", args->systems,
                   "Comma-separated subset of report,ballsight-priority,ballsight");
+  cmd->add_option("--command-latency-ms", args->command_latency_ms,
+                  "The simulated robot's wheels act on a command this long after it was sent")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--odometry-drift", args->options.robot.body.odometry_drift,
+                  "Wheel slip: the robot moves less (or more) than its wheels turn by a slowly "
+                  "varying share of this standard deviation (0.01: odometry off by about 1 cm a "
+                  "metre)")
+      ->check(CLI::Range(0.0, 0.5))
+      ->capture_default_str();
+  cmd->add_option("--steer-ahead-ms", args->steer_ahead_ms,
+                  "The latency the robot's controller steers ahead by (default: "
+                  "--command-latency-ms; 0: none, to measure what the prediction gives)")
+      ->check(CLI::Range(0.0, 1000.0));
   cmd->add_flag("--json", args->json,
                 "JSON: {\"systems\": {\"<name>\": {\"collected_fraction\", \"time_s_mean\", "
                 "\"distance_m_mean\", \"time_ratio_to_ballsight\", \"runs\"}}, \"wall_clock\": {}} "

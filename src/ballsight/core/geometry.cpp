@@ -15,6 +15,18 @@ Polar polar_from_cartesian(const Vec2& v) {
   return {wrap_deg_360(deg_from_rad(std::atan2(v.y(), v.x()))), v.norm()};
 }
 
+Pose2D along_arc(const Pose2D& pose, double speed, double turn_rate, double dt) {
+  const double h0 = pose.heading_rad, dh = turn_rate * dt;
+  Vec2 move;
+  if (std::abs(dh) < 1e-9) {
+    move = speed * dt * Vec2(std::cos(h0), std::sin(h0));
+  } else {
+    const double r = speed / turn_rate;
+    move = r * Vec2(std::sin(h0 + dh) - std::sin(h0), std::cos(h0) - std::cos(h0 + dh));
+  }
+  return {pose.position + move, wrap_rad_pi(h0 + dh)};
+}
+
 Eigen::Matrix2d Rigid2::rotation() const {
   return Eigen::Rotation2Dd(theta_rad).toRotationMatrix();
 }

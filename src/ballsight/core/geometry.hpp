@@ -44,6 +44,10 @@ struct Pose2D {
   Rigid2 field_from_robot() const { return {position, heading_rad}; }
 };
 
+/// Where a robot at `pose` is after `dt` seconds at forward speed `speed` (m/s) and turn rate
+/// `turn_rate` (rad/s, counter-clockwise): on the arc they describe.
+Pose2D along_arc(const Pose2D& pose, double speed, double turn_rate, double dt);
+
 /// A rigid transform of space: rotation, then translation.
 struct Rigid3 {
   Mat3 rotation = Mat3::Identity();

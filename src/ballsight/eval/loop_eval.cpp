@@ -22,7 +22,8 @@ const std::vector<LoopSystem>& loop_systems() {
 }
 
 LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
-                 const RobotConnector& connect, const std::filesystem::path& record) {
+                 const RobotConnector& connect, const std::filesystem::path& record,
+                 const LoopRobot& robot) {
   SimulatedServiceOptions options;
   options.truth_out = record;
   options.seed = scene.seed;
@@ -31,6 +32,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   options.report_pipeline = system.report_pipeline;
   options.planner.kind = system.planner;
   options.lockstep = true;
+  options.robot = robot.body;
   SimulatedCourtService service(options);
   NavigationHub hub;
   const std::unique_ptr<RobotLink> link = connect(service, hub);
@@ -38,8 +40,10 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   std::atomic<bool> stop{false};
   std::thread court([&] { service.run(hub, stop); });
   std::atomic<bool> robot_done{false};
-  std::thread robot([&] {
-    run_collector(*link, {}, stop);
+  CollectorOptions collector;
+  collector.latency_s = robot.steer_ahead_s;
+  std::thread driver([&] {
+    run_collector(*link, collector, stop);
     robot_done = true;
   });
   // Until the court is empty, out of time (simulated), or the robot sees no ball left.
@@ -49,7 +53,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   stop = true;
-  robot.join();
+  driver.join();
   court.join();
   link->stop();
 
@@ -69,6 +73,10 @@ void LoopEvalOptions::validate() const {
   require(min_balls >= 1 && min_balls <= max_balls && max_balls <= 200, "balls",
           "need 1 <= min <= max <= 200");
   require(std::isfinite(max_time_s) && max_time_s > 0.0, "--max-time", "must be positive");
+  robot.body.validate();
+  require(std::isfinite(robot.steer_ahead_s) && robot.steer_ahead_s >= 0.0 &&
+              robot.steer_ahead_s <= 5.0,
+          "steer_ahead_s", "must be in [0, 5] s");
   for (const std::string& name : systems) {
     require(std::any_of(loop_systems().begin(), loop_systems().end(),
                         [&](const LoopSystem& s) { return s.name == name; }),
@@ -96,7 +104,7 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
               ? std::filesystem::path()
               : options.record_dir / (system.name + "-" + std::to_string(scene.seed) + ".jsonl");
       if (!record.empty()) ensure_directory(options.record_dir);
-      runs.push_back(run_loop(system, scene, options.max_time_s, connect, record));
+      runs.push_back(run_loop(system, scene, options.max_time_s, connect, record, options.robot));
       if (progress) progress(runs.back());
     }
   }

@@ -54,10 +54,18 @@ struct LoopRun {
 using RobotConnector =
     std::function<std::unique_ptr<RobotLink>(CourtService& service, NavigationHub& hub)>;
 
+/// The simulated collector of a run: its body's latency and slip, and the latency its controller
+/// steers ahead by (robot/collector_robot.hpp).
+struct LoopRobot {
+  sim::RobotImperfections body;
+  double steer_ahead_s = 0.0;
+};
+
 /// One scene, one system, until every ball is collected or `max_time_s` of simulated time.
 /// `record`: where the court's record goes (service/loop_truth.hpp), empty for nowhere.
 LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
-                 const RobotConnector& connect, const std::filesystem::path& record = {});
+                 const RobotConnector& connect, const std::filesystem::path& record = {},
+                 const LoopRobot& robot = {});
 
 struct LoopEvalOptions {
   std::uint64_t seed = 1;
@@ -66,6 +74,7 @@ struct LoopEvalOptions {
   double max_time_s = 400.0;         // simulated, per run
   std::vector<std::string> systems;  // empty: all three
   std::filesystem::path record_dir;  // each run's record as <system>-<seed>.jsonl (empty: none)
+  LoopRobot robot;                   // a perfect robot by default
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -24,6 +24,8 @@ void CollectorOptions::validate() const {
   follow.validate();
   require(done_after >= 1, "done_after", "must be at least 1");
   require(std::isfinite(max_time_s) && max_time_s >= 0.0, "max_time_s", "must not be negative");
+  require(std::isfinite(latency_s) && latency_s >= 0.0 && latency_s <= 5.0, "latency_s",
+          "must be in [0, 5] s");
 }
 
 CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
@@ -32,6 +34,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   options.validate();
   PathFollower follower(options.follow);
   std::vector<Vec2> planned;  // the route's waypoints being followed
+  FollowCommand sent;         // the last command sent: the wheels carry it out during the latency
   CollectorResult result;
   int empty = 0;
   const auto started = std::chrono::steady_clock::now();
@@ -52,8 +55,12 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
         planned = u->waypoints_m;
         follower.set_path(planned);
       }
-      command = follower.command(*u->robot);
+      command = follower.command(
+          options.latency_s > 0.0
+              ? along_arc(*u->robot, sent.speed_mps, sent.turn_rate_rps, options.latency_s)
+              : *u->robot);
     }
+    sent = command;
     const std::optional<nlohmann::json> drove =
         link.drive_simulated(u->seq, command.speed_mps, deg_from_rad(command.turn_rate_rps));
     if (drove) result.sim_time_s = drove->value("time_s", result.sim_time_s);

@@ -24,6 +24,11 @@ struct CollectorOptions {
   FollowerOptions follow = follower_for_site(Site{});  // mouth 0.30 m ahead, 1 m/s, 90 deg/s
   int done_after = 10;      // updates in a row with no ball and no route: all collected
   double max_time_s = 0.0;  // wall time; 0: no limit
+  /// From the frames' capture to the wheels acting on the command sent for them: the robot
+  /// steers from where it will be then, the cameras' pose moved on by the command the wheels
+  /// carry out meanwhile (the last one sent; a Smith predictor for a latency of up to one
+  /// update period). 0: it steers from the cameras' pose.
+  double latency_s = 0.0;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -36,6 +36,7 @@ void SimulatedServiceOptions::validate() const {
             "must be in [0, " + std::to_string(sim::CourtScenarioOptions::kMaxBalls) + "]");
   }
   planner.validate();
+  robot.validate();
   require(std::isfinite(cluster_share) && cluster_share >= 0.0 && cluster_share <= 1.0,
           "--cluster-share", "must be in [0, 1]");
   require(!resume || !truth_out.empty(), "--resume", "needs --truth-out (the court to resume)");
@@ -116,8 +117,10 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   limits.max_turn_accel_dps2 = site.robot.turn_accel_dps2;
   const sim::RobotFootprint footprint =
       sim::RobotFootprint::of(scene.robot, site.robot.collector_x_m, site.robot.collector_width_m);
-  s.world =
-      std::make_unique<sim::CourtWorld>(std::move(scene), s.court->rig().court, limits, footprint);
+  sim::RobotImperfections imperfections = options.robot;
+  imperfections.seed = options.seed;
+  s.world = std::make_unique<sim::CourtWorld>(std::move(scene), s.court->rig().court, limits,
+                                              footprint, imperfections);
   if (s.resumed && !s.resumed->ticks.empty()) {
     std::vector<int> gone;
     for (const TruthTick& t : s.resumed->ticks) {

@@ -51,6 +51,7 @@ struct SimulatedServiceOptions {
   std::vector<CameraOutage> camera_outages;  // a camera may fail and come back, several times
   bool report_pipeline = false;              // the report's court pipeline instead of ballsight's
   PlannerOptions planner;
+  sim::RobotImperfections robot;  // the simulated collector's latency and slip (its seed: seed's)
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

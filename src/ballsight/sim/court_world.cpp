@@ -6,9 +6,15 @@
 namespace ballsight::sim {
 
 CourtWorld::CourtWorld(CourtScene scene, const TennisCourtSpec& court, const DriveLimits& limits,
-                       const RobotFootprint& footprint)
-    : scene_(std::move(scene)), court_(court), limits_(limits), footprint_(footprint) {
+                       const RobotFootprint& footprint, const RobotImperfections& imperfections)
+    : scene_(std::move(scene)),
+      court_(court),
+      limits_(limits),
+      footprint_(footprint),
+      imperfections_(imperfections),
+      rng_(imperfections.seed) {
   limits_.validate();
+  imperfections_.validate();
   motion_.pose = scene_.robot.pose;
 }
 
@@ -21,6 +27,8 @@ int CourtWorld::balls_left() const {
 void CourtWorld::resume(double time_s, const Pose2D& pose, const std::vector<int>& collected) {
   time_s_ = time_s;
   motion_ = RobotMotion{pose, 0.0, 0.0};
+  pending_.clear();
+  acting_ = {};
   scene_.robot.pose = pose;
   remove_balls_if([&](const SceneSphere& b) {
     return std::find(collected.begin(), collected.end(), b.id) != collected.end();
@@ -30,9 +38,24 @@ void CourtWorld::resume(double time_s, const Pose2D& pose, const std::vector<int
 const WorldTick& CourtWorld::advance(const DriveCommand& command, double seconds) {
   WorldTick tick;
   const int steps = std::max(1, static_cast<int>(std::lround(seconds / kStepS)));
+  pending_.emplace_back(time_s_ + imperfections_.command_latency_s, command);
+  // The slip as a first-order Gauss-Markov process: its standard deviation odometry_drift, its
+  // correlation time slip_time_s (no random draw for a robot that does not slip).
+  const double keep = std::exp(-kStepS / imperfections_.slip_time_s);
+  const double kick = imperfections_.odometry_drift * std::sqrt(1.0 - keep * keep);
+  std::normal_distribution<double> normal;
   for (int k = 0; k < steps; ++k) {
+    const double now = time_s_ + k * kStepS;
+    while (!pending_.empty() && pending_.front().first <= now + 1e-9) {
+      acting_ = pending_.front().second;
+      pending_.pop_front();
+    }
+    if (kick > 0.0) {
+      slip_.speed = keep * slip_.speed + kick * normal(rng_);
+      slip_.turn = keep * slip_.turn + kick * normal(rng_);
+    }
     const Pose2D before = motion_.pose;
-    const DriveStep step = drive_step(motion_, command, kStepS, limits_, footprint_, court_);
+    const DriveStep step = drive_step(motion_, acting_, kStepS, limits_, footprint_, court_, slip_);
     motion_ = step.motion;
     tick.blocked = tick.blocked || step.blocked;
     for (int id : collect_swept(scene_, before, motion_.pose, footprint_)) {

@@ -3,6 +3,9 @@
 // simulated clock and the record of what really happened, so that a run can be scored afterwards.
 
 #include <cstdint>
+#include <deque>
+#include <random>
+#include <utility>
 #include <vector>
 
 #include "ballsight/sim/robot_motion.hpp"
@@ -21,7 +24,7 @@ struct WorldTick {
 class CourtWorld {
  public:
   CourtWorld(CourtScene scene, const TennisCourtSpec& court, const DriveLimits& limits,
-             const RobotFootprint& footprint);
+             const RobotFootprint& footprint, const RobotImperfections& imperfections = {});
 
   const CourtScene& scene() const { return scene_; }
   const RobotMotion& motion() const { return motion_; }
@@ -29,7 +32,8 @@ class CourtWorld {
   int balls_left() const;
   const std::vector<WorldTick>& history() const { return history_; }
 
-  /// Drives with `command` for `seconds` in steps of kStepS (the robot's box moves with it);
+  /// Drives for `seconds` in steps of kStepS (the robot's box moves with it), `command` acting
+  /// from the imperfections' command latency on (the commands given before it until then);
   /// records and returns the tick.
   const WorldTick& advance(const DriveCommand& command, double seconds);
   /// Continues a run recorded earlier: the clock at `time_s`, the robot standing at `pose`, the
@@ -55,8 +59,13 @@ class CourtWorld {
   TennisCourtSpec court_;
   DriveLimits limits_;
   RobotFootprint footprint_;
+  RobotImperfections imperfections_;
   RobotMotion motion_;
   double time_s_ = 0.0;
+  std::deque<std::pair<double, DriveCommand>> pending_;  // commands given, when each acts
+  DriveCommand acting_;
+  Slip slip_;
+  std::mt19937_64 rng_;
   std::vector<WorldTick> history_;
 };
 

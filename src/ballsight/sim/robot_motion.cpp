@@ -89,9 +89,17 @@ bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
   return overlap(corners, net);
 }
 
+void RobotImperfections::validate() const {
+  require(std::isfinite(command_latency_s) && command_latency_s >= 0.0 && command_latency_s <= 5.0,
+          "command_latency_s", "must be in [0, 5] s");
+  require(std::isfinite(odometry_drift) && odometry_drift >= 0.0 && odometry_drift <= 0.5,
+          "odometry_drift", "must be in [0, 0.5]");
+  require(std::isfinite(slip_time_s) && slip_time_s > 0.0, "slip_time_s", "must be positive");
+}
+
 DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, double dt,
                      const DriveLimits& limits, const RobotFootprint& footprint,
-                     const TennisCourtSpec& court) {
+                     const TennisCourtSpec& court, const Slip& slip) {
   const double max_turn = rad_from_deg(limits.max_turn_rate_dps);
   const double v_target =
       std::clamp(command.speed_mps, -limits.max_speed_mps, limits.max_speed_mps);
@@ -100,18 +108,11 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
   next.speed_mps = approach(motion.speed_mps, v_target, limits.max_accel_mps2 * dt);
   next.turn_rate_rps =
       approach(motion.turn_rate_rps, w_target, rad_from_deg(limits.max_turn_accel_dps2) * dt);
-  // The arc at the step's mean speeds.
-  const double v = 0.5 * (motion.speed_mps + next.speed_mps);
-  const double w = 0.5 * (motion.turn_rate_rps + next.turn_rate_rps);
+  // The arc at the step's mean speeds, less the slip.
+  const double v = 0.5 * (motion.speed_mps + next.speed_mps) * (1.0 - slip.speed);
+  const double w = 0.5 * (motion.turn_rate_rps + next.turn_rate_rps) * (1.0 - slip.turn);
   const double h0 = motion.pose.heading_rad, dh = w * dt;
-  Vec2 move;
-  if (std::abs(dh) < 1e-9) {
-    move = v * dt * Vec2(std::cos(h0), std::sin(h0));
-  } else {
-    const double r = v / w;
-    move = r * Vec2(std::sin(h0 + dh) - std::sin(h0), std::cos(h0) - std::cos(h0 + dh));
-  }
-  next.pose = {motion.pose.position + move, wrap_rad_pi(h0 + dh)};
+  next.pose = along_arc(motion.pose, v, w, dt);
   if (!footprint_blocked(footprint, next.pose, court)) return {next, false};
   // In contact: the part of the motion the obstacle allows (sliding straight on, or turning on
   // the spot), else none.

@@ -21,6 +21,20 @@ struct DriveLimits {
   void validate() const;
 };
 
+/// What a real collector does that its commands do not say; the defaults are a perfect robot.
+struct RobotImperfections {
+  double command_latency_s = 0.0;  // a command acts this long after it was given
+  /// Wheel slip: a share of the wheels' motion (forward and turn, each its own) that the robot
+  /// does not make over the ground, varying slowly about 0 with this standard deviation, so that
+  /// odometry from the wheels drifts by about this fraction of the distance driven.
+  double odometry_drift = 0.0;
+  double slip_time_s = 2.0;  // how long a slip lasts (its correlation time)
+  std::uint64_t seed = 1;    // of the slip
+
+  /// Throws InputError naming the first invalid field.
+  void validate() const;
+};
+
 /// Wheel speeds as forward speed and turn rate (rad/s, counter-clockwise).
 struct DriveCommand {
   double speed_mps = 0.0;
@@ -55,13 +69,19 @@ struct DriveStep {
   bool blocked = false;  // the net or the fence was in the way of the commanded motion
 };
 
-/// One step of `dt` seconds: speed and turn rate move towards the command within the limits, the
-/// pose follows the arc they describe. Where that would put the footprint into the net or the
-/// fence, the robot only slides straight on, or only turns on the spot, whichever is clear, or
-/// stops: it never overlaps them.
+/// Wheel slip: the share of the wheels' motion that the robot does not make over the ground.
+struct Slip {
+  double speed = 0.0;  // of the forward motion
+  double turn = 0.0;   // of the turn
+};
+
+/// One step of `dt` seconds: speed and turn rate (the wheels') move towards the command within
+/// the limits, the pose follows the arc they describe, less the `slip`. Where that would put the
+/// footprint into the net or the fence, the robot only slides straight on, or only turns on the
+/// spot, whichever is clear, or stops: it never overlaps them.
 DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, double dt,
                      const DriveLimits& limits, const RobotFootprint& footprint,
-                     const TennisCourtSpec& court);
+                     const TennisCourtSpec& court, const Slip& slip = {});
 
 /// Removes from `scene` the tennis balls the collector's mouth reached while the robot moved from
 /// `before` to `after` (forwards, within the mouth's width): the mouth touched the ball (its
