@@ -38,10 +38,13 @@ void run_eval_loop(const EvalLoopArgs& args) {
   }
   const std::vector<eval::LoopRun> runs =
       eval::run_loop_eval(options, connect_over_loopback, [](const eval::LoopRun& r) {
-        std::fprintf(stderr, "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m%s\n",
+        std::fprintf(stderr,
+                     "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m, %d "
+                     "stalls%s\n",
                      r.system.c_str(), static_cast<unsigned long long>(r.seed),
                      r.clustered ? "clustered" : "uniform", r.collected, r.balls, r.time_s,
-                     r.distance_m, r.never_overlapped ? "" : " (overlapped the net or fence!)");
+                     r.distance_m, r.stalls,
+                     r.never_overlapped ? "" : " (overlapped the net or fence!)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
   if (args.json) {

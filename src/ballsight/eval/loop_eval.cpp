@@ -42,8 +42,9 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   std::atomic<bool> robot_done{false};
   CollectorOptions collector;
   collector.latency_s = robot.steer_ahead_s;
+  CollectorResult driven;
   std::thread driver([&] {
-    run_collector(*link, collector, stop);
+    driven = run_collector(*link, collector, stop);
     robot_done = true;
   });
   // Until the court is empty, out of time (simulated), or the robot sees no ball left.
@@ -65,7 +66,8 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
       score_loop(scene.balls, start, ticks, collector_footprint(service.site().robot));
   return {system.name,      scene.seed,      scene.clustered,
           score.balls,      score.collected, score.all ? score.time_s : max_time_s,
-          score.distance_m, score.all,       score.never_overlapped};
+          score.distance_m, score.all,       score.never_overlapped,
+          driven.stalls};
 }
 
 void LoopEvalOptions::validate() const {
@@ -135,7 +137,8 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
                       {"all", r->all},
                       {"time_s", r->time_s},
                       {"distance_m", r->distance_m},
-                      {"never_overlapped", r->never_overlapped}});
+                      {"never_overlapped", r->never_overlapped},
+                      {"stalls", r->stalls}});
     }
     const double n = static_cast<double>(list.size());
     nlohmann::json s{

@@ -47,6 +47,7 @@ struct LoopRun {
   double distance_m = 0.0;  // driven until then
   bool all = false;
   bool never_overlapped = true;  // the net and the fence (checked on every tick's true pose)
+  int stalls = 0;  // times the robot found itself stalled and freed itself (progress_recovery)
 };
 
 /// How the robot reaches the service in a run: a link to `service`'s updates in `hub` that owns

@@ -26,6 +26,7 @@ void CollectorOptions::validate() const {
   require(std::isfinite(max_time_s) && max_time_s >= 0.0, "max_time_s", "must not be negative");
   require(std::isfinite(latency_s) && latency_s >= 0.0 && latency_s <= 5.0, "latency_s",
           "must be in [0, 5] s");
+  progress.validate();
 }
 
 CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
@@ -35,6 +36,8 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   PathFollower follower(options.follow);
   std::vector<Vec2> planned;  // the route's waypoints being followed
   FollowCommand sent;         // the last command sent: the wheels carry it out during the latency
+  ProgressRecovery recovery(options.progress);
+  bool sim_clock = false;  // the simulated court tells its time: stalls are timed on it
   CollectorResult result;
   int empty = 0;
   const auto started = std::chrono::steady_clock::now();
@@ -55,15 +58,25 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
         planned = u->waypoints_m;
         follower.set_path(planned);
       }
-      command = follower.command(
-          options.latency_s > 0.0
-              ? along_arc(*u->robot, sent.speed_mps, sent.turn_rate_rps, options.latency_s)
-              : *u->robot);
+      const double now_s =
+          sim_clock
+              ? result.sim_time_s
+              : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      const std::optional<FollowCommand> freeing =
+          recovery.step(*u->robot, now_s, !u->balls_m.empty());
+      command = freeing ? *freeing
+                        : follower.command(options.latency_s > 0.0
+                                               ? along_arc(*u->robot, sent.speed_mps,
+                                                           sent.turn_rate_rps, options.latency_s)
+                                               : *u->robot);
     }
     sent = command;
     const std::optional<nlohmann::json> drove =
         link.drive_simulated(u->seq, command.speed_mps, deg_from_rad(command.turn_rate_rps));
-    if (drove) result.sim_time_s = drove->value("time_s", result.sim_time_s);
+    if (drove && drove->contains("time_s")) {
+      sim_clock = true;
+      result.sim_time_s = drove->value("time_s", result.sim_time_s);
+    }
     const int taken = drove ? drove->value("collected", 0) : 0;
     if (taken > 0 && u->robot) {
       const Pose2D& p = *u->robot;
@@ -85,6 +98,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
     }
   }
   const LinkStatus status = link.status();
+  result.stalls = recovery.stalls();
   result.gaps = status.gaps;
   result.reconnects = status.reconnects;
   return result;

@@ -3,7 +3,9 @@
 // update it steers the collector's mouth along the route (path_follower.hpp), sends its
 // wheels' command to the simulated court (PUT /api/v1/sim/drive), acknowledges the update and
 // reports the balls its collector took (the collector's sensor counts them; they were at its
-// mouth). It knows only what the service sends.
+// mouth). It knows only what the service sends. A robot with balls left that makes no progress
+// frees itself (progress_recovery.hpp), on the simulated court's clock when it drives there, else
+// on its own.
 
 #include <atomic>
 #include <cstdint>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "ballsight/robot/path_follower.hpp"
+#include "ballsight/robot/progress_recovery.hpp"
 #include "ballsight/robot/robot_link.hpp"
 #include "ballsight/world/site.hpp"
 
@@ -29,6 +32,7 @@ struct CollectorOptions {
   /// carry out meanwhile (the last one sent; a Smith predictor for a latency of up to one
   /// update period). 0: it steers from the cameras' pose.
   double latency_s = 0.0;
+  ProgressOptions progress;  // when it is stalled and how it frees itself
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -38,6 +42,7 @@ struct CollectorResult {
   bool done = false;  // stopped because no ball was left (not by time or `stop`)
   int updates = 0;
   int collected = 0;  // as the collector's sensor counted them
+  int stalls = 0;     // times it was stalled and backed up (or drove ahead) to free itself
   std::uint64_t gaps = 0;
   int reconnects = 0;
   double sim_time_s = 0.0;  // the simulated court's clock at the last command
