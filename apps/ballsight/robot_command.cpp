@@ -33,6 +33,7 @@ struct RobotArgs : DdsArgs {
   std::string token_file = "ballsight-token";
   bool long_poll = false;
   std::string summary;
+  double latency_ms = 0.0;
   CollectorOptions collector;
 };
 
@@ -51,7 +52,8 @@ std::unique_ptr<RobotLink> open_link(const RobotArgs& args,
   return std::make_unique<HttpRobotLink>(options);
 }
 
-void run_robot(const RobotArgs& args) {
+void run_robot(RobotArgs args) {
+  args.collector.latency_s = args.latency_ms / 1000.0;
   args.collector.validate();
   std::optional<dds::Participant> participant;
   const std::unique_ptr<RobotLink> link = open_link(args, participant);
@@ -65,14 +67,14 @@ void run_robot(const RobotArgs& args) {
             << (r.done   ? "no ball left"
                 : g_stop ? "stopped"
                          : "--max-time reached")
-            << " after " << r.updates << " updates; " << r.collected << " collected; " << r.gaps
-            << " updates missed, " << r.reconnects << " reconnects; simulated time " << r.sim_time_s
-            << " s" << std::endl;
+            << " after " << r.updates << " updates; " << r.collected << " collected; " << r.stalls
+            << " stalls; " << r.gaps << " updates missed, " << r.reconnects
+            << " reconnects; simulated time " << r.sim_time_s << " s" << std::endl;
   if (!args.summary.empty()) {
     const nlohmann::json summary{
         {"done", r.done}, {"updates", r.updates},       {"collected", r.collected},
         {"gaps", r.gaps}, {"reconnects", r.reconnects}, {"sim_time_s", r.sim_time_s},
-        {"seqs", r.seqs}, {"latency_ms", r.latency_ms}};
+        {"seqs", r.seqs}, {"latency_ms", r.latency_ms}, {"stalls", r.stalls}};
     write_file_atomic(args.summary, summary.dump() + "\n");
   }
 }
@@ -97,6 +99,11 @@ void add_robot_command(CLI::App& app) {
   cmd->add_option("--done-after", args->collector.done_after,
                   "Stop after this many updates with no ball and no route")
       ->capture_default_str();
+  cmd->add_option("--latency-ms", args->latency_ms,
+                  "From the frames' capture to the wheels acting on a command: the robot steers "
+                  "from where it will be then (0: from the cameras' pose)")
+      ->check(CLI::Range(0.0, 5000.0))
+      ->capture_default_str();
   CLI::Option* long_poll =
       cmd->add_flag("--long-poll", args->long_poll, "Long-poll instead of the WebSocket stream");
   CLI::Option* dds = cmd->add_flag(
@@ -106,7 +113,7 @@ void add_robot_command(CLI::App& app) {
   for (CLI::Option* option : add_domain_options(*cmd, *args, "court's topics")) option->needs(dds);
   cmd->add_option("--summary", args->summary,
                   "Write what happened here at the end (JSON: done, updates, collected, gaps, "
-                  "reconnects, sim_time_s, seqs, latency_ms per update)");
+                  "reconnects, sim_time_s, seqs, latency_ms per update, stalls)");
   cmd->callback([args] { run_robot(*args); });
 }
 

@@ -27,7 +27,7 @@ TEST(LoopCli, TheRobotCollectsEveryBallDrivenByTheService) {
                                    token, "--max-time", "120"});
   EXPECT_EQ(robot.exit_code, 0) << robot.stderr_text;
   EXPECT_NE(robot.stdout_text.find("no ball left"), std::string::npos) << robot.stdout_text;
-  EXPECT_NE(robot.stdout_text.find("10 collected; 0 updates missed"), std::string::npos)
+  EXPECT_NE(robot.stdout_text.find("10 collected; 0 stalls; 0 updates missed"), std::string::npos)
       << robot.stdout_text;
   service.kill(SIGTERM);  // the truth file is complete once it has stopped
 
@@ -46,9 +46,12 @@ TEST(LoopCli, TheRobotCollectsEveryBallDrivenByTheService) {
   EXPECT_EQ(record.ticks.back().world.balls_left, 0);
 }
 
+// A robot with a real one's command latency and wheel slip, steering ahead by its latency.
 TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {
-  const CliResult r = run_cli({"eval", "loop", "--scenes", "1", "--min-balls", "6", "--max-balls",
-                               "6", "--max-time", "60", "--systems", "ballsight", "--json"});
+  const CliResult r =
+      run_cli({"eval", "loop", "--scenes", "1", "--min-balls", "6", "--max-balls", "6",
+               "--max-time", "60", "--systems", "ballsight", "--command-latency-ms", "100",
+               "--odometry-drift", "0.01", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   const nlohmann::json j = nlohmann::json::parse(r.stdout_text);
   const nlohmann::json& s = j["systems"]["ballsight"];
@@ -58,7 +61,11 @@ TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {
   EXPECT_GT(s["distance_m_mean"].get<double>(), 1.0);
   EXPECT_LT(s["time_s_mean"].get<double>(), 60.0);
   EXPECT_EQ(s["time_ratio_to_ballsight"], 1.0);
+  EXPECT_EQ(s["runs"][0]["stalls"], 0);
   expect_one_line_error(run_cli({"eval", "loop", "--systems", "magic"}), "--systems");
+  expect_one_line_error(run_cli({"eval", "loop", "--odometry-drift", "0.9"}), "--odometry-drift");
+  expect_one_line_error(run_cli({"eval", "loop", "--command-latency-ms", "-5"}),
+                        "--command-latency-ms");
 }
 
 }  // namespace
