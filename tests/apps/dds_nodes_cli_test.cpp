@@ -286,7 +286,7 @@ TEST(DdsNodes, ARobotOnDdsCollectsEveryBallOfTheSimulatedCourt) {
   EXPECT_EQ(robot.exit_code, 0) << robot.stderr_text;
   EXPECT_NE(robot.stdout_text.find("no ball left"), std::string::npos)
       << robot.stdout_text << court.log_text();
-  EXPECT_NE(robot.stdout_text.find("12 collected; 0 updates missed"), std::string::npos)
+  EXPECT_NE(robot.stdout_text.find("12 collected; 0 stalls; 0 updates missed"), std::string::npos)
       << robot.stdout_text;
 }
 
