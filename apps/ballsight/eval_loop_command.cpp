@@ -41,9 +41,8 @@ void run_eval_loop(const EvalLoopArgs& args) {
         std::fprintf(stderr,
                      "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m, %d "
                      "stalls%s\n",
-                     r.system.c_str(), static_cast<unsigned long long>(r.seed),
-                     r.clustered ? "clustered" : "uniform", r.collected, r.balls, r.time_s,
-                     r.distance_m, r.stalls,
+                     r.system.c_str(), static_cast<unsigned long long>(r.seed), r.layout.c_str(),
+                     r.collected, r.balls, r.time_s, r.distance_m, r.stalls,
                      r.never_overlapped ? "" : " (overlapped the net or fence!)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
@@ -76,7 +75,8 @@ void add_eval_loop_command(CLI::App& eval) {
       "collect them all, distance driven");
   add_seed_option(*cmd, args->options.seed, "Seed of the first scene (scene k: seed + k)");
   cmd->add_option("--scenes", args->options.scenes,
-                  "Scenes (ball counts spread over the range; uniform and clustered in turn)")
+                  "Scenes (ball counts spread over the range; layouts in turn: uniform, clustered, "
+                  "along the net, along the fence, around the net posts)")
       ->capture_default_str();
   cmd->add_option("--record-dir", args->options.record_dir,
                   "Write each run's record of the court here (<system>-<seed>.jsonl)");

@@ -116,6 +116,43 @@ TEST(CourtScenario, BallsAndTheRobotKeepClearOfTheNet) {
   EXPECT_GE(robots_without_net, 1);
 }
 
+// The layouts of the closed loop's harder scenes: every ball but the (up to four) beside the robot
+// lies where the layout says, clear of the net, inside the fence.
+TEST(CourtScenario, LayoutsPutTheBallsAlongTheNetTheFenceOrAroundThePosts) {
+  const TennisCourtSpec court;
+  const GroundRect fence = court.surround_rect();
+  const std::array<Vec2, 2> posts = TennisNet::of(court)->post_positions();
+  const auto near_fence = [&](const Vec2& p) {
+    return std::min({p.x() - fence.x_min, fence.x_max - p.x(), p.y() - fence.y_min,
+                     fence.y_max - p.y()}) <= 0.20 + 1e-9;
+  };
+  const auto near_post = [&](const Vec2& p) {
+    return (p - posts[0]).norm() <= 0.60 + 1e-9 || (p - posts[1]).norm() <= 0.60 + 1e-9;
+  };
+  for (const BallLayout layout :
+       {BallLayout::along_net, BallLayout::along_fence, BallLayout::net_posts}) {
+    CourtScenarioOptions options;
+    options.ball_count = 30;
+    options.cluster_share = 0.0;
+    options.layout = layout;
+    const CourtScene scene = make_court_scene(court, options, 3);
+    int placed = 0, sides = 0;
+    for (const SceneSphere* b : of_kind(scene, ObjectKind::tennis_ball)) {
+      const Vec2 p = b->center_in_field.head<2>();
+      EXPECT_TRUE(fence.contains(p)) << ball_layout_name(layout);
+      const bool where = layout == BallLayout::along_net     ? std::abs(p.x()) <= 0.30 + 1e-9
+                         : layout == BallLayout::along_fence ? near_fence(p)
+                                                             : near_post(p);
+      placed += where ? 1 : 0;
+      sides += p.x() > 0.0 ? 1 : 0;
+    }
+    EXPECT_GE(placed, 26) << ball_layout_name(layout);
+    EXPECT_GT(sides, 3) << ball_layout_name(layout);  // both sides of the net
+    EXPECT_LT(sides, 27) << ball_layout_name(layout);
+  }
+  EXPECT_EQ(ball_layout_name(BallLayout::scattered), "scattered");
+}
+
 TEST(CourtScenario, BallCountLightingAndNoiseFollowTheOptions) {
   CourtScenarioOptions options;
   options.ball_count = 0;

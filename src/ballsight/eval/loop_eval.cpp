@@ -21,6 +21,20 @@ const std::vector<LoopSystem>& loop_systems() {
   return kSystems;
 }
 
+std::string LoopLayout::name() const {
+  if (clustered) return "clustered";
+  return others == sim::BallLayout::scattered ? "uniform" : std::string(ball_layout_name(others));
+}
+
+const std::vector<LoopLayout>& loop_layouts() {
+  static const std::vector<LoopLayout> kLayouts{{false, sim::BallLayout::scattered},
+                                                {true, sim::BallLayout::scattered},
+                                                {false, sim::BallLayout::along_net},
+                                                {false, sim::BallLayout::along_fence},
+                                                {false, sim::BallLayout::net_posts}};
+  return kLayouts;
+}
+
 LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
                  const RobotConnector& connect, const std::filesystem::path& record,
                  const LoopRobot& robot) {
@@ -28,7 +42,8 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   options.truth_out = record;
   options.seed = scene.seed;
   options.balls = scene.balls;
-  options.cluster_share = scene.clustered ? 0.75 : 0.0;
+  options.cluster_share = scene.layout.clustered ? 0.75 : 0.0;
+  options.layout = scene.layout.others;
   options.report_pipeline = system.report_pipeline;
   options.planner.kind = system.planner;
   options.lockstep = true;
@@ -64,7 +79,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   std::erase_if(ticks, [&](const sim::WorldTick& t) { return t.time_s > max_time_s + 1e-6; });
   const LoopScore score =
       score_loop(scene.balls, start, ticks, collector_footprint(service.site().robot));
-  return {system.name,      scene.seed,      scene.clustered,
+  return {system.name,      scene.seed,      scene.layout.name(),
           score.balls,      score.collected, score.all ? score.time_s : max_time_s,
           score.distance_m, score.all,       score.never_overlapped,
           driven.stalls};
@@ -100,7 +115,8 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
                                                 system.name) == options.systems.end()) {
         continue;
       }
-      const LoopScene scene{options.seed + static_cast<std::uint64_t>(k), balls, k % 2 == 1};
+      const LoopScene scene{options.seed + static_cast<std::uint64_t>(k), balls,
+                            loop_layouts()[static_cast<std::size_t>(k) % loop_layouts().size()]};
       const std::filesystem::path record =
           options.record_dir.empty()
               ? std::filesystem::path()
@@ -131,7 +147,7 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
       collected += r->collected;
       distance += r->distance_m;
       rows.push_back({{"seed", r->seed},
-                      {"layout", r->clustered ? "clustered" : "uniform"},
+                      {"layout", r->layout},
                       {"balls", r->balls},
                       {"collected", r->collected},
                       {"all", r->all},

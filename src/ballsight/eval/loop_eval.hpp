@@ -28,18 +28,31 @@ struct LoopSystem {
 /// report, ballsight-priority, ballsight.
 const std::vector<LoopSystem>& loop_systems();
 
-/// The scenes' layouts, alternating: balls scattered, or three quarters of them in clusters of
-/// 2-4 touching balls (after practice); both on both sides of the net and some in the run-off.
+/// How a scene's balls lie: scattered on both sides of the net and some in the run-off
+/// ("uniform"), three quarters of them in clusters of 2-4 touching balls, the rest scattered
+/// ("clustered", as after practice), or, beside up to four balls by the robot, all in a line along
+/// the net, along the fence, or around the net posts (sim::BallLayout).
+struct LoopLayout {
+  bool clustered = false;
+  sim::BallLayout others = sim::BallLayout::scattered;
+
+  std::string name() const;
+};
+
+/// The layouts scene k of an evaluation takes in turn (k modulo their number): uniform,
+/// clustered, along the net, along the fence, around the net posts.
+const std::vector<LoopLayout>& loop_layouts();
+
 struct LoopScene {
   std::uint64_t seed = 1;
   int balls = 10;
-  bool clustered = false;
+  LoopLayout layout;
 };
 
 struct LoopRun {
   std::string system;
   std::uint64_t seed = 0;
-  bool clustered = false;
+  std::string layout;  // LoopLayout::name()
   int balls = 0;
   int collected = 0;
   double time_s = 0.0;      // simulated: when the last ball was collected; the limit when not

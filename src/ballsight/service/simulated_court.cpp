@@ -13,6 +13,7 @@ sim::CourtScene make_scene(const sim::CourtRig& rig, const SimulatedCourtOptions
   sim::CourtScenarioOptions scenario;
   scenario.ball_count = options.balls;
   scenario.cluster_share = options.cluster_share;
+  scenario.layout = options.layout;
   sim::CourtScene scene =
       sim::make_court_scene(rig.court, scenario, sim::derive_seed(options.seed, 1));
   scene.effects.quantile_noise = true;  // 40 views a simulated second

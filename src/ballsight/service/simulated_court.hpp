@@ -13,6 +13,7 @@
 #include "ballsight/camera/field_camera.hpp"
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_rig.hpp"
+#include "ballsight/sim/court_scenario.hpp"
 #include "ballsight/world/site.hpp"
 
 namespace ballsight {
@@ -26,6 +27,7 @@ struct SimulatedCourtOptions {
   std::uint64_t seed = 1;
   std::optional<int> balls;     // tennis balls on the court; nullopt: the scenario's 20-60
   double cluster_share = 0.25;  // of them, in clusters of 2-4 touching balls
+  sim::BallLayout layout = sim::BallLayout::scattered;  // where the others lie
 };
 
 class SimulatedCourt {

@@ -92,7 +92,7 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   Impl& s = *impl_;
   s.options = options;
   s.court = std::make_unique<SimulatedCourt>(
-      SimulatedCourtOptions{options.seed, options.balls, options.cluster_share});
+      SimulatedCourtOptions{options.seed, options.balls, options.cluster_share, options.layout});
   const Site& site = s.court->site();
   sim::CourtScene scene = s.court->scene();
   for (const sim::SceneSphere& b : scene.balls) {

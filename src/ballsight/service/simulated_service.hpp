@@ -21,6 +21,7 @@
 #include <optional>
 
 #include "ballsight/service/court_service.hpp"
+#include "ballsight/sim/court_scenario.hpp"
 #include "ballsight/sim/court_world.hpp"
 
 namespace ballsight {
@@ -38,9 +39,10 @@ struct SimulatedServiceOptions {
   std::uint64_t seed = 1;
   std::optional<int> balls;     // tennis balls on the court; nullopt: the scenario's 20-60
   double cluster_share = 0.25;  // of them, in clusters of 2-4 touching balls
-  double vision_hz = 10.0;      // frame sets per second of simulated time
-  bool realtime = false;        // simulated time at wall time (else as fast as possible)
-  double robot_wait_s = 1.0;    // for a driving robot's command, at most (wall)
+  sim::BallLayout layout = sim::BallLayout::scattered;  // where the others lie
+  double vision_hz = 10.0;                              // frame sets per second of simulated time
+  bool realtime = false;      // simulated time at wall time (else as fast as possible)
+  double robot_wait_s = 1.0;  // for a driving robot's command, at most (wall)
   // Every tick waits, however long, for the robot's acknowledgement of the newest update (sent
   // after its command and its report of collected balls, which publishes an update of its own),
   // from the first update on: the run then never depends on wall time or the machine's load

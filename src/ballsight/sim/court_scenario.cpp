@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ballsight/core/angle.hpp"
+#include "ballsight/core/enum_names.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/sim/seeding.hpp"
 #include "ballsight/sim/tennis_net.hpp"
@@ -71,6 +72,37 @@ Vec2 place(std::mt19937_64& rng, const Placement& placement, double radius, Draw
     if (placement.is_free(xy, radius)) return xy;
   }
   throw std::logic_error("court scenario: no free place for a ball");
+}
+
+/// A place for a ball of `layout` (not scattered); the caller checks that it is free.
+Vec2 laid_out(std::mt19937_64& rng, const TennisCourtSpec& court, BallLayout layout) {
+  const double r = kTennisBallRadiusM;
+  const GroundRect fence = court.surround_rect();
+  const double side = uniform_int(rng, 0, 1) == 1 ? 1.0 : -1.0;
+  switch (layout) {
+    case BallLayout::along_net: {
+      const double post_y = TennisNet::of(court) ? court.doubles_width_m / 2.0 : fence.y_max;
+      return {side * uniform(rng, 0.0, 0.30), uniform(rng, -post_y, post_y)};
+    }
+    case BallLayout::along_fence: {
+      const double in = uniform(rng, r + 0.005, 0.20);
+      const double along = uniform(rng, 0.0, 1.0);
+      const double w = fence.x_max - fence.x_min, h = fence.y_max - fence.y_min;
+      if (uniform(rng, 0.0, w + h) < w) {  // a long side, by length
+        return {fence.x_min + along * w, side > 0 ? fence.y_max - in : fence.y_min + in};
+      }
+      return {side > 0 ? fence.x_max - in : fence.x_min + in, fence.y_min + along * h};
+    }
+    case BallLayout::net_posts: {
+      const std::optional<TennisNet> net = TennisNet::of(court);
+      const Vec2 post = net ? net->post_positions()[side > 0 ? 1 : 0] : Vec2(0.0, side * 5.0);
+      const double a = uniform(rng, -kPi, kPi), d = uniform(rng, 0.05, 0.60);
+      return post + d * Vec2(std::cos(a), std::sin(a));
+    }
+    case BallLayout::scattered:
+      break;
+  }
+  throw std::logic_error("laid_out: scattered balls are drawn by the caller");
 }
 
 SceneSphere tennis_ball(int id, const Vec2& xy) {
@@ -141,7 +173,16 @@ FloorLeaf random_leaf(std::mt19937_64& rng, const TennisCourtSpec& court) {
   return leaf;
 }
 
+constexpr EnumNames<BallLayout, 4> kBallLayouts{{{BallLayout::scattered, "scattered"},
+                                                 {BallLayout::along_net, "along_net"},
+                                                 {BallLayout::along_fence, "along_fence"},
+                                                 {BallLayout::net_posts, "net_posts"}}};
+
 }  // namespace
+
+std::string_view ball_layout_name(BallLayout layout) {
+  return enum_name(kBallLayouts, layout);
+}
 
 void CourtScenarioOptions::validate() const {
   if (ball_count) {
@@ -243,8 +284,14 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
     }));
   }
 
-  // The rest scattered: mostly on the court, some rolled into the run-off area.
+  // The rest as the layout puts them; scattered: mostly on the court, some rolled into the
+  // run-off area.
   while (id < count) {
+    if (options.layout != BallLayout::scattered) {
+      add_ball(
+          place(rng, placement, r, [&](auto& g) { return laid_out(g, court, options.layout); }));
+      continue;
+    }
     const bool on_run_off = uniform(rng, 0.0, 1.0) < 0.15;
     const GroundRect area = on_run_off ? court.surround_rect() : on_court;
     add_ball(place(rng, placement, r, [&](auto& g) { return uniform_in(g, area, 0.3); }));

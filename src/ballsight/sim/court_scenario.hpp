@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "ballsight/sim/court_scene.hpp"
@@ -14,12 +15,21 @@
 
 namespace ballsight::sim {
 
+/// Where the balls that are neither in clusters nor beside the robot lie: scattered (mostly on
+/// the court, some in the run-off), in a line along the net (within 30 cm of its centre line,
+/// both sides), along the fence (within 20 cm of it), or around the net posts (within 60 cm).
+enum class BallLayout { scattered, along_net, along_fence, net_posts };
+
+/// "scattered", "along_net", "along_fence", "net_posts".
+std::string_view ball_layout_name(BallLayout layout);
+
 struct CourtScenarioOptions {
-  std::optional<int> ball_count;          // tennis balls; nullopt: uniform in [20, 60]
-  double noise_sigma = 2.0;               // sensor noise, grey levels
-  std::optional<double> brightness_gain;  // nullopt: uniform in [0.8, 1.2]
-  bool shadow = true;                     // a shadow band across the court (sun, hard_shadow)
-  double cluster_share = 0.25;            // of the balls, those in clusters of 2-4 touching
+  std::optional<int> ball_count;              // tennis balls; nullopt: uniform in [20, 60]
+  double noise_sigma = 2.0;                   // sensor noise, grey levels
+  std::optional<double> brightness_gain;      // nullopt: uniform in [0.8, 1.2]
+  bool shadow = true;                         // a shadow band across the court (sun, hard_shadow)
+  double cluster_share = 0.25;                // of the balls, those in clusters of 2-4 touching
+  BallLayout layout = BallLayout::scattered;  // the other balls
   /// nullopt: each scene draws sun, hard_shadow or overcast, equally likely (indoor only when
   /// asked: the scenes of a seed stay as they were).
   std::optional<LightCondition> light;
