@@ -94,8 +94,8 @@ void add_eval_loop_command(CLI::App& eval) {
       ->capture_default_str();
   cmd->add_option("--odometry-drift", args->options.robot.body.odometry_drift,
                   "Wheel slip: the robot moves less (or more) than its wheels turn by a slowly "
-                  "varying share of this standard deviation (0.01: odometry off by about 1 cm a "
-                  "metre)")
+                  "varying share of this standard deviation, lasting about 2 s (0.01: odometry "
+                  "off by about 1 cm over a metre or two)")
       ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
   cmd->add_option("--steer-ahead-ms", args->steer_ahead_ms,

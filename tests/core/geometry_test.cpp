@@ -38,6 +38,20 @@ TEST(Polar, RoundTripsThroughCartesian) {
   EXPECT_NEAR(polar_from_cartesian({-1.0, -1e-12}).theta_deg, 180.0, 1e-6);
 }
 
+TEST(Pose2D, MovesAlongAnArc) {
+  const Pose2D straight = along_arc({Vec2(1, 2), 0.5}, 2.0, 0.0, 0.5);
+  EXPECT_NEAR((straight.position - Vec2(1, 2) - Vec2(std::cos(0.5), std::sin(0.5))).norm(), 0.0,
+              1e-12);
+  EXPECT_DOUBLE_EQ(straight.heading_rad, 0.5);
+  // A quarter circle of radius 1 m, counter-clockwise from heading 0.
+  const Pose2D quarter = along_arc({Vec2(0, 0), 0.0}, 1.0, 1.0, kPi / 2.0);
+  EXPECT_NEAR((quarter.position - Vec2(1, 1)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(quarter.heading_rad, kPi / 2.0, 1e-12);
+  const Pose2D spin = along_arc({Vec2(3, 3), 3.0}, 0.0, 1.0, 0.5);  // on the spot, wrapped
+  EXPECT_EQ(spin.position, Vec2(3, 3));
+  EXPECT_NEAR(spin.heading_rad, 3.5 - 2.0 * kPi, 1e-12);
+}
+
 TEST(Rigid2, ComposesAndInverts) {
   SCOPED_TRACE("seed " + std::to_string(kSeed));
   std::mt19937 rng(kSeed);

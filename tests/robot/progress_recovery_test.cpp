@@ -20,6 +20,10 @@ TEST(ProgressRecovery, MovingOrTurningIsProgress) {
     pose.heading_rad += 0.01;
     EXPECT_FALSE(r.step(pose, k * kTick, true)) << k;
   }
+  ProgressRecovery straight;  // 0.6 m in 10 s without turning
+  for (int k = 0; k < 300; ++k) {
+    EXPECT_FALSE(straight.step({Vec2(0.006 * k, 0.0), 0.0}, k * kTick, true)) << k;
+  }
   ProgressRecovery idle;  // standing still with no ball left: nothing to do
   for (int k = 0; k < 300; ++k) EXPECT_FALSE(idle.step({Vec2(1, 1), 0.0}, k * kTick, false));
   EXPECT_EQ(idle.stalls(), 0);
@@ -64,6 +68,21 @@ TEST(ProgressRecovery, BlockedBehindItDrivesAhead) {
   EXPECT_GE(ahead, 19);  // given up after 2 s: the route again, and a new window
   EXPECT_LE(ahead, 20);
   EXPECT_FALSE(r.step(still, t += kTick, true));
+  EXPECT_EQ(r.stalls(), 1);
+}
+
+// A window is timed on one clock: a restart (the clock changes) or a clock that goes back (a
+// court resumed) begins a new one instead of finding a stall at once.
+TEST(ProgressRecovery, ANewClockBeginsANewWindow) {
+  ProgressRecovery r;
+  const Pose2D still{Vec2(1, 1), 0.0};
+  EXPECT_FALSE(r.step(still, 0.0, true));  // wall clock, 0 s
+  r.restart();
+  EXPECT_FALSE(r.step(still, 250.0, true));  // the court's clock, already at 250 s
+  EXPECT_FALSE(r.step(still, 259.0, true));
+  EXPECT_FALSE(r.step(still, 3.0, true));  // back: a new window from 3 s
+  EXPECT_FALSE(r.step(still, 12.0, true));
+  EXPECT_TRUE(r.step(still, 13.0, true));
   EXPECT_EQ(r.stalls(), 1);
 }
 

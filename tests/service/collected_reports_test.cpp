@@ -38,5 +38,18 @@ TEST(NavigationHub, ForgetsCollectedReportsOnceLaterFramesAreFused) {
   EXPECT_TRUE(hub.reports().collected.empty());
 }
 
+// A court nobody drives takes each reported ball off by hand once, whenever the report came.
+TEST(NavigationHub, HandsEachReportOutOnce) {
+  NavigationHub hub;
+  hub.add_collected({Vec2(3.0, 4.0)});
+  EXPECT_EQ(hub.take_for_hand(), std::vector<Vec2>{Vec2(3.0, 4.0)});
+  EXPECT_TRUE(hub.take_for_hand().empty());
+  hub.frames_fused(utc_now_ns() + 1);  // the planner forgets it; the hand had it already
+  hub.add_collected({Vec2(1.0, 2.0)});
+  hub.frames_fused(utc_now_ns() + 1);  // forgotten by the planner before the hand came by
+  EXPECT_EQ(hub.take_for_hand(), std::vector<Vec2>{Vec2(1.0, 2.0)});
+  EXPECT_EQ(hub.collected(), std::vector<Vec2>{});
+}
+
 }  // namespace
 }  // namespace ballsight

@@ -61,5 +61,22 @@ TEST(PlanUpdate, WeighsClientReportsByTheFramesTime) {
   EXPECT_EQ(none.world.balls.size(), 3u);
 }
 
+// A report takes one ball: not its twin detection (one ball seen twice), not its neighbour.
+TEST(PlanUpdate, AReportTakesOneBallNotItsTwinNorItsNeighbour) {
+  const Site site = read_site(kExampleSite.string());
+  WorldModel world = seen_world(5000);
+  FusedBall twin;
+  twin.position_m = Vec2(2.01, 1.0);  // the ball at (2, 1) once more
+  world.balls.push_back(twin);
+  FusedBall neighbour;
+  neighbour.position_m = Vec2(2.0, 1.1);  // a ball touching it
+  world.balls.push_back(neighbour);
+  ClientReports reports;
+  reports.collected = {Vec2(2.0, 1.0)};
+  const NavigationUpdate u = plan_update(site, world, reports, nullptr, {});
+  EXPECT_EQ(u.route.order.size(), 3u);  // (4, -2), (-1, 3) and the neighbour
+  EXPECT_EQ(u.world.balls.size(), 5u);
+}
+
 }  // namespace
 }  // namespace ballsight

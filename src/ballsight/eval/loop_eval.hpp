@@ -83,7 +83,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
 
 struct LoopEvalOptions {
   std::uint64_t seed = 1;
-  int scenes = 4;  // ball counts spread over [min_balls, max_balls], layouts alternating
+  int scenes = 4;  // ball counts spread over [min_balls, max_balls], layouts in turn (loop_layouts)
   int min_balls = 10, max_balls = 60;
   double max_time_s = 400.0;         // simulated, per run
   std::vector<std::string> systems;  // empty: all three

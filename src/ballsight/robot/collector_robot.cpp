@@ -35,7 +35,11 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   options.validate();
   PathFollower follower(options.follow);
   std::vector<Vec2> planned;  // the route's waypoints being followed
-  FollowCommand sent;         // the last command sent: the wheels carry it out during the latency
+  FollowCommand sent;         // the last command sent
+  // The command the wheels carry out during the latency: the last one sent for earlier frames (an
+  // update published again for the same frames, after a report, replaces its command at once).
+  FollowCommand in_flight;
+  std::int64_t frames_ns = -1;
   ProgressRecovery recovery(options.progress);
   bool sim_clock = false;  // the simulated court tells its time: stalls are timed on it
   CollectorResult result;
@@ -52,6 +56,10 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
     ++result.updates;
     result.latency_ms.push_back(static_cast<double>(u->received_ns - u->capture_time_ns) * 1e-6);
     result.seqs.push_back(u->seq);
+    if (u->capture_time_ns != frames_ns) {
+      in_flight = sent;
+      frames_ns = u->capture_time_ns;
+    }
     FollowCommand command;
     if (u->robot) {
       if (u->waypoints_m != planned) {
@@ -66,14 +74,16 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
           recovery.step(*u->robot, now_s, !u->balls_m.empty());
       command = freeing ? *freeing
                         : follower.command(options.latency_s > 0.0
-                                               ? along_arc(*u->robot, sent.speed_mps,
-                                                           sent.turn_rate_rps, options.latency_s)
+                                               ? along_arc(*u->robot, in_flight.speed_mps,
+                                                           in_flight.turn_rate_rps,
+                                                           options.latency_s)
                                                : *u->robot);
     }
     sent = command;
     const std::optional<nlohmann::json> drove =
         link.drive_simulated(u->seq, command.speed_mps, deg_from_rad(command.turn_rate_rps));
     if (drove && drove->contains("time_s")) {
+      if (!sim_clock) recovery.restart();  // from now on timed on the court's clock
       sim_clock = true;
       result.sim_time_s = drove->value("time_s", result.sim_time_s);
     }

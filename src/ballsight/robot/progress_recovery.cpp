@@ -27,9 +27,15 @@ void ProgressRecovery::start(Phase phase, const Pose2D& pose, double now_s) {
   since_s_ = now_s;
 }
 
+void ProgressRecovery::restart() {
+  phase_ = Phase::watching;
+  since_.reset();
+}
+
 std::optional<FollowCommand> ProgressRecovery::step(const Pose2D& pose, double now_s,
                                                     bool working) {
-  if (!since_) start(Phase::watching, pose, now_s);
+  // A new window at the first step, and when the clock went back (a court resumed).
+  if (!since_ || now_s < since_s_) start(Phase::watching, pose, now_s);
   const double moved = (pose.position - since_->position).norm();
   const double elapsed = now_s - since_s_;
   const double back = -options_.recovery_speed_mps;

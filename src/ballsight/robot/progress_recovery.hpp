@@ -35,6 +35,9 @@ class ProgressRecovery {
   /// left to collect. Nullopt: follow the route; else the recovery's command.
   std::optional<FollowCommand> step(const Pose2D& pose, double now_s, bool working);
 
+  /// Forgets the window under way (its clock changes): the next step begins a new one.
+  void restart();
+
   /// Times the robot was found stalled.
   int stalls() const { return stalls_; }
 

@@ -105,8 +105,9 @@ std::uint64_t UpdatePublisher::publish_result(
       views[k].detections = std::move(*result.detections[k]);  // not needed past the world model
     }
   }
-  hub.frames_fused(result.world.capture_time_ns);
   const std::lock_guard plan_lock(plan_mutex_);
+  // Under the plan lock: a re-plan of the old world never runs without the reports it needs.
+  hub.frames_fused(result.world.capture_time_ns);
   last_world_ = std::move(result.world);
   const auto plan_started = Clock::now();
   // The views and the health's figures are there before anyone hears of the update (a client

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <random>
 #include <tuple>
+#include <utility>
 
 #include "ballsight/core/error.hpp"
 
@@ -60,6 +61,14 @@ std::size_t first_index_after(const std::deque<NavigationUpdate>& recent, std::u
   if (recent.empty() || recent.back().seq <= after) return recent.size();
   const std::uint64_t first = recent.front().seq;
   return static_cast<std::size_t>(after + 1 > first ? after + 1 - first : 0);
+}
+
+/// Drops the oldest of `items` beyond the newest `n`.
+template <class T>
+void keep_newest(std::vector<T>& items, std::size_t n) {
+  if (items.size() > n) {
+    items.erase(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(items.size() - n));
+  }
 }
 
 std::vector<Vec2> positions(const std::vector<External<Vec2>>& reports) {
@@ -133,12 +142,17 @@ std::optional<External<std::vector<Vec2>>> NavigationHub::balls() const {
 void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
   const std::lock_guard lock(mutex_);
   const std::int64_t now = utc_now_ns();
-  for (const Vec2& p : positions) collected_.push_back({p, now});
-  if (collected_.size() > kMaxCollected) {
-    collected_.erase(
-        collected_.begin(),
-        collected_.begin() + static_cast<std::ptrdiff_t>(collected_.size() - kMaxCollected));
+  for (const Vec2& p : positions) {
+    collected_.push_back({p, now});
+    for_hand_.push_back(p);
   }
+  keep_newest(collected_, kMaxCollected);
+  keep_newest(for_hand_, kMaxCollected);
+}
+
+std::vector<Vec2> NavigationHub::take_for_hand() {
+  const std::lock_guard lock(mutex_);
+  return std::exchange(for_hand_, {});
 }
 
 std::vector<bool> taken_by_reports(const std::vector<Vec2>& balls,

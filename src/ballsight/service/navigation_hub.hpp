@@ -109,6 +109,9 @@ class NavigationHub {
   /// then are forgotten, since those frames show what the robot took gone; a ball they still
   /// show there was not taken, or is another one, and is planned again.
   void frames_fused(std::int64_t capture_ns);
+  /// The reports made since the last call, each handed out once (a simulated court with no robot
+  /// driving takes their balls off by hand; at most kMaxCollected wait).
+  std::vector<Vec2> take_for_hand();
 
   static constexpr std::size_t kMaxCollected = 4096;
 
@@ -126,6 +129,7 @@ class NavigationHub {
   std::optional<External<Pose2D>> robot_;
   std::optional<External<std::vector<Vec2>>> balls_;
   std::vector<External<Vec2>> collected_;
+  std::vector<Vec2> for_hand_;
 };
 
 }  // namespace ballsight

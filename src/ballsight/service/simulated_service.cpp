@@ -191,7 +191,9 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       driving = s.options.lockstep || s.driving(started);
     }
     std::vector<int> removed;
-    if (!driving) {  // no robot drives: balls reported collected are taken off by hand
+    // Each report once: with no robot driving, its ball is taken off by hand.
+    const std::vector<Vec2> reported = hub.take_for_hand();
+    if (!driving && !reported.empty()) {
       std::vector<Vec2> at;
       std::vector<int> ids;
       for (const sim::SceneSphere& b : s.world->scene().balls) {
@@ -199,7 +201,7 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
         at.push_back(b.center_in_field.head<2>());
         ids.push_back(b.id);
       }
-      const std::vector<bool> taken = taken_by_reports(at, hub.collected());
+      const std::vector<bool> taken = taken_by_reports(at, reported);
       std::vector<int> gone;
       for (std::size_t k = 0; k < ids.size(); ++k) {
         if (taken[k]) gone.push_back(ids[k]);

@@ -25,15 +25,18 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
   for (const FusedBall& b : world.balls) balls.push_back(b.position_m);
   if (reports.balls && reports.balls->set_ns > capture_ns) balls = reports.balls->value;
   // Two detections closer than a ball's radius would be one ball twice: keep the first.
-  const std::vector<bool> taken = taken_by_reports(balls, reports.collected);
   std::vector<Vec2> distinct;
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    const Vec2& b = balls[i];
-    if (!taken[i] && std::none_of(distinct.begin(), distinct.end(), [&](const Vec2& d) {
-          return (d - b).norm() < site.ball_radius_m;
-        })) {
+  for (const Vec2& b : balls) {
+    if (std::none_of(distinct.begin(), distinct.end(),
+                     [&](const Vec2& d) { return (d - b).norm() < site.ball_radius_m; })) {
       distinct.push_back(b);
     }
+  }
+  // Less the balls the robot reported collected, one for each report.
+  const std::vector<bool> taken = taken_by_reports(distinct, reports.collected);
+  std::vector<Vec2> left;
+  for (std::size_t i = 0; i < distinct.size(); ++i) {
+    if (!taken[i]) left.push_back(distinct[i]);
   }
   if (!robot) {
     update.route.planner = std::string(planner_name(options.kind));
@@ -41,7 +44,7 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
   }
   PlannerOptions planner = options;
   planner.previous = previous;
-  update.route = plan(site_planning_problem(site, *robot, std::move(distinct)), planner);
+  update.route = plan(site_planning_problem(site, *robot, std::move(left)), planner);
   return update;
 }
 

@@ -26,7 +26,8 @@ struct RobotImperfections {
   double command_latency_s = 0.0;  // a command acts this long after it was given
   /// Wheel slip: a share of the wheels' motion (forward and turn, each its own) that the robot
   /// does not make over the ground, varying slowly about 0 with this standard deviation, so that
-  /// odometry from the wheels drifts by about this fraction of the distance driven.
+  /// odometry from the wheels is off by about this fraction of a drive of a metre or two (over
+  /// longer drives the slip partly averages out).
   double odometry_drift = 0.0;
   double slip_time_s = 2.0;  // how long a slip lasts (its correlation time)
   std::uint64_t seed = 1;    // of the slip
