@@ -72,12 +72,12 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
               : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       const std::optional<FollowCommand> freeing =
           recovery.step(*u->robot, now_s, !u->balls_m.empty());
-      command = freeing ? *freeing
-                        : follower.command(options.latency_s > 0.0
-                                               ? along_arc(*u->robot, in_flight.speed_mps,
-                                                           in_flight.turn_rate_rps,
-                                                           options.latency_s)
-                                               : *u->robot);
+      command = freeing
+                    ? *freeing
+                    : follower.command(options.latency_s > 0.0
+                                           ? along_arc(*u->robot, in_flight.speed_mps,
+                                                       in_flight.turn_rate_rps, options.latency_s)
+                                           : *u->robot);
     }
     sent = command;
     const std::optional<nlohmann::json> drove =
