@@ -32,38 +32,32 @@ void ProgressRecovery::restart() {
   since_.reset();
 }
 
+FollowCommand ProgressRecovery::drive() const {
+  const double speed = options_.recovery_speed_mps;
+  return {phase_ == Phase::backing ? -speed : speed, 0.0, false};
+}
+
 std::optional<FollowCommand> ProgressRecovery::step(const Pose2D& pose, double now_s,
                                                     bool working) {
   // A new window at the first step, and when the clock went back (a court resumed).
   if (!since_ || now_s < since_s_) start(Phase::watching, pose, now_s);
   const double moved = (pose.position - since_->position).norm();
   const double elapsed = now_s - since_s_;
-  const double back = -options_.recovery_speed_mps;
-  switch (phase_) {
-    case Phase::watching:
-      if (!working || moved >= options_.radius_m ||
-          std::abs(wrap_rad_pi(pose.heading_rad - since_->heading_rad)) >= options_.turn_rad) {
-        start(Phase::watching, pose, now_s);
-        return std::nullopt;
-      }
-      if (elapsed < options_.window_s) return std::nullopt;
-      ++stalls_;
-      start(Phase::backing, pose, now_s);
-      return FollowCommand{back, 0.0, false};
-    case Phase::backing:
-      if (moved < options_.recovery_m && elapsed < options_.recovery_s) {
-        return FollowCommand{back, 0.0, false};
-      }
-      if (moved < options_.stuck_m) {  // backing is blocked: ahead instead
-        start(Phase::forward, pose, now_s);
-        return FollowCommand{options_.recovery_speed_mps, 0.0, false};
-      }
-      break;
-    case Phase::forward:
-      if (moved < options_.recovery_m && elapsed < options_.recovery_s) {
-        return FollowCommand{options_.recovery_speed_mps, 0.0, false};
-      }
-      break;
+  if (phase_ == Phase::watching) {
+    if (!working || moved >= options_.radius_m ||
+        std::abs(wrap_rad_pi(pose.heading_rad - since_->heading_rad)) >= options_.turn_rad) {
+      start(Phase::watching, pose, now_s);
+      return std::nullopt;
+    }
+    if (elapsed < options_.window_s) return std::nullopt;
+    ++stalls_;
+    start(Phase::backing, pose, now_s);
+    return drive();
+  }
+  if (moved < options_.recovery_m && elapsed < options_.recovery_s) return drive();
+  if (phase_ == Phase::backing && moved < options_.stuck_m) {  // blocked behind: ahead instead
+    start(Phase::forward, pose, now_s);
+    return drive();
   }
   start(Phase::watching, pose, now_s);  // recovered: the route again, a new window
   return std::nullopt;

@@ -9,16 +9,17 @@
 
 #include <optional>
 
+#include "ballsight/core/angle.hpp"
 #include "ballsight/core/geometry.hpp"
 #include "ballsight/robot/path_follower.hpp"
 
 namespace ballsight {
 
 struct ProgressOptions {
-  double window_s = 10.0;          // Nav2's movement_time_allowance
-  double radius_m = 0.5;           // Nav2's required_movement_radius
-  double turn_rad = 0.7853981634;  // or this much turning: a turn on the spot is progress too
-  double recovery_m = 0.3;         // each recovery drives this far straight
+  double window_s = 10.0;       // Nav2's movement_time_allowance
+  double radius_m = 0.5;        // Nav2's required_movement_radius
+  double turn_rad = kPi / 4.0;  // or this much turning: a turn on the spot is progress too
+  double recovery_m = 0.3;      // each recovery drives this far straight
   double recovery_speed_mps = 0.3;
   double recovery_s = 2.0;  // in one direction at most this long
   double stuck_m = 0.05;    // moved less in that time: that way is blocked
@@ -45,6 +46,8 @@ class ProgressRecovery {
   enum class Phase { watching, backing, forward };
 
   void start(Phase phase, const Pose2D& pose, double now_s);
+  /// The command of the recovery's phase: straight back, or straight ahead.
+  FollowCommand drive() const;
 
   ProgressOptions options_;
   Phase phase_ = Phase::watching;

@@ -111,7 +111,6 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
   // The arc at the step's mean speeds, less the slip.
   const double v = 0.5 * (motion.speed_mps + next.speed_mps) * (1.0 - slip.speed);
   const double w = 0.5 * (motion.turn_rate_rps + next.turn_rate_rps) * (1.0 - slip.turn);
-  const double h0 = motion.pose.heading_rad, dh = w * dt;
   next.pose = along_arc(motion.pose, v, w, dt);
   if (!footprint_blocked(footprint, next.pose, court)) return {next, false};
   // In contact: the part of the motion the obstacle allows (sliding straight on, or turning on
@@ -119,13 +118,15 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
   RobotMotion slide = motion;
   slide.turn_rate_rps = 0.0;
   slide.speed_mps = next.speed_mps;
-  slide.pose.position += v * dt * Vec2(std::cos(h0), std::sin(h0));
+  slide.pose.position = along_arc(motion.pose, v, 0.0, dt).position;
   if (std::abs(v) > 1e-9 && !footprint_blocked(footprint, slide.pose, court)) return {slide, true};
   RobotMotion turn = motion;
   turn.speed_mps = 0.0;
   turn.turn_rate_rps = next.turn_rate_rps;
-  turn.pose.heading_rad = wrap_rad_pi(h0 + dh);
-  if (std::abs(dh) > 1e-12 && !footprint_blocked(footprint, turn.pose, court)) return {turn, true};
+  turn.pose = along_arc(motion.pose, 0.0, w, dt);
+  if (std::abs(w * dt) > 1e-12 && !footprint_blocked(footprint, turn.pose, court)) {
+    return {turn, true};
+  }
   RobotMotion stopped = motion;
   stopped.speed_mps = 0.0;
   stopped.turn_rate_rps = 0.0;
