@@ -18,6 +18,7 @@ namespace {
 struct EvalLoopArgs {
   eval::LoopEvalOptions options;
   std::string systems;
+  std::string layouts;
   double command_latency_ms = 0.0;
   std::optional<double> steer_ahead_ms;
   bool json = false;
@@ -36,14 +37,19 @@ void run_eval_loop(const EvalLoopArgs& args) {
       options.systems.emplace_back(item.text);
     }
   }
+  if (!args.layouts.empty()) {
+    for (const CsvField& item : split_csv_fields(args.layouts)) {
+      options.layouts.emplace_back(item.text);
+    }
+  }
   const std::vector<eval::LoopRun> runs =
       eval::run_loop_eval(options, connect_over_loopback, [](const eval::LoopRun& r) {
         std::fprintf(stderr,
                      "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m, %d "
-                     "stalls%s\n",
+                     "stalls, %d ticks in contact, %d frame sets dead reckoned%s\n",
                      r.system.c_str(), static_cast<unsigned long long>(r.seed), r.layout.c_str(),
-                     r.collected, r.balls, r.time_s, r.distance_m, r.stalls,
-                     r.never_overlapped ? "" : " (overlapped the net or fence!)");
+                     r.collected, r.balls, r.time_s, r.distance_m, r.stalls, r.contacts,
+                     r.dead_reckoned, r.never_overlapped ? "" : " (overlapped the net or fence!)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
   if (args.json) {
@@ -78,6 +84,9 @@ void add_eval_loop_command(CLI::App& eval) {
                   "Scenes (ball counts spread over the range; layouts in turn: uniform, clustered, "
                   "along the net, along the fence, around the net posts)")
       ->capture_default_str();
+  cmd->add_option("--layouts", args->layouts,
+                  "Comma-separated layouts taken in turn instead of all five (uniform, clustered, "
+                  "along_net, along_fence, net_posts)");
   cmd->add_option("--record-dir", args->options.record_dir,
                   "Write each run's record of the court here (<system>-<seed>.jsonl)");
   cmd->add_option("--min-balls", args->options.min_balls, "Balls in the first scene")

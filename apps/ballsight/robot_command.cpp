@@ -71,10 +71,16 @@ void run_robot(RobotArgs args) {
             << " stalls; " << r.gaps << " updates missed, " << r.reconnects
             << " reconnects; simulated time " << r.sim_time_s << " s" << std::endl;
   if (!args.summary.empty()) {
-    const nlohmann::json summary{
-        {"done", r.done}, {"updates", r.updates},       {"collected", r.collected},
-        {"gaps", r.gaps}, {"reconnects", r.reconnects}, {"sim_time_s", r.sim_time_s},
-        {"seqs", r.seqs}, {"latency_ms", r.latency_ms}, {"stalls", r.stalls}};
+    const nlohmann::json summary{{"done", r.done},
+                                 {"updates", r.updates},
+                                 {"collected", r.collected},
+                                 {"gaps", r.gaps},
+                                 {"reconnects", r.reconnects},
+                                 {"sim_time_s", r.sim_time_s},
+                                 {"seqs", r.seqs},
+                                 {"latency_ms", r.latency_ms},
+                                 {"stalls", r.stalls},
+                                 {"dead_reckoned", r.dead_reckoned}};
     write_file_atomic(args.summary, summary.dump() + "\n");
   }
 }
@@ -113,7 +119,8 @@ void add_robot_command(CLI::App& app) {
   for (CLI::Option* option : add_domain_options(*cmd, *args, "court's topics")) option->needs(dds);
   cmd->add_option("--summary", args->summary,
                   "Write what happened here at the end (JSON: done, updates, collected, gaps, "
-                  "reconnects, sim_time_s, seqs, latency_ms per update, stalls)");
+                  "reconnects, sim_time_s, seqs, latency_ms per update, stalls, dead_reckoned: "
+                  "frame sets driven on its own estimate out of the cameras' sight)");
   cmd->callback([args] { run_robot(*args); });
 }
 

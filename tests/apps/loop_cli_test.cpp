@@ -46,12 +46,13 @@ TEST(LoopCli, TheRobotCollectsEveryBallDrivenByTheService) {
   EXPECT_EQ(record.ticks.back().world.balls_left, 0);
 }
 
-// A robot with a real one's command latency and wheel slip, steering ahead by its latency.
+// A robot with a real one's command latency and wheel slip, steering ahead by its latency, on
+// balls along the fence (reached square to it, and left backwards).
 TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {
   const CliResult r =
-      run_cli({"eval", "loop", "--scenes", "1", "--min-balls", "6", "--max-balls", "6",
-               "--max-time", "60", "--systems", "ballsight", "--command-latency-ms", "100",
-               "--odometry-drift", "0.01", "--json"});
+      run_cli({"eval", "loop", "--scenes", "1", "--min-balls", "6", "--max-balls", "6", "--layouts",
+               "along_fence", "--max-time", "60", "--systems", "ballsight", "--command-latency-ms",
+               "100", "--odometry-drift", "0.01", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   const nlohmann::json j = nlohmann::json::parse(r.stdout_text);
   const nlohmann::json& s = j["systems"]["ballsight"];
@@ -62,7 +63,11 @@ TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {
   EXPECT_LT(s["time_s_mean"].get<double>(), 60.0);
   EXPECT_EQ(s["time_ratio_to_ballsight"], 1.0);
   EXPECT_EQ(s["runs"][0]["stalls"], 0);
+  EXPECT_EQ(s["runs"][0]["layout"], "along_fence");
+  EXPECT_TRUE(s["runs"][0].contains("contacts"));
+  EXPECT_TRUE(s["runs"][0].contains("dead_reckoned"));
   expect_one_line_error(run_cli({"eval", "loop", "--systems", "magic"}), "--systems");
+  expect_one_line_error(run_cli({"eval", "loop", "--layouts", "square"}), "--layouts");
   expect_one_line_error(run_cli({"eval", "loop", "--odometry-drift", "0.9"}), "--odometry-drift");
   expect_one_line_error(run_cli({"eval", "loop", "--command-latency-ms", "-5"}),
                         "--command-latency-ms");

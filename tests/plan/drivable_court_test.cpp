@@ -96,6 +96,54 @@ TEST(DrivableCourt, BallAgainstTheNetIsApproachedFromItsSide) {
   EXPECT_EQ(kCourt.approach_point(Vec2(3, 2)), Vec2(3, 2));
 }
 
+TEST(DrivableCourt, AlongTheFenceTheRouteEntersAndLeavesSquareToIt) {
+  // The fence at y = -9 and x = 18; its lane 0.7 m wide.
+  const Vec2 a(5.0, -8.9), b(7.0, -8.8);
+  EXPECT_TRUE(kCourt.in_fence_lane(a));
+  EXPECT_FALSE(kCourt.in_fence_lane(Vec2(5.0, -8.2)));
+  EXPECT_EQ(kCourt.fence_exit(a), Vec2(5.0, -8.3));
+  const DrivablePath p = shortest_path(kCourt, a, b);
+  ASSERT_EQ(p.via_count, 2);
+  EXPECT_EQ(p.via[0], Vec2(5.0, -8.3));
+  EXPECT_EQ(p.via[1], Vec2(7.0, -8.3));
+  EXPECT_NEAR(p.length_m, 0.6 + 2.0 + 0.5, 1e-12);
+  const DrivablePath back = shortest_path(kCourt, b, a);  // the same bends, reversed
+  ASSERT_EQ(back.via_count, 2);
+  EXPECT_EQ(back.via[0], p.via[1]);
+  EXPECT_NEAR(back.length_m, p.length_m, 1e-12);
+  // In a corner: out square to the nearer side.
+  EXPECT_EQ(kCourt.fence_exit(Vec2(17.9, -8.95)), Vec2(17.9, -8.3));
+  EXPECT_EQ(kCourt.fence_exit(Vec2(17.9, -8.3)), Vec2(17.3, -8.3));
+  // Driven within 10 degrees of square to the fence: straight.
+  EXPECT_FALSE(kCourt.in_fence_lane(Vec2(5.0, -8.6)));
+  EXPECT_EQ(shortest_path(kCourt, Vec2(5.0, -7.0), a).via_count, 0);
+  EXPECT_EQ(shortest_path(kCourt, Vec2(5.1, -8.0), a).via_count, 0);
+  EXPECT_EQ(shortest_path(kCourt, Vec2(6.0, -8.5), a).via_count, 1);   // 0.5 m out: no lane
+  EXPECT_EQ(shortest_path(kCourt, Vec2(5.15, -8.7), a).via_count, 0);  // the mouth before it
+  EXPECT_EQ(shortest_path(kCourt, Vec2(5.3, -8.8), a).via_count, 2);   // beside it
+  // Out of the fence's lane and round the net: the exits first and last.
+  const DrivablePath round = shortest_path(kCourt, Vec2(-2.0, -8.9), Vec2(2.0, 8.9));
+  ASSERT_GE(round.via_count, 2);
+  EXPECT_EQ(round.via[0], Vec2(-2.0, -8.3));
+  EXPECT_EQ(round.via[static_cast<std::size_t>(round.via_count - 1)], Vec2(2.0, 8.3));
+  // No lane: the straight line.
+  DrivableCourt open = kCourt;
+  open.fence_lane_m = 0.0;
+  EXPECT_EQ(shortest_path(open, a, b).via_count, 0);
+}
+
+TEST(DrivableCourt, BallInACornerIsApproachedSquareToTheNearerSide) {
+  // 0.1 m from the fence at x = 18, 0.2 m from y = -9: the mouth square to x = 18, its centre
+  // moved 0.3 m along it (the ball still in the mouth), where the body has room to turn.
+  const auto near = [](const Vec2& a, const Vec2& b) { return (a - b).norm() < 1e-12; };
+  EXPECT_PRED2(near, kCourt.approach_point(Vec2(17.9, -8.8)), Vec2(17.9, -8.5));
+  // Far enough from the other side: the ball itself; along one side only: the ball.
+  EXPECT_EQ(kCourt.approach_point(Vec2(17.9, -8.4)), Vec2(17.9, -8.4));
+  EXPECT_EQ(kCourt.approach_point(Vec2(17.9, -6.0)), Vec2(17.9, -6.0));
+  // The mirror corner.
+  EXPECT_PRED2(near, kCourt.approach_point(Vec2(-17.8, 8.95)), Vec2(-17.5, 8.95));
+}
+
 TEST(DrivableCourt, ValidateNamesTheProblem) {
   DrivableCourt small = kCourt;
   small.area_min_m = Vec2(-18, -6);

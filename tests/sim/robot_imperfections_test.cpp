@@ -54,6 +54,25 @@ TEST(RobotImperfections, SlipMakesThePathDifferFromTheWheels) {
   EXPECT_EQ(drive(none).position, perfect.position);
 }
 
+TEST(RobotImperfections, OdometryCountsTheWheelsNotTheSlip) {
+  RobotImperfections slipping;
+  slipping.odometry_drift = 0.05;
+  CourtWorld world = world_at({Vec2(-10, 0), 0.3}, slipping);
+  for (int k = 0; k < 50; ++k) world.advance({1.0, 0.2}, 0.1);
+  // The wheels' odometry is the perfect robot's motion from its start, in the start's frame.
+  CourtWorld perfect = world_at({Vec2(-10, 0), 0.3});
+  for (int k = 0; k < 50; ++k) perfect.advance({1.0, 0.2}, 0.1);
+  const Rigid2 moved = Pose2D{Vec2(-10, 0), 0.3}.field_from_robot().inverse() *
+                       perfect.motion().pose.field_from_robot();
+  EXPECT_LT((world.odometry().position - moved.translation).norm(), 0.01);
+  EXPECT_NEAR(world.odometry().heading_rad, moved.theta_rad, 1e-3);
+  EXPECT_EQ(world.history().back().odometry.position, world.odometry().position);
+  // ... and differs from where the slipping robot really went.
+  const Rigid2 really = Pose2D{Vec2(-10, 0), 0.3}.field_from_robot().inverse() *
+                        world.motion().pose.field_from_robot();
+  EXPECT_GT((world.odometry().position - really.translation).norm(), 0.01);
+}
+
 TEST(RobotImperfections, RefusesValuesOutOfRange) {
   RobotImperfections bad;
   bad.command_latency_s = -0.1;

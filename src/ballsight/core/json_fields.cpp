@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 
@@ -76,6 +77,17 @@ std::vector<double> json_number_array(const nlohmann::json& value, const std::st
 std::vector<double> json_numbers(const nlohmann::json& object, const std::string& key,
                                  const std::string& where, std::size_t size) {
   return json_number_array(json_member(object, key, where), where + "." + key, size);
+}
+
+nlohmann::json pose_json(const Pose2D& pose) {
+  return {{"x_m", pose.position.x()},
+          {"y_m", pose.position.y()},
+          {"heading_deg", deg_from_rad(pose.heading_rad)}};
+}
+
+Pose2D json_pose(const nlohmann::json& value, const std::string& where) {
+  return {Vec2(json_number(value, "x_m", where), json_number(value, "y_m", where)),
+          rad_from_deg(json_number(value, "heading_deg", where))};
 }
 
 }  // namespace ballsight

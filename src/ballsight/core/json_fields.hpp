@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "ballsight/core/geometry.hpp"
+
 namespace ballsight {
 
 /// The JSON document of a file of at most kMaxDocumentBytes (file_io.hpp); throws InputError
@@ -35,5 +37,10 @@ std::vector<double> json_number_array(const nlohmann::json& value, const std::st
 /// The member `key` as an array of finite numbers, of `size` elements unless size is 0.
 std::vector<double> json_numbers(const nlohmann::json& object, const std::string& key,
                                  const std::string& where, std::size_t size = 0);
+
+/// A pose as {"x_m", "y_m", "heading_deg"}.
+nlohmann::json pose_json(const Pose2D& pose);
+/// The pose `value` ({"x_m", "y_m", "heading_deg"}, finite numbers).
+Pose2D json_pose(const nlohmann::json& value, const std::string& where);
 
 }  // namespace ballsight

@@ -26,6 +26,9 @@ struct SiteCourt {
   /// Closest the route comes to the mesh when the robot drives along the net: half its body's
   /// width and room (a ball nearer is reached straight from the lane's edge).
   double net_travel_clearance_m = 0.45;
+  /// Along the fence the body has no room to turn: a ball nearer the fence than this is reached
+  /// straight, square to the fence, from this far out, and left backwards the same way.
+  double fence_lane_m = 0.70;
 
   /// The fenced area, centred on the court: where a ball or the robot reported may lie.
   FieldRect fenced_area() const {

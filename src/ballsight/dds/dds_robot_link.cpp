@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/core/utc_clock.hpp"
 #include "ballsight/service/navigation_hub.hpp"
 
@@ -62,8 +63,12 @@ void DdsRobotLink::receive() {
       const std::lock_guard lock(replies_mutex_);
       const auto waiting = answered_.find(message.request);
       if (waiting == answered_.end()) return;  // its request stopped waiting
-      waiting->second = Reply{true, message.ok, message.error ? message.error : "",
-                              message.collected, message.time_s};
+      waiting->second = Reply{true,
+                              message.ok,
+                              message.error ? message.error : "",
+                              message.collected,
+                              message.time_s,
+                              pose_from_message(message.odometry)};
       ++mine;
     });
     if (mine > 0) replied_.notify_all();
@@ -152,7 +157,9 @@ std::optional<nlohmann::json> DdsRobotLink::drive_simulated(std::uint64_t seq, d
         r.turn_rate_dps = turn_rate_dps;
       });
   if (!reply) return std::nullopt;
-  return nlohmann::json{{"collected", reply->collected}, {"time_s", reply->time_s}};
+  return nlohmann::json{{"collected", reply->collected},
+                        {"time_s", reply->time_s},
+                        {"odometry", pose_json(reply->odometry)}};
 }
 
 LinkStatus DdsRobotLink::status() const {

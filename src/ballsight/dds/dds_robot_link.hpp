@@ -59,6 +59,7 @@ class DdsRobotLink : public RobotLink {
     std::string error;
     int collected = 0;
     double time_s = 0.0;
+    Pose2D odometry;
   };
   void receive();
   /// Writes a report of `kind` (`fill` adds what it carries) and waits for its reply; nullopt

@@ -82,7 +82,8 @@ std::vector<TypeDescription> descriptions() {
         field("speed_mps", F::float64), field("turn_rate_dps", F::float64)}},
       {"ballsight_msgs/msg/RobotReply",
        {header, field("client", F::string), field("request", F::uint64), field("ok", F::boolean),
-        field("error", F::string), field("collected", F::int32), field("time_s", F::float64)}},
+        field("error", F::string), field("collected", F::int32), field("time_s", F::float64),
+        nested("odometry", "geometry_msgs/msg/Pose2D")}},
   };
 }
 

@@ -5,6 +5,7 @@
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 
 namespace ballsight::dds {
 namespace {
@@ -89,6 +90,9 @@ void RobotReports::answer(const RobotReportMsg& report) {
   if (done.is_object()) {  // the wheels' answer
     reply.collected = done.value("collected", 0);
     reply.time_s = done.value("time_s", 0.0);
+    if (done.contains("odometry")) {
+      reply.odometry = pose_2d_message(json_pose(done["odometry"], "drive.odometry"));
+    }
   }
   ++answered_;  // before the reply: the robot may count on it once answered
   try {

@@ -79,10 +79,10 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   std::erase_if(ticks, [&](const sim::WorldTick& t) { return t.time_s > max_time_s + 1e-6; });
   const LoopScore score =
       score_loop(scene.balls, start, ticks, collector_footprint(service.site().robot));
-  return {system.name,      scene.seed,      scene.layout.name(),
-          score.balls,      score.collected, score.all ? score.time_s : max_time_s,
-          score.distance_m, score.all,       score.never_overlapped,
-          driven.stalls};
+  return {system.name,      scene.seed,          scene.layout.name(),
+          score.balls,      score.collected,     score.all ? score.time_s : max_time_s,
+          score.distance_m, score.all,           score.never_overlapped,
+          driven.stalls,    score.blocked_ticks, driven.dead_reckoned};
 }
 
 void LoopEvalOptions::validate() const {
@@ -99,11 +99,25 @@ void LoopEvalOptions::validate() const {
                         [&](const LoopSystem& s) { return s.name == name; }),
             "--systems", "unknown system '" + name + "' (report, ballsight-priority, ballsight)");
   }
+  for (const std::string& name : layouts) {
+    require(
+        std::any_of(loop_layouts().begin(), loop_layouts().end(),
+                    [&](const LoopLayout& l) { return l.name() == name; }),
+        "--layouts",
+        "unknown layout '" + name + "' (uniform, clustered, along_net, along_fence, net_posts)");
+  }
 }
 
 std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotConnector& connect,
                                    const std::function<void(const LoopRun&)>& progress) {
   options.validate();
+  std::vector<LoopLayout> layouts;
+  for (const LoopLayout& layout : loop_layouts()) {
+    if (options.layouts.empty() || std::find(options.layouts.begin(), options.layouts.end(),
+                                             layout.name()) != options.layouts.end()) {
+      layouts.push_back(layout);
+    }
+  }
   std::vector<LoopRun> runs;
   for (int k = 0; k < options.scenes; ++k) {
     const int balls = options.scenes == 1
@@ -116,7 +130,7 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
         continue;
       }
       const LoopScene scene{options.seed + static_cast<std::uint64_t>(k), balls,
-                            loop_layouts()[static_cast<std::size_t>(k) % loop_layouts().size()]};
+                            layouts[static_cast<std::size_t>(k) % layouts.size()]};
       const std::filesystem::path record =
           options.record_dir.empty()
               ? std::filesystem::path()
@@ -154,7 +168,9 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
                       {"time_s", r->time_s},
                       {"distance_m", r->distance_m},
                       {"never_overlapped", r->never_overlapped},
-                      {"stalls", r->stalls}});
+                      {"stalls", r->stalls},
+                      {"contacts", r->contacts},
+                      {"dead_reckoned", r->dead_reckoned}});
     }
     const double n = static_cast<double>(list.size());
     nlohmann::json s{

@@ -60,7 +60,10 @@ struct LoopRun {
   double distance_m = 0.0;  // driven until then
   bool all = false;
   bool never_overlapped = true;  // the net and the fence (checked on every tick's true pose)
-  int stalls = 0;  // times the robot found itself stalled and freed itself (progress_recovery)
+  int stalls = 0;    // times the robot found itself stalled and freed itself (progress_recovery)
+  int contacts = 0;  // ticks (0.1 s) in which the net or the fence stopped the robot
+  int dead_reckoned = 0;  // frame sets the cameras did not see the robot and it drove on its own
+                          // estimate (robot/pose_tracker.hpp)
 };
 
 /// How the robot reaches the service in a run: a link to `service`'s updates in `hub` that owns
@@ -87,6 +90,7 @@ struct LoopEvalOptions {
   int min_balls = 10, max_balls = 60;
   double max_time_s = 400.0;         // simulated, per run
   std::vector<std::string> systems;  // empty: all three
+  std::vector<std::string> layouts;  // LoopLayout::name()s taken in turn; empty: all
   std::filesystem::path record_dir;  // each run's record as <system>-<seed>.jsonl (empty: none)
   LoopRobot robot;                   // a perfect robot by default
 

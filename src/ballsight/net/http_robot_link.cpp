@@ -15,8 +15,8 @@
 #include <boost/beast/websocket.hpp>
 #include <charconv>
 
-#include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/service/navigation_hub.hpp"
 
 namespace ballsight {
@@ -349,12 +349,7 @@ bool HttpRobotLink::report_collected(const std::vector<Vec2>& positions) {
 }
 
 bool HttpRobotLink::set_pose(const Pose2D& pose) {
-  return impl_
-      ->call(http::verb::put, "/api/v1/robot",
-             {{"x_m", pose.position.x()},
-              {"y_m", pose.position.y()},
-              {"heading_deg", deg_from_rad(pose.heading_rad)}})
-      .has_value();
+  return impl_->call(http::verb::put, "/api/v1/robot", pose_json(pose)).has_value();
 }
 
 LinkStatus HttpRobotLink::status() const {

@@ -67,7 +67,7 @@ const nlohmann::json& openapi_document() {
                "responses": {"200": {"description": "accepted"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "409": {"description": "that update is not kept"}, "422": {"description": "outside the field, or no such ball"}}}
     },
     "/api/v1/sim/drive": {
-      "put": {"summary": "The simulated court only: the simulated robot's command for update 'seq' (it drives the next vision period; the court waits for it). Answers {\"collected\": balls its collector took since its previous command, \"time_s\": simulated time}", "security": [{"bearer": []}],
+      "put": {"summary": "The simulated court only: the simulated robot's command for update 'seq' (it drives the next vision period; the court waits for it). Answers {\"collected\": balls its collector took since its previous command, \"time_s\": simulated time, \"odometry\": the wheels' odometry at the update's frames (a Pose, in the odometry's own frame: it drifts as wheels slip)}", "security": [{"bearer": []}],
               "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Drive"}}}},
               "responses": {"200": {"description": "driving"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "404": {"description": "not a simulated court"}}}
     },

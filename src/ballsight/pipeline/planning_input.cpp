@@ -13,6 +13,13 @@
 #include "ballsight/core/text_format.hpp"
 
 namespace ballsight {
+namespace {
+
+// The cameras place a ball far from all of them a few cm off (a ball against the fence near a
+// mast is seen from 35 m and more): one seen this little beyond the fence lies against it.
+constexpr double kBeyondFenceM = 0.25;
+
+}  // namespace
 
 PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
                                       std::vector<Vec2> balls) {
@@ -29,6 +36,12 @@ PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
   problem.robot = {
       problem.court->outside_net_zone(robot.position + site.robot.collector_x_m * forward),
       robot.heading_rad};
+  const Vec2 inside = Vec2::Constant(site.ball_radius_m);
+  for (Vec2& b : balls) {
+    const Vec2 against = b.cwiseMax(problem.court->area_min_m + inside)
+                             .cwiseMin(problem.court->area_max_m - inside);
+    if ((against - b).norm() <= kBeyondFenceM) b = against;
+  }
   problem.balls = std::move(balls);
   problem.limits = {site.robot.max_speed_mps, site.robot.turn_rate_dps};
   problem.collector_width_m = site.robot.collector_width_m;

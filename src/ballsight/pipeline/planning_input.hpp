@@ -15,7 +15,9 @@
 namespace ballsight {
 
 /// A problem on the site: its court, the robot's limits and collector; `robot` is the pose of the
-/// robot's reference point (the collector mouth is `robot.collector_x_m` ahead of it).
+/// robot's reference point (the collector mouth is `robot.collector_x_m` ahead of it). A ball
+/// seen up to 25 cm beyond the fence (the cameras' error far from them) is placed against it,
+/// inside; one farther out stays where it was seen (the route lists it as unreachable).
 PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
                                       std::vector<Vec2> balls);
 

@@ -12,6 +12,10 @@ namespace ballsight {
 namespace {
 
 constexpr double kEps = 1e-9;
+constexpr double kSquareTan = 0.1763;  // "square to the fence": within 10 degrees
+// Two points in one side's lane this close along it: the nearer one ahead of the mouth of a robot
+// at the other (still inside the mouth), reached straight.
+constexpr double kMouthReachM = 0.25;
 
 bool lexicographic_less(const Vec2& a, const Vec2& b) {
   return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
@@ -53,12 +57,17 @@ Vec2 lane_exit(const DrivableCourt& court, const Vec2& p) {
   return {side_of(p) * court.net->travel_clearance_m, p.y()};
 }
 
-/// Shortest path with a before b in lexicographic order, so that a path and its reverse bend at
-/// the same points: out of the lane straight from a, Dijkstra over that exit, the lane's four
-/// corners and b's exit, joined where the segment between them is clear (the shortest path round
-/// a convex obstacle bends only at its corners), and into the lane straight to b.
+/// Round the net: the shortest path with a before b in lexicographic order, so that a path and
+/// its reverse bend at the same points: out of the lane straight from a, Dijkstra over that exit,
+/// the lane's four corners and b's exit, joined where the segment between them is clear (the
+/// shortest path round a convex obstacle bends only at its corners), and into the lane straight
+/// to b.
 DrivablePath canonical_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {
   DrivablePath best;
+  const auto add = [&best](const Vec2& p) {
+    assert(best.via_count < static_cast<int>(best.via.size()));  // four exits, two corners
+    best.via[static_cast<std::size_t>(best.via_count++)] = p;
+  };
   best.length_m = (b - a).norm();
   if (!court.blocked(a, b)) return best;
   const double c = court.net->travel_clearance_m;
@@ -97,10 +106,6 @@ DrivablePath canonical_path(const DrivableCourt& court, const Vec2& a, const Vec
   for (int v = prev[kB]; v > 0; v = prev[static_cast<std::size_t>(v)]) {
     corners[static_cast<std::size_t>(count++)] = node[static_cast<std::size_t>(v)];
   }
-  const auto add = [&best](const Vec2& p) {
-    assert(best.via_count < static_cast<int>(best.via.size()));  // two exits, two corners
-    best.via[static_cast<std::size_t>(best.via_count++)] = p;
-  };
   if (a_exit != a) add(a_exit);
   for (int i = count - 1; i >= 0; --i) add(corners[static_cast<std::size_t>(i)]);
   if (b_exit != b) add(b_exit);
@@ -113,6 +118,14 @@ void DrivableCourt::validate() const {
   require(area_min_m.allFinite() && area_max_m.allFinite(), "drivable area", "must be finite");
   require(area_min_m.x() < area_max_m.x() && area_min_m.y() < area_max_m.y(), "drivable area",
           "its minimum corner must lie below and left of its maximum corner");
+  require(std::isfinite(fence_lane_m) && fence_lane_m >= 0.0, "fence_lane_m",
+          "must not be negative");
+  require(std::isfinite(fence_square_m) && fence_square_m >= 0.0 && fence_square_m <= fence_lane_m,
+          "fence_square_m", "must be in [0, fence_lane_m]");
+  require(std::isfinite(corner_room_m) && corner_room_m >= 0.0, "corner_room_m",
+          "must not be negative");
+  require(std::isfinite(corner_shift_m) && corner_shift_m >= 0.0, "corner_shift_m",
+          "must not be negative");
   if (!net) return;
   require(net->half_length_m > 0.0, "net.half_length_m", "must be positive");
   require(net->clearance_m >= 0.0, "net.clearance_m", "must not be negative");
@@ -150,8 +163,60 @@ Vec2 DrivableCourt::outside_net_zone(const Vec2& p) const {
 }
 
 Vec2 DrivableCourt::approach_point(const Vec2& ball) const {
-  if (!in_net_zone(ball)) return ball;
-  return {side_of(ball) * net->clearance_m, ball.y()};
+  if (in_net_zone(ball)) return {side_of(ball) * net->clearance_m, ball.y()};
+  const std::optional<int> square = fence_side(ball);
+  if (!square) return ball;
+  // Square to the nearer side; along it, away from the other side if it is near (a corner).
+  const int along = 1 - *square;
+  const double low = area_min_m[along], high = area_max_m[along];
+  Vec2 point = ball;
+  if (ball[along] - low < high - ball[along]) {
+    point[along] =
+        std::max(ball[along], std::min(low + corner_room_m, ball[along] + corner_shift_m));
+  } else {
+    point[along] =
+        std::min(ball[along], std::max(high - corner_room_m, ball[along] - corner_shift_m));
+  }
+  return point;
+}
+
+std::optional<int> DrivableCourt::fence_side(const Vec2& p) const {
+  std::optional<int> side;
+  double nearest = INFINITY;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (area_max_m[axis] - area_min_m[axis] <= 2.0 * fence_lane_m) continue;  // no room for one
+    const double depth = std::min(p[axis] - area_min_m[axis], area_max_m[axis] - p[axis]);
+    if (depth < fence_square_m && depth < nearest) {
+      nearest = depth;
+      side = axis;
+    }
+  }
+  return side;
+}
+
+Vec2 DrivableCourt::fence_exit(const Vec2& p) const {
+  const std::optional<int> axis = fence_side(p);
+  if (!axis) return p;
+  Vec2 out = p;
+  out[*axis] =
+      std::clamp(p[*axis], area_min_m[*axis] + fence_lane_m, area_max_m[*axis] - fence_lane_m);
+  return out;
+}
+
+bool DrivableCourt::square_to_fence(const Vec2& a, const Vec2& b) const {
+  const Vec2 d = b - a;
+  const std::optional<int> a_side = fence_side(a);
+  if (a_side && a_side == fence_side(b) && std::abs(d[1 - *a_side]) <= kMouthReachM &&
+      std::abs(d[1 - *a_side]) <= std::abs(d[*a_side])) {
+    return true;
+  }
+  for (const Vec2& p : {a, b}) {
+    if (const std::optional<int> axis = fence_side(p);
+        axis && std::abs(d[1 - *axis]) > kSquareTan * std::abs(d[*axis])) {
+      return false;
+    }
+  }
+  return true;
 }
 
 bool DrivableCourt::blocked(const Vec2& a, const Vec2& b) const {
@@ -164,9 +229,29 @@ bool DrivableCourt::blocked(const Vec2& a, const Vec2& b) const {
 }
 
 DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {
-  if (!lexicographic_less(b, a)) return canonical_path(court, a, b);
-  DrivablePath path = canonical_path(court, b, a);
-  std::reverse(path.via.begin(), path.via.begin() + path.via_count);
+  // Round the net, in the canonical order.
+  const auto round_net = [&court](const Vec2& from, const Vec2& to) {
+    if (!lexicographic_less(to, from)) return canonical_path(court, from, to);
+    DrivablePath path = canonical_path(court, to, from);
+    std::reverse(path.via.begin(), path.via.begin() + path.via_count);
+    return path;
+  };
+  const Vec2 a_out = court.fence_exit(a), b_out = court.fence_exit(b);
+  if ((a_out == a && b_out == b) || (court.square_to_fence(a, b) && !court.blocked(a, b))) {
+    return round_net(a, b);
+  }
+  // Out of the fence's lane square to it, round the net, and into the lane square to it (in a
+  // corner the exit leaves one side's lane only: the approach point leaves the body room there).
+  DrivablePath path;
+  const auto add = [&path](const Vec2& p) {
+    assert(path.via_count < static_cast<int>(path.via.size()));  // four exits, two corners
+    path.via[static_cast<std::size_t>(path.via_count++)] = p;
+  };
+  if (a_out != a) add(a_out);
+  const DrivablePath inner = round_net(a_out, b_out);
+  for (int i = 0; i < inner.via_count; ++i) add(inner.via[static_cast<std::size_t>(i)]);
+  if (b_out != b) add(b_out);
+  path.length_m = (a_out - a).norm() + inner.length_m + (b - b_out).norm();
   return path;
 }
 
@@ -174,6 +259,7 @@ DrivableCourt drivable_court(const SiteCourt& court) {
   DrivableCourt out;
   out.area_max_m = Vec2(court.area_length_m / 2.0, court.area_width_m / 2.0);
   out.area_min_m = -out.area_max_m;
+  out.fence_lane_m = court.fence_lane_m;
   if (court.net) {
     out.net = CourtNet{court.width_m / 2.0 + court.net_posts_outside_m, court.net_clearance_m,
                        court.net_post_clearance_m, court.net_travel_clearance_m};

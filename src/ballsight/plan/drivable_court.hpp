@@ -5,8 +5,10 @@
 // lane (a convex obstacle inside a convex fence: the shortest path bends only at its corners).
 // The collector may reach closer to the mesh than the lane: a point between the two (where a ball
 // against the net is picked up) is left and entered straight away from the net, as a robot backs
-// off the net before it turns. Field frame: origin at the court centre on the net line, x along
-// the length.
+// off the net before it turns. Along the fence the same: a point nearer the fence than its lane
+// is entered and left square to the fence (fence_exit), so that the body reaches a ball against
+// the fence with its mouth and backs off before it turns. Field frame: origin at the court centre
+// on the net line, x along the length.
 
 #include <array>
 #include <optional>
@@ -39,6 +41,16 @@ struct DrivableCourt {
   Vec2 area_min_m = Vec2(-18.0, -9.0);  // the fence, an axis-aligned rectangle
   Vec2 area_max_m = Vec2(18.0, 9.0);
   std::optional<CourtNet> net = CourtNet{};
+  double fence_lane_m = 0.70;  // SiteCourt::fence_lane_m
+  /// A point nearer the fence than this is in its lane: reached and left square to the fence,
+  /// from the lane's edge (a ball farther out is reached at any angle: the body's corners stay
+  /// inside the fence within the mouth's half width, and it turns on the spot after).
+  double fence_square_m = 0.35;
+  /// In a corner (a ball in the lanes of two sides) the mouth comes square to the nearer side,
+  /// its centre at least this far from the other (the body turns on the spot there), moved along
+  /// the fence from the ball by at most `corner_shift_m` (the ball still inside the mouth).
+  double corner_room_m = 0.51;
+  double corner_shift_m = 0.30;
 
   /// A standard court: 36 x 18 m fence centred on the court, the net of a doubles court.
   static DrivableCourt standard() { return {}; }
@@ -51,10 +63,22 @@ struct DrivableCourt {
   bool in_net_zone(const Vec2& p) const;
   /// Inside the net's travel lane (|x| < travel clearance, |y| as the reach keep-out).
   bool in_net_lane(const Vec2& p) const;
+  /// The axis (0: x, 1: y) square to the side of the fence whose lane `p` is in (nearer than
+  /// fence_square_m; the nearer side in a corner); nullopt: not in the lane.
+  std::optional<int> fence_side(const Vec2& p) const;
+  bool in_fence_lane(const Vec2& p) const { return fence_side(p).has_value(); }
+  /// Where a path from `p` leaves the fence's lane: square to that side, to the lane's edge;
+  /// `p` outside the lane.
+  Vec2 fence_exit(const Vec2& p) const;
+  /// The segment a-b runs within 10 degrees of square to the fence's side at each end in its
+  /// lane, or joins two points of one side's lane within 45 degrees of square and 25 cm along
+  /// it (a robot's mouth and the ball ahead of it): driven straight in or out, with no exit.
+  bool square_to_fence(const Vec2& a, const Vec2& b) const;
   /// `p`, or, inside the net's keep-out, the nearest point on its edge.
   Vec2 outside_net_zone(const Vec2& p) const;
-  /// Where the robot's collector picks up a ball at `ball`: the ball itself, or, for a ball inside
-  /// the net's keep-out, the nearest point on the keep-out's edge on the ball's side of the net.
+  /// Where the robot's collector picks up a ball at `ball`: the ball itself; for a ball inside
+  /// the net's keep-out, the nearest point on the keep-out's edge on the ball's side of the net;
+  /// for a ball in a corner, a point moved along the nearer side away from the other.
   Vec2 approach_point(const Vec2& ball) const;
   /// The open segment a-b may not be driven: it passes through the reach keep-out, or through
   /// the lane other than straight away from the net (both ends on one side at the same y).
@@ -62,10 +86,11 @@ struct DrivableCourt {
 };
 
 /// The shortest drivable path from a to b: `via` holds the points it bends at (at most two of
-/// the lane's corners, and where it leaves and enters the lane straight from and to a or b).
+/// the net lane's corners, and where it leaves and enters that lane and the fence's straight
+/// from and to a or b).
 struct DrivablePath {
   double length_m = 0.0;
-  std::array<Vec2, 4> via{};
+  std::array<Vec2, 6> via{};
   int via_count = 0;
 };
 

@@ -130,6 +130,8 @@ std::vector<Visit> pull_visits(const PlanningProblem& problem, std::vector<Visit
     for (std::size_t i = 0; i < visits.size(); ++i) {
       Visit& v = visits[i];
       if (v.balls.empty() || v.reach_m <= 0.0) continue;
+      // Along the fence the mouth comes square to it, at the approach point.
+      if (problem.court && problem.court->in_fence_lane(v.centre_m)) continue;
       // The neighbouring points the path runs between: the previous visit (or the start) and the
       // next visit (or the return point), or the detour corners between.
       std::optional<Vec2> next;

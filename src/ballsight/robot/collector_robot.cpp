@@ -5,18 +5,26 @@
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/plan/drivable_court.hpp"
 
 namespace ballsight {
+namespace {
+
+constexpr double kUpdatePeriodS = 0.1;  // the cameras' 10 Hz, until the court's clock tells
+
+}  // namespace
 
 FollowerOptions follower_for_site(const Site& site) {
   FollowerOptions f;
   f.mouth_ahead_m = site.robot.collector_x_m;
   f.max_speed_mps = site.robot.max_speed_mps;
   f.max_turn_rate_rps = rad_from_deg(site.robot.turn_rate_dps);
-  if (const std::optional<CourtNet> net = drivable_court(site.court).net) {
-    f.back_off_zone = net->lane();
-  }
+  const DrivableCourt court = drivable_court(site.court);
+  if (court.net) f.back_off_zone = court.net->lane();
+  f.fence = FieldRect{court.area_min_m, court.area_max_m};
+  const Vec2 lane = Vec2::Constant(court.fence_lane_m);
+  f.inside_fence_lane = FieldRect{court.area_min_m + lane, court.area_max_m - lane};
   return f;
 }
 
@@ -27,6 +35,7 @@ void CollectorOptions::validate() const {
   require(std::isfinite(latency_s) && latency_s >= 0.0 && latency_s <= 5.0, "latency_s",
           "must be in [0, 5] s");
   progress.validate();
+  pose.validate();
 }
 
 CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
@@ -41,7 +50,9 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   FollowCommand in_flight;
   std::int64_t frames_ns = -1;
   ProgressRecovery recovery(options.progress);
-  bool sim_clock = false;  // the simulated court tells its time: stalls are timed on it
+  PoseTracker tracker(options.pose);
+  double period_s = kUpdatePeriodS;  // between the last two frame sets, on the court's clock
+  bool sim_clock = false;            // the simulated court tells its time: stalls are timed on it
   CollectorResult result;
   int empty = 0;
   const auto started = std::chrono::steady_clock::now();
@@ -56,40 +67,59 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
     ++result.updates;
     result.latency_ms.push_back(static_cast<double>(u->received_ns - u->capture_time_ns) * 1e-6);
     result.seqs.push_back(u->seq);
-    if (u->capture_time_ns != frames_ns) {
+    const bool new_frames = u->capture_time_ns != frames_ns;
+    if (new_frames) {
       in_flight = sent;
       frames_ns = u->capture_time_ns;
+      // Moved since the last frames by the command in flight then (odometry() corrects it).
+      tracker.at_capture(u->robot,
+                         along_arc(Pose2D{}, in_flight.speed_mps, in_flight.turn_rate_rps, period_s)
+                             .field_from_robot());
     }
     FollowCommand command;
-    if (u->robot) {
-      if (u->waypoints_m != planned) {
-        planned = u->waypoints_m;
-        follower.set_path(planned);
-      }
+    const std::optional<Pose2D> pose = tracker.pose();
+    // A route planned from a pose (the cameras', or the one this robot reported); with none the
+    // service knows no robot, and the robot follows the route it had.
+    if (pose && (u->robot || !u->waypoints_m.empty()) && u->waypoints_m != planned) {
+      planned = u->waypoints_m;
+      follower.set_path(planned);
+    }
+    if (pose) {
       const double now_s =
           sim_clock
               ? result.sim_time_s
               : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-      const std::optional<FollowCommand> freeing =
-          recovery.step(*u->robot, now_s, !u->balls_m.empty());
+      const std::optional<FollowCommand> freeing = recovery.step(*pose, now_s, !u->balls_m.empty());
       command = freeing
                     ? *freeing
                     : follower.command(options.latency_s > 0.0
-                                           ? along_arc(*u->robot, in_flight.speed_mps,
+                                           ? along_arc(*pose, in_flight.speed_mps,
                                                        in_flight.turn_rate_rps, options.latency_s)
-                                           : *u->robot);
+                                           : *pose);
     }
     sent = command;
     const std::optional<nlohmann::json> drove =
         link.drive_simulated(u->seq, command.speed_mps, deg_from_rad(command.turn_rate_rps));
     if (drove && drove->contains("time_s")) {
       if (!sim_clock) recovery.restart();  // from now on timed on the court's clock
+      const double time_s = drove->value("time_s", result.sim_time_s);
+      if (sim_clock && new_frames && time_s > result.sim_time_s) {
+        period_s = time_s - result.sim_time_s;
+      }
       sim_clock = true;
-      result.sim_time_s = drove->value("time_s", result.sim_time_s);
+      result.sim_time_s = time_s;
+    }
+    if (new_frames && drove && drove->contains("odometry")) {
+      tracker.odometry(json_pose((*drove)["odometry"], "drive.odometry"));
+    }
+    // Out of the cameras' sight, the service plans from where the robot says it is.
+    if (new_frames && !tracker.seen() && tracker.pose()) {
+      link.set_pose(*tracker.pose());
+      ++result.dead_reckoned;
     }
     const int taken = drove ? drove->value("collected", 0) : 0;
-    if (taken > 0 && u->robot) {
-      const Pose2D& p = *u->robot;
+    if (taken > 0 && pose) {
+      const Pose2D& p = *pose;
       const Vec2 mouth = p.position + options.follow.mouth_ahead_m *
                                           Vec2(std::cos(p.heading_rad), std::sin(p.heading_rad));
       link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken), mouth));

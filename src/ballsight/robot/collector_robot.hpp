@@ -3,9 +3,10 @@
 // update it steers the collector's mouth along the route (path_follower.hpp), sends its
 // wheels' command to the simulated court (PUT /api/v1/sim/drive), acknowledges the update and
 // reports the balls its collector took (the collector's sensor counts them; they were at its
-// mouth). It knows only what the service sends. A robot with balls left that makes no progress
-// frees itself (progress_recovery.hpp), on the simulated court's clock when it drives there, else
-// on its own.
+// mouth). It knows only what the service sends and its wheels' odometry, by which it carries its
+// pose on where the cameras do not see it (pose_tracker.hpp), and tells the service that pose. A
+// robot with balls left that makes no progress frees itself (progress_recovery.hpp), on the
+// simulated court's clock when it drives there, else on its own.
 
 #include <atomic>
 #include <cstdint>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "ballsight/robot/path_follower.hpp"
+#include "ballsight/robot/pose_tracker.hpp"
 #include "ballsight/robot/progress_recovery.hpp"
 #include "ballsight/robot/robot_link.hpp"
 #include "ballsight/world/site.hpp"
@@ -33,6 +35,7 @@ struct CollectorOptions {
   /// update period). 0: it steers from the cameras' pose.
   double latency_s = 0.0;
   ProgressOptions progress;  // when it is stalled and how it frees itself
+  PoseTrackerOptions pose;   // how far it drives on its own estimate out of the cameras' sight
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -41,8 +44,10 @@ struct CollectorOptions {
 struct CollectorResult {
   bool done = false;  // stopped because no ball was left (not by time or `stop`)
   int updates = 0;
-  int collected = 0;  // as the collector's sensor counted them
-  int stalls = 0;     // times it was stalled and backed up (or drove ahead) to free itself
+  int collected = 0;      // as the collector's sensor counted them
+  int stalls = 0;         // times it was stalled and backed up (or drove ahead) to free itself
+  int dead_reckoned = 0;  // frame sets on which the cameras did not see it and it drove on its
+                          // own estimate (pose_tracker.hpp)
   std::uint64_t gaps = 0;
   int reconnects = 0;
   double sim_time_s = 0.0;  // the simulated court's clock at the last command

@@ -8,9 +8,10 @@
 namespace ballsight {
 namespace {
 
-constexpr double kStraightRad = 0.35;  // 20 degrees: a turn smaller than this is no corner
-constexpr double kBackOffM = 0.6;      // a leg this short straight behind is reversed along
-constexpr double kBehindCos = 0.7071;  // "straight behind": within 45 degrees
+constexpr double kStraightRad = 0.35;   // 20 degrees: a turn smaller than this is no corner
+constexpr double kBackOffM = 0.6;       // a leg this short straight behind is reversed along
+constexpr double kFenceBackOffM = 0.8;  // off the fence: from a ball to its lane's edge (0.70 m)
+constexpr double kBehindCos = 0.7071;   // "straight behind": within 45 degrees
 // A waypoint this far beyond the mouth's circle round the axle is turned to, not crept from.
 constexpr double kCreepMarginM = 0.10;
 constexpr double kCreepShare = 0.3;  // of full speed, creeping away from a waypoint too near
@@ -38,8 +39,11 @@ void PathFollower::set_path(std::vector<Vec2> waypoints) {
   path_ = std::move(waypoints);
   if (path_.size() >= 2 && options_.overshoot_m > 0.0) {
     const Vec2 last = path_.back() - path_[path_.size() - 2];
-    if (last.norm() > 1e-9)
-      path_.push_back(path_.back() + options_.overshoot_m * last.normalized());
+    if (last.norm() > 1e-9) {
+      Vec2 end = path_.back() + options_.overshoot_m * last.normalized();
+      if (options_.fence) end = end.cwiseMax(options_.fence->min_m).cwiseMin(options_.fence->max_m);
+      if (end != path_.back()) path_.push_back(end);
+    }
   }
   cumulative_.assign(path_.size(), 0.0);
   for (std::size_t i = 1; i < path_.size(); ++i) {
@@ -106,8 +110,14 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
   const Vec2 u = speed * towards / distance;
   // A short leg straight behind (backing off the net after a ball against it, where the body has
   // no room to turn): reversed along, the same linearisation steering the mouth.
-  const bool in_zone = options_.back_off_zone && options_.back_off_zone->contains(mouth);
-  const bool back_off = in_zone && u.dot(h) < -kBehindCos * speed && corner - progress_ < kBackOffM;
+  const bool at_fence = options_.inside_fence_lane && !options_.inside_fence_lane->contains(mouth);
+  const bool in_zone =
+      at_fence || (options_.back_off_zone && options_.back_off_zone->contains(mouth));
+  const bool back_off = in_zone && u.dot(h) < -kBehindCos * speed &&
+                        corner - progress_ < (at_fence ? kFenceBackOffM : kBackOffM);
+  // Off the fence straight back, as the robot came in: steering the mouth while reversing swings
+  // the body's corners into the fence.
+  if (back_off && at_fence) return {u.dot(h), 0.0, false};
   if (u.dot(h) < 0.0 && !back_off) {  // the carrot is behind: turn on the spot towards it (the
                                       // mouth collects only driving forwards), the way the turn
                                       // began (a carrot straight behind must not flip it)

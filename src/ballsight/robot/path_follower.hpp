@@ -9,7 +9,7 @@
 // is there: the mouth goes over it, not round the corner), and slows for the waypoint ahead and
 // for the end of the path; a carrot behind the robot is turned to on the spot, except at the end
 // of a short leg straight behind where there is no room to turn, which is reversed along
-// (backing off the net). A turn on the
+// (backing off the net or the fence). A turn on the
 // spot keeps its direction until the carrot is ahead, through new routes and pose noise; a
 // waypoint behind and within the mouth's circle round the axle (a ball beside the body) is first
 // crept away from, since no turn brings the mouth over it.
@@ -35,6 +35,11 @@ struct FollowerOptions {
   /// Where the robot has no room to turn on the spot (the net's lane, planning_input): with the
   /// mouth in it, a short leg straight behind is reversed along instead.
   std::optional<FieldRect> back_off_zone;
+  /// The fence, and the area inside its lane (drivable_court.hpp): with the mouth outside that
+  /// area a short leg straight behind is reversed along as in the back-off zone, and the path's
+  /// overshoot ends at the fence.
+  std::optional<FieldRect> fence;
+  std::optional<FieldRect> inside_fence_lane;
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -5,6 +5,7 @@
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/sim/tennis_court.hpp"
 
 namespace ballsight {
@@ -12,27 +13,16 @@ namespace {
 
 using nlohmann::json;
 
-json pose_json(const Pose2D& p) {
-  return {{"x_m", p.position.x()},
-          {"y_m", p.position.y()},
-          {"heading_deg", deg_from_rad(p.heading_rad)}};
-}
-
-Pose2D pose_of(const json& j) {
-  return {Vec2(j.at("x_m").get<double>(), j.at("y_m").get<double>()),
-          rad_from_deg(j.at("heading_deg").get<double>())};
-}
-
 json points_json(const std::vector<Vec2>& points) {
   json out = json::array();
   for (const Vec2& p : points) out.push_back(json::array({p.x(), p.y()}));
   return out;
 }
 
-TruthTick tick_of(const json& j) {
+TruthTick tick_of(const json& j, const std::string& where) {
   TruthTick t;
   t.world.time_s = j.at("time_s").get<double>();
-  t.world.robot = pose_of(j.at("robot"));
+  t.world.robot = json_pose(j.at("robot"), where + ": robot");
   t.world.collected = j.at("collected").get<std::vector<int>>();
   t.world.balls_left = j.at("balls_left").get<int>();
   t.world.blocked = j.at("blocked").get<bool>();
@@ -40,7 +30,8 @@ TruthTick tick_of(const json& j) {
   t.command.speed_mps = j.at("command").at("speed_mps").get<double>();
   t.command.turn_rate_rps = rad_from_deg(j.at("command").at("turn_rate_dps").get<double>());
   const json& p = j.at("published");
-  if (!p.at("robot").is_null()) t.published.robot = pose_of(p.at("robot"));
+  if (!p.at("robot").is_null())
+    t.published.robot = json_pose(p.at("robot"), where + ": published.robot");
   t.published.balls_seen = p.at("balls_seen").get<int>();
   t.removed_by_hand = j.at("removed_by_hand").get<std::vector<int>>();
   for (const json& w : p.at("waypoints_m")) {
@@ -111,10 +102,10 @@ LoopTruth parse_loop_truth(std::istream& in, const std::string& source) {
           truth.balls.push_back(
               {b.at("id").get<int>(), Vec2(b.at("x_m").get<double>(), b.at("y_m").get<double>())});
         }
-        truth.robot_start = pose_of(j.at("robot"));
+        truth.robot_start = json_pose(j.at("robot"), where + ": robot");
       } else if (kind == "tick") {
         require(scene, where, "a tick before the scene record");
-        truth.ticks.push_back(tick_of(j));
+        truth.ticks.push_back(tick_of(j, where));
       } else if (kind == "event") {
         truth.events.push_back({j.at("time_s").get<double>(), j.at("what").get<std::string>()});
       } else {

@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/service/loop_truth.hpp"
@@ -67,6 +67,7 @@ struct SimulatedCourtService::Impl {
   int collected = 0, blocked_ticks = 0, balls_left = 0;
   double time_s = 0.0;
   Pose2D robot;
+  Pose2D odometry;  // the wheels' (sim::WorldTick::odometry)
   std::vector<bool> camera_failed = std::vector<bool>(sim::kCourtRigCameras, false);  // mutex held
   Pose2D start;  // the robot when this service began
   // The court's record: the scene as it began (written first), or the run this one resumes.
@@ -160,7 +161,8 @@ nlohmann::json SimulatedCourtService::drive(std::uint64_t seq, double speed_mps,
     s.command_seq = std::max(s.command_seq, seq);
     s.command = {speed_mps, turn_rate_rps};
     s.last_command = Clock::now();
-    answer = {{"collected", s.unreported}, {"time_s", s.time_s}};
+    answer = {
+        {"collected", s.unreported}, {"time_s", s.time_s}, {"odometry", pose_json(s.odometry)}};
     s.unreported = 0;
   }
   s.commanded.notify_all();
@@ -264,6 +266,7 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       s.balls_left = t.balls_left;
       s.time_s = t.time_s;
       s.robot = t.robot;
+      s.odometry = t.odometry;
     }
     if (truth.is_open()) {
       TruthTick line{t, seq, command, {}, std::move(removed)};
@@ -320,10 +323,7 @@ nlohmann::json SimulatedCourtService::health() const {
   h["sim"] = {{"time_s", s.time_s},
               {"balls_left", s.balls_left},
               {"collected", s.collected},
-              {"robot",
-               {{"x_m", s.robot.position.x()},
-                {"y_m", s.robot.position.y()},
-                {"heading_deg", deg_from_rad(s.robot.heading_rad)}}},
+              {"robot", pose_json(s.robot)},
               {"driving", s.driving(Clock::now())},
               {"blocked_ticks", s.blocked_ticks}};
   return h;

@@ -27,6 +27,7 @@ int CourtWorld::balls_left() const {
 void CourtWorld::resume(double time_s, const Pose2D& pose, const std::vector<int>& collected) {
   time_s_ = time_s;
   motion_ = RobotMotion{pose, 0.0, 0.0};
+  odometry_ = {};
   pending_.clear();
   acting_ = {};
   scene_.robot.pose = pose;
@@ -56,6 +57,9 @@ const WorldTick& CourtWorld::advance(const DriveCommand& command, double seconds
     }
     const Pose2D before = motion_.pose;
     const DriveStep step = drive_step(motion_, acting_, kStepS, limits_, footprint_, court_, slip_);
+    // The wheels turned at the step's mean speeds (a blocked robot's wheels as its motion says).
+    odometry_ = along_arc(odometry_, 0.5 * (motion_.speed_mps + step.motion.speed_mps),
+                          0.5 * (motion_.turn_rate_rps + step.motion.turn_rate_rps), kStepS);
     motion_ = step.motion;
     tick.blocked = tick.blocked || step.blocked;
     for (int id : collect_swept(scene_, before, motion_.pose, footprint_)) {
@@ -66,6 +70,7 @@ const WorldTick& CourtWorld::advance(const DriveCommand& command, double seconds
   time_s_ += steps * kStepS;
   tick.time_s = time_s_;
   tick.robot = motion_.pose;
+  tick.odometry = odometry_;
   tick.balls_left = balls_left();
   history_.push_back(std::move(tick));
   return history_.back();

@@ -19,6 +19,9 @@ struct WorldTick {
   std::vector<int> collected;  // tennis ball ids collected during this advance
   int balls_left = 0;
   bool blocked = false;  // the net or the fence stopped the robot during it
+  /// The wheels' odometry at its end: the pose the wheels' turns add up to, slip not seen, in
+  /// the odometry's own frame (the robot's pose when the world began, or resumed).
+  Pose2D odometry;
 };
 
 class CourtWorld {
@@ -28,6 +31,8 @@ class CourtWorld {
 
   const CourtScene& scene() const { return scene_; }
   const RobotMotion& motion() const { return motion_; }
+  /// The wheels' odometry now (WorldTick::odometry).
+  const Pose2D& odometry() const { return odometry_; }
   double time_s() const { return time_s_; }
   int balls_left() const;
   const std::vector<WorldTick>& history() const { return history_; }
@@ -61,6 +66,7 @@ class CourtWorld {
   RobotFootprint footprint_;
   RobotImperfections imperfections_;
   RobotMotion motion_;
+  Pose2D odometry_;
   double time_s_ = 0.0;
   std::deque<std::pair<double, DriveCommand>> pending_;  // commands given, when each acts
   DriveCommand acting_;

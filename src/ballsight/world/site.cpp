@@ -67,6 +67,7 @@ SiteCourt read_court(YamlMap map) {
   read_non_negative(map, "net_clearance_m", court.net_clearance_m);
   read_non_negative(map, "net_post_clearance_m", court.net_post_clearance_m);
   read_non_negative(map, "net_travel_clearance_m", court.net_travel_clearance_m);
+  read_non_negative(map, "fence_lane_m", court.fence_lane_m);
   map.finish();
   if (court.net_travel_clearance_m < court.net_clearance_m) {
     map.value().fail("net_travel_clearance_m must not be less than net_clearance_m");
