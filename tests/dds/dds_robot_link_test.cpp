@@ -103,13 +103,20 @@ TEST(DdsRobotLink, DrivesTheSimulatedCourtsWheels) {
     driven_seq = seq;
     speed = speed_mps;
     turn_rps = turn_rate_rps;
-    return nlohmann::json{{"collected", 2}, {"time_s", 1.5}};
+    return nlohmann::json{{"collected", 2},
+                          {"time_s", 1.5},
+                          {"odometry", {{"x_m", 1.25}, {"y_m", -0.5}, {"heading_deg", 30.0}}}};
   });
   const Participant robot(domain);
   DdsRobotLink link(robot);
   const std::optional<nlohmann::json> answer = link.drive_simulated(7, 0.8, 90.0);
   ASSERT_TRUE(answer) << link.status().last_error;
-  EXPECT_EQ(*answer, (nlohmann::json{{"collected", 2}, {"time_s", 1.5}}));
+  EXPECT_EQ((*answer)["collected"], 2);
+  EXPECT_EQ((*answer)["time_s"], 1.5);
+  const nlohmann::json& odometry = (*answer)["odometry"];  // the wheels' odometry, carried
+  EXPECT_EQ(odometry["x_m"], 1.25);
+  EXPECT_EQ(odometry["y_m"], -0.5);
+  EXPECT_NEAR(odometry["heading_deg"].get<double>(), 30.0, 1e-12);
   EXPECT_EQ(driven_seq, 7u);
   EXPECT_DOUBLE_EQ(speed, 0.8);
   EXPECT_NEAR(turn_rps, 3.14159265358979 / 2, 1e-12);

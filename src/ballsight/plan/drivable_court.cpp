@@ -260,6 +260,7 @@ DrivableCourt drivable_court(const SiteCourt& court) {
   out.area_max_m = Vec2(court.area_length_m / 2.0, court.area_width_m / 2.0);
   out.area_min_m = -out.area_max_m;
   out.fence_lane_m = court.fence_lane_m;
+  out.fence_square_m = std::min(out.fence_square_m, court.fence_lane_m);  // 0: no lane
   if (court.net) {
     out.net = CourtNet{court.width_m / 2.0 + court.net_posts_outside_m, court.net_clearance_m,
                        court.net_post_clearance_m, court.net_travel_clearance_m};

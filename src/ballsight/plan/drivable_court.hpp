@@ -78,7 +78,8 @@ struct DrivableCourt {
   Vec2 outside_net_zone(const Vec2& p) const;
   /// Where the robot's collector picks up a ball at `ball`: the ball itself; for a ball inside
   /// the net's keep-out, the nearest point on the keep-out's edge on the ball's side of the net;
-  /// for a ball in a corner, a point moved along the nearer side away from the other.
+  /// for a ball in the fence's lane within `corner_room_m` of the other side (a corner), a point
+  /// moved along the nearer side away from the other.
   Vec2 approach_point(const Vec2& ball) const;
   /// The open segment a-b may not be driven: it passes through the reach keep-out, or through
   /// the lane other than straight away from the net (both ends on one side at the same y).

@@ -51,6 +51,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   std::int64_t frames_ns = -1;
   ProgressRecovery recovery(options.progress);
   PoseTracker tracker(options.pose);
+  bool told_pose = false;            // the service has this robot's own estimate since the last fix
   double period_s = kUpdatePeriodS;  // between the last two frame sets, on the court's clock
   bool sim_clock = false;            // the simulated court tells its time: stalls are timed on it
   CollectorResult result;
@@ -78,9 +79,10 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
     }
     FollowCommand command;
     const std::optional<Pose2D> pose = tracker.pose();
-    // A route planned from a pose (the cameras', or the one this robot reported); with none the
-    // service knows no robot, and the robot follows the route it had.
-    if (pose && (u->robot || !u->waypoints_m.empty()) && u->waypoints_m != planned) {
+    // A route planned from a pose: the cameras', or the one this robot reported since they last
+    // saw it (not one it reported out of their sight before); else the route it had.
+    if (u->robot) told_pose = false;
+    if (pose && (u->robot || (told_pose && !u->waypoints_m.empty())) && u->waypoints_m != planned) {
       planned = u->waypoints_m;
       follower.set_path(planned);
     }
@@ -110,11 +112,14 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
       result.sim_time_s = time_s;
     }
     if (new_frames && drove && drove->contains("odometry")) {
-      tracker.odometry(json_pose((*drove)["odometry"], "drive.odometry"));
+      try {
+        tracker.odometry(json_pose((*drove)["odometry"], "drive.odometry"));
+      } catch (const InputError&) {  // a reading that is not one: the prediction stands
+      }
     }
     // Out of the cameras' sight, the service plans from where the robot says it is.
     if (new_frames && !tracker.seen() && tracker.pose()) {
-      link.set_pose(*tracker.pose());
+      told_pose = link.set_pose(*tracker.pose());
       ++result.dead_reckoned;
     }
     const int taken = drove ? drove->value("collected", 0) : 0;

@@ -40,9 +40,17 @@ void PathFollower::set_path(std::vector<Vec2> waypoints) {
   if (path_.size() >= 2 && options_.overshoot_m > 0.0) {
     const Vec2 last = path_.back() - path_[path_.size() - 2];
     if (last.norm() > 1e-9) {
-      Vec2 end = path_.back() + options_.overshoot_m * last.normalized();
-      if (options_.fence) end = end.cwiseMax(options_.fence->min_m).cwiseMin(options_.fence->max_m);
-      if (end != path_.back()) path_.push_back(end);
+      // Along the last leg, ending at the fence at the latest.
+      const Vec2 dir = last.normalized();
+      double reach = options_.overshoot_m;
+      for (int axis = 0; options_.fence && axis < 2; ++axis) {
+        if (dir[axis] > 1e-9) {
+          reach = std::min(reach, (options_.fence->max_m[axis] - path_.back()[axis]) / dir[axis]);
+        } else if (dir[axis] < -1e-9) {
+          reach = std::min(reach, (options_.fence->min_m[axis] - path_.back()[axis]) / dir[axis]);
+        }
+      }
+      if (reach > 1e-9) path_.push_back(path_.back() + reach * dir);
     }
   }
   cumulative_.assign(path_.size(), 0.0);

@@ -52,7 +52,7 @@ class RobotLink {
   virtual bool report_collected(const std::vector<Vec2>& positions) = 0;
   virtual bool set_pose(const Pose2D& pose) = 0;
   /// The simulated court only: the wheels' command for update `seq` (speed m/s, turn rate deg/s,
-  /// counter-clockwise); answers {"collected", "time_s"}, nullopt when refused.
+  /// counter-clockwise); answers {"collected", "time_s", "odometry"}, nullopt when refused.
   virtual std::optional<nlohmann::json> drive_simulated(std::uint64_t seq, double speed_mps,
                                                         double turn_rate_dps) = 0;
 

@@ -75,6 +75,11 @@ SiteCourt read_court(YamlMap map) {
   if (court.area_length_m < court.length_m || court.area_width_m < court.width_m) {
     map.value().fail("area_length_m x area_width_m must contain the court");
   }
+  if (2.0 * court.fence_lane_m >= std::min(court.area_length_m, court.area_width_m)) {
+    map.value().fail(
+        "fence_lane_m must leave room inside the fence (less than half of "
+        "area_width_m)");
+  }
   const double beyond_post =
       court.width_m / 2.0 + court.net_posts_outside_m + court.net_post_clearance_m;
   if (court.net && (court.area_width_m / 2.0 <= beyond_post ||
