@@ -179,6 +179,10 @@ TEST(Site, TheNetAndTheRobotsLimits) {
   expect_error(std::string(kMinimal) + "court:\n  area_width_m: 13\n",
                "site.yml:19: key 'court' area_width_m must leave room to drive round the net "
                "posts (more than 13.80 m)");
+  // A fence lane as wide as half the fenced area leaves no room inside it.
+  expect_error(std::string(kMinimal) + "court:\n  fence_lane_m: 9\n",
+               "site.yml:19: key 'court' fence_lane_m must leave room inside the fence (less "
+               "than half of area_width_m)");
 }
 
 }  // namespace
