@@ -38,8 +38,8 @@ PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
       robot.heading_rad};
   const Vec2 inside = Vec2::Constant(site.ball_radius_m);
   for (Vec2& b : balls) {
-    const Vec2 against = b.cwiseMax(problem.court->area_min_m + inside)
-                             .cwiseMin(problem.court->area_max_m - inside);
+    const Vec2 against =
+        b.cwiseMax(problem.court->area_min_m + inside).cwiseMin(problem.court->area_max_m - inside);
     if ((against - b).norm() <= kBeyondFenceM) b = against;
   }
   problem.balls = std::move(balls);
