@@ -5,6 +5,7 @@
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/json_fields.hpp"
 
 namespace ballsight::dds {
 namespace {
@@ -89,10 +90,11 @@ void RobotReports::answer(const RobotReportMsg& report) {
   if (done.is_object()) {  // the wheels' answer
     reply.collected = done.value("collected", 0);
     reply.time_s = done.value("time_s", 0.0);
-    if (done.contains("odometry") && done["odometry"].is_object()) {
-      const nlohmann::json& o = done["odometry"];
-      reply.odometry = pose_2d_message({Vec2(o.value("x_m", 0.0), o.value("y_m", 0.0)),
-                                        rad_from_deg(o.value("heading_deg", 0.0))});
+    if (done.contains("odometry")) {
+      try {
+        reply.odometry = pose_2d_message(json_pose(done["odometry"], "drive.odometry"));
+      } catch (const InputError&) {  // not a pose: none carried (the robot keeps its prediction)
+      }
     }
   }
   ++answered_;  // before the reply: the robot may count on it once answered
