@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -91,6 +92,10 @@ TEST(RadialWarp, BadJsonNamesTheField) {
       test::input_error([&] { RadialWarp::from_json(value, "warp"); }).find("warp.radius_span_px"),
       std::string::npos);
   EXPECT_NE(test::input_error([] { fit_radial_warp({}); }).find("warp targets"), std::string::npos);
+  std::vector<WarpTarget> targets = dense_targets(6, 0.0);
+  targets[3].shift_px = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(test::input_error([&] { fit_radial_warp(targets); }).find("expected finite"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 #include "ballsight/calib/radial_warp.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -114,6 +115,12 @@ RadialWarp RadialWarp::from_json(const nlohmann::json& value, const std::string&
 RadialWarp fit_radial_warp(std::span<const WarpTarget> targets,
                            const RadialWarpFitOptions& options) {
   require(!targets.empty(), "warp targets", "expected at least one");
+  require(std::all_of(targets.begin(), targets.end(),
+                      [](const WarpTarget& t) {
+                        return std::isfinite(t.theta_deg) && std::isfinite(t.radius_px) &&
+                               std::isfinite(t.shift_px);
+                      }),
+          "warp targets", "expected finite angles, radii and shifts");
   require(options.theta_segments >= 3 && options.radius_segments >= 1, "warp segments",
           "expected at least 3 around and 1 along the radius");
   require(options.theta_smoothing > 0.0 && options.radius_smoothing > 0.0, "warp smoothing",
@@ -144,7 +151,9 @@ RadialWarp fit_radial_warp(std::span<const WarpTarget> targets,
   Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(n);
   Eigen::MatrixXd normal(n, n);
   Eigen::VectorXd rhs(n);
-  Eigen::LLT<Eigen::MatrixXd> solver(n);  // penalty + ridge: positive definite
+  // Sparse: a coefficient meets only its neighbours within three segments (a sample's 4 x 4
+  // basis, the penalties' second differences).
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> solver;  // penalty + ridge: positive definite
   for (int pass = 0; pass < std::max(1, options.reweighting_passes); ++pass) {
     normal = penalty;
     rhs.setZero();
@@ -157,9 +166,9 @@ RadialWarp fit_radial_warp(std::span<const WarpTarget> targets,
         }
       }
     }
-    solver.compute(normal);
+    solver.compute(normal.sparseView());
     require(solver.info() == Eigen::Success, "warp fit",
-            "the normal equations are not positive definite (a target is not finite)");
+            "the normal equations are not positive definite");
     coefficients = solver.solve(rhs);
     std::vector<double> residuals(targets.size());
     for (std::size_t i = 0; i < targets.size(); ++i) {
