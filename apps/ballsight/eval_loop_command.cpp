@@ -46,10 +46,12 @@ void run_eval_loop(const EvalLoopArgs& args) {
       eval::run_loop_eval(options, connect_over_loopback, [](const eval::LoopRun& r) {
         std::fprintf(stderr,
                      "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m, %d "
-                     "stalls, %d ticks in contact, %d frame sets dead reckoned%s\n",
+                     "stalls, %d ticks in contact, nearest %.3f m, %d frame sets dead "
+                     "reckoned, %d commands guarded%s\n",
                      r.system.c_str(), static_cast<unsigned long long>(r.seed), r.layout.c_str(),
                      r.collected, r.balls, r.time_s, r.distance_m, r.stalls, r.contacts,
-                     r.dead_reckoned, r.never_overlapped ? "" : " (overlapped the net or fence!)");
+                     r.min_clearance_m, r.dead_reckoned, r.guarded,
+                     r.never_overlapped ? "" : " (overlapped the net or fence!)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
   if (args.json) {

@@ -80,7 +80,8 @@ void run_robot(RobotArgs args) {
                                  {"seqs", r.seqs},
                                  {"latency_ms", r.latency_ms},
                                  {"stalls", r.stalls},
-                                 {"dead_reckoned", r.dead_reckoned}};
+                                 {"dead_reckoned", r.dead_reckoned},
+                                 {"guarded", r.guarded}};
     write_file_atomic(args.summary, summary.dump() + "\n");
   }
 }
@@ -120,7 +121,8 @@ void add_robot_command(CLI::App& app) {
   cmd->add_option("--summary", args->summary,
                   "Write what happened here at the end (JSON: done, updates, collected, gaps, "
                   "reconnects, sim_time_s, seqs, latency_ms per update, stalls, dead_reckoned: "
-                  "frame sets driven on its own estimate out of the cameras' sight)");
+                  "frame sets driven on its own estimate out of the cameras' sight, guarded: "
+                  "commands its local planner slowed, replaced or stopped)");
   cmd->callback([args] { run_robot(*args); });
 }
 

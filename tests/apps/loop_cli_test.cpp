@@ -66,6 +66,9 @@ TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {
   EXPECT_EQ(s["runs"][0]["layout"], "along_fence");
   EXPECT_TRUE(s["runs"][0].contains("contacts"));
   EXPECT_TRUE(s["runs"][0].contains("dead_reckoned"));
+  EXPECT_TRUE(s["runs"][0]["guarded"].is_number_integer());
+  // The body's nearest approach to the net or the fence, from the truth: clear of both.
+  EXPECT_GT(s["runs"][0]["min_clearance_m"].get<double>(), 0.0);
   expect_one_line_error(run_cli({"eval", "loop", "--systems", "magic"}), "--systems");
   expect_one_line_error(run_cli({"eval", "loop", "--layouts", "square"}), "--layouts");
   expect_one_line_error(run_cli({"eval", "loop", "--odometry-drift", "0.9"}), "--odometry-drift");

@@ -138,5 +138,23 @@ TEST(RobotMotion, FootprintOfTheReportsRobot) {
   EXPECT_THROW((DriveLimits{0.0, 1.0, 90.0, 360.0}.validate()), InputError);
 }
 
+TEST(RobotMotion, ClearanceIsTheBodysNearestApproach) {
+  const TennisCourtSpec court;
+  const RobotFootprint f;  // 0.30 back and front, 0.35 either side
+  const double fence_x = court.surround_length_m / 2.0;
+  const double mesh = court.net.post_radius_m;
+  // Facing the fence, 10 cm off; alongside the mesh, 5 cm off; turned 45 degrees off the
+  // mesh, a corner nearest; beyond a post's end; overlapping the net.
+  EXPECT_NEAR(footprint_clearance(f, {Vec2(fence_x - 0.40, 0.0), 0.0}, court), 0.10, 1e-9);
+  EXPECT_NEAR(footprint_clearance(f, {Vec2(mesh + 0.40, 1.0), kPi / 2.0}, court), 0.05, 1e-9);
+  const double corner = std::hypot(0.30, 0.35) * std::cos(std::atan2(0.35, 0.30) - kPi / 4.0);
+  EXPECT_NEAR(footprint_clearance(f, {Vec2(mesh + corner + 0.02, 1.0), kPi / 4.0}, court), 0.02,
+              1e-9);
+  const double post_end =
+      court.doubles_width_m / 2.0 + court.net.post_outside_doubles_m + court.net.post_radius_m;
+  EXPECT_NEAR(footprint_clearance(f, {Vec2(0.0, post_end + 0.35 + 0.07), 0.0}, court), 0.07, 1e-9);
+  EXPECT_EQ(footprint_clearance(f, {Vec2(0.2, 1.0), 0.0}, court), 0.0);
+}
+
 }  // namespace
 }  // namespace ballsight::sim

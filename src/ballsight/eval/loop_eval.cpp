@@ -79,10 +79,20 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   std::erase_if(ticks, [&](const sim::WorldTick& t) { return t.time_s > max_time_s + 1e-6; });
   const LoopScore score =
       score_loop(scene.balls, start, ticks, collector_footprint(service.site().robot));
-  return {system.name,      scene.seed,          scene.layout.name(),
-          score.balls,      score.collected,     score.all ? score.time_s : max_time_s,
-          score.distance_m, score.all,           score.never_overlapped,
-          driven.stalls,    score.blocked_ticks, driven.dead_reckoned};
+  return {system.name,
+          scene.seed,
+          scene.layout.name(),
+          score.balls,
+          score.collected,
+          score.all ? score.time_s : max_time_s,
+          score.distance_m,
+          score.all,
+          score.never_overlapped,
+          driven.stalls,
+          score.blocked_ticks,
+          driven.dead_reckoned,
+          driven.guarded,
+          score.min_clearance_m};
 }
 
 void LoopEvalOptions::validate() const {
@@ -170,7 +180,9 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
                       {"never_overlapped", r->never_overlapped},
                       {"stalls", r->stalls},
                       {"contacts", r->contacts},
-                      {"dead_reckoned", r->dead_reckoned}});
+                      {"dead_reckoned", r->dead_reckoned},
+                      {"guarded", r->guarded},
+                      {"min_clearance_m", r->min_clearance_m}});
     }
     const double n = static_cast<double>(list.size());
     nlohmann::json s{

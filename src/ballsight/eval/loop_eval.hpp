@@ -64,6 +64,8 @@ struct LoopRun {
   int contacts = 0;  // ticks (0.1 s) in which the net or the fence stopped the robot
   int dead_reckoned = 0;  // frame sets the cameras did not see the robot and it drove on its own
                           // estimate (robot/pose_tracker.hpp)
+  int guarded = 0;        // commands the robot's local planner slowed, replaced or stopped
+  double min_clearance_m = 0.0;  // the body's nearest approach to the net or the fence (truth)
 };
 
 /// How the robot reaches the service in a run: a link to `service`'s updates in `hub` that owns

@@ -130,6 +130,8 @@ void DrivableCourt::validate() const {
   require(net->half_length_m > 0.0, "net.half_length_m", "must be positive");
   require(net->clearance_m >= 0.0, "net.clearance_m", "must not be negative");
   require(net->post_clearance_m >= 0.0, "net.post_clearance_m", "must not be negative");
+  require(std::isfinite(net->body_half_m) && net->body_half_m >= 0.0, "net.body_half_m",
+          "must not be negative");
   require(net->travel_clearance_m >= net->clearance_m, "net.travel_clearance_m",
           "must not be less than net.clearance_m (the lane holds the reach keep-out)");
   const double y_end = net->end_m();

@@ -28,6 +28,9 @@ struct CourtNet {
   double clearance_m = 0.06;
   double post_clearance_m = 0.50;
   double travel_clearance_m = 0.45;
+  /// The mesh and the posts reach this far either side of the plane (the simulator's posts'
+  /// radius): the obstacle the body must not touch (costmap.hpp).
+  double body_half_m = 0.04;
 
   /// How far the keep-out and the lane reach along the net from the centre line.
   double end_m() const { return half_length_m + post_clearance_m; }

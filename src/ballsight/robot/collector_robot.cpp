@@ -1,5 +1,6 @@
 #include "ballsight/robot/collector_robot.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -28,8 +29,22 @@ FollowerOptions follower_for_site(const Site& site) {
   return f;
 }
 
+LocalPlannerOptions local_planner_for_site(const Site& site) {
+  LocalPlannerOptions l;
+  const BodyOutline box;  // the simulator's box with the site's collector
+  l.body.front_m = std::max(box.front_m, site.robot.collector_x_m);
+  l.body.half_width_m = std::max(box.half_width_m, site.robot.collector_width_m / 2.0);
+  l.max_accel_mps2 = site.robot.max_accel_mps2;
+  l.max_turn_accel_rps2 = rad_from_deg(site.robot.turn_accel_dps2);
+  l.max_speed_mps = site.robot.max_speed_mps;
+  l.max_turn_rate_rps = rad_from_deg(site.robot.turn_rate_dps);
+  return l;
+}
+
 void CollectorOptions::validate() const {
   follow.validate();
+  local.validate();
+  court.validate();
   require(done_after >= 1, "done_after", "must be at least 1");
   require(std::isfinite(max_time_s) && max_time_s >= 0.0, "max_time_s", "must not be negative");
   require(std::isfinite(latency_s) && latency_s >= 0.0 && latency_s <= 5.0, "latency_s",
@@ -43,6 +58,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
                               const std::function<void(const std::string&)>& progress) {
   options.validate();
   PathFollower follower(options.follow);
+  LocalPlanner local(Costmap(options.court), options.local);
   std::vector<Vec2> planned;  // the route's waypoints being followed
   FollowCommand sent;         // the last command sent
   // The command the wheels carry out during the latency: the last one sent for earlier frames (an
@@ -92,12 +108,16 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
               ? result.sim_time_s
               : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       const std::optional<FollowCommand> freeing = recovery.step(*pose, now_s, !u->balls_m.empty());
-      command = freeing
-                    ? *freeing
-                    : follower.command(options.latency_s > 0.0
-                                           ? along_arc(*pose, in_flight.speed_mps,
-                                                       in_flight.turn_rate_rps, options.latency_s)
-                                           : *pose);
+      // Steered from where the robot will be when the command acts.
+      const Pose2D acting =
+          options.latency_s > 0.0
+              ? along_arc(*pose, in_flight.speed_mps, in_flight.turn_rate_rps, options.latency_s)
+              : *pose;
+      const FollowCommand wanted = freeing ? *freeing : follower.command(acting);
+      const GuardedCommand guarded =
+          local.guard(acting, wanted, follower.carrot(), options.follow.mouth_ahead_m);
+      command = guarded.command;
+      if (guarded.guard != Guard::as_wanted) ++result.guarded;
     }
     sent = command;
     const std::optional<nlohmann::json> drove =

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "ballsight/plan/drivable_court.hpp"
+#include "ballsight/robot/local_planner.hpp"
 #include "ballsight/robot/path_follower.hpp"
 #include "ballsight/robot/pose_tracker.hpp"
 #include "ballsight/robot/progress_recovery.hpp"
@@ -24,9 +26,15 @@ namespace ballsight {
 
 /// The follower for a site's robot and court: its mouth, speeds, and the net's lane to back off.
 FollowerOptions follower_for_site(const Site& site);
+/// The local planner for a site's robot: its body (the collector's width; the simulator's box),
+/// speeds and braking.
+LocalPlannerOptions local_planner_for_site(const Site& site);
 
 struct CollectorOptions {
   FollowerOptions follow = follower_for_site(Site{});  // mouth 0.30 m ahead, 1 m/s, 90 deg/s
+  /// Every command passes the local planner on the court's costmap (local_planner.hpp).
+  LocalPlannerOptions local = local_planner_for_site(Site{});
+  DrivableCourt court = drivable_court(SiteCourt{});
   int done_after = 10;      // updates in a row with no ball and no route: all collected
   double max_time_s = 0.0;  // wall time; 0: no limit
   /// From the frames' capture to the wheels acting on the command sent for them: the robot
@@ -48,6 +56,7 @@ struct CollectorResult {
   int stalls = 0;         // times it was stalled and backed up (or drove ahead) to free itself
   int dead_reckoned = 0;  // frame sets on which the cameras did not see it and it drove on its
                           // own estimate (pose_tracker.hpp)
+  int guarded = 0;        // commands the local planner slowed, replaced or stopped
   std::uint64_t gaps = 0;
   int reconnects = 0;
   double sim_time_s = 0.0;  // the simulated court's clock at the last command

@@ -71,10 +71,11 @@ Vec2 PathFollower::at(double s) const {
 }
 
 FollowCommand PathFollower::command(const Pose2D& pose) {
-  if (path_.empty()) return {0.0, 0.0, true};
   const Vec2 h(std::cos(pose.heading_rad), std::sin(pose.heading_rad));
   const Vec2 h_perp(-h.y(), h.x());
   const Vec2 mouth = pose.position + options_.mouth_ahead_m * h;
+  carrot_ = path_.empty() ? mouth : path_.back();
+  if (path_.empty()) return {0.0, 0.0, true};
   // Progress: the closest point of the path to the mouth, searched a little ahead of the last
   // progress only (the path may cross itself; progress never goes back).
   const double total = cumulative_.back();
@@ -106,8 +107,8 @@ FollowCommand PathFollower::command(const Pose2D& pose) {
     corner = cumulative_[i];
     break;
   }
-  const Vec2 carrot = at(std::min(progress_ + options_.lookahead_m, corner));
-  const Vec2 towards = carrot - mouth;
+  carrot_ = at(std::min(progress_ + options_.lookahead_m, corner));
+  const Vec2 towards = carrot_ - mouth;
   const double distance = towards.norm();
   if (distance < 1e-9) return {0.0, 0.0, true};
   // Slow for the waypoint ahead when the path turns there, and for the end.

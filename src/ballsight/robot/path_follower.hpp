@@ -65,6 +65,8 @@ class PathFollower {
 
   /// Where along the path the mouth has got, in metres from its start.
   double progress_m() const { return progress_; }
+  /// The point the last command steered the mouth for (the path's end when it arrived).
+  const Vec2& carrot() const { return carrot_; }
 
  private:
   /// The point `s` metres along the path (clamped to its ends).
@@ -74,6 +76,7 @@ class PathFollower {
   std::vector<Vec2> path_;
   std::vector<double> cumulative_;  // path length up to each waypoint
   double progress_ = 0.0;
+  Vec2 carrot_ = Vec2::Zero();
   double spin_ = 0.0;  // the direction of a turn on the spot under way (+1 left, -1 right)
   std::optional<Vec2> creep_from_;  // where creeping away from a waypoint too near began
   int creep_commands_ = 0;          // and the commands since

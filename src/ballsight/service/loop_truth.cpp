@@ -147,8 +147,9 @@ LoopScore score_loop(int balls, const Pose2D& start, const std::vector<sim::Worl
     last = t.robot.position;
     score.collected += static_cast<int>(t.collected.size());
     score.blocked_ticks += t.blocked ? 1 : 0;
-    score.never_overlapped =
-        score.never_overlapped && !sim::footprint_blocked(footprint, t.robot, court);
+    score.min_clearance_m =
+        std::min(score.min_clearance_m, sim::footprint_clearance(footprint, t.robot, court));
+    score.never_overlapped = score.never_overlapped && score.min_clearance_m > 0.0;
     score.time_s = t.time_s;
     if (t.balls_left == 0) {
       score.all = true;

@@ -9,6 +9,7 @@
 // "time_s", "what"} (the service started or resumed, a camera failed). A restarted service resumes
 // the court from this record.
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <istream>
@@ -79,7 +80,8 @@ struct LoopScore {
   double distance_m = 0.0;
   bool all = false;
   bool never_overlapped = true;
-  int blocked_ticks = 0;  // ticks in which the net or the fence stopped the robot
+  int blocked_ticks = 0;              // ticks in which the net or the fence stopped the robot
+  double min_clearance_m = INFINITY;  // the body's nearest approach to them over the run
 };
 
 LoopScore score_loop(int balls, const Pose2D& start, const std::vector<sim::WorldTick>& ticks,

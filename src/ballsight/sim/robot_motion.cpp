@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
@@ -49,6 +50,37 @@ bool overlap(const Corners& a, const Corners& b) {
   return true;
 }
 
+/// Distance from `p` to the segment a-b.
+double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+  return (p - (a + t * d)).norm();
+}
+
+/// Distance between two convex quadrilaterals that do not overlap: the nearest pair of a corner
+/// of one and an edge of the other.
+double gap(const Corners& a, const Corners& b) {
+  double nearest = INFINITY;
+  for (const auto& [points, edges] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+    for (const Vec2& p : *points) {
+      for (int i = 0; i < 4; ++i) {
+        nearest = std::min(nearest, segment_distance(p, (*edges)[i], (*edges)[(i + 1) % 4]));
+      }
+    }
+  }
+  return nearest;
+}
+
+/// The net as the referee has it: the mesh on x = 0 between the post centres, as thick as the
+/// posts.
+Corners net_corners(const TennisCourtSpec& court) {
+  const double half_span =
+      court.doubles_width_m / 2.0 + court.net.post_outside_doubles_m + court.net.post_radius_m;
+  const double half_depth = court.net.post_radius_m;
+  return {Vec2(-half_depth, -half_span), Vec2(half_depth, -half_span), Vec2(half_depth, half_span),
+          Vec2(-half_depth, half_span)};
+}
+
 }  // namespace
 
 void DriveLimits::validate() const {
@@ -79,14 +111,20 @@ bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
       return true;
     }
   }
-  if (!court.net.enabled) return false;
-  // The net: the mesh on x = 0 between the post centres, as thick as the posts.
-  const double half_span =
-      court.doubles_width_m / 2.0 + court.net.post_outside_doubles_m + court.net.post_radius_m;
-  const double half_depth = court.net.post_radius_m;
-  const Corners net{Vec2(-half_depth, -half_span), Vec2(half_depth, -half_span),
-                    Vec2(half_depth, half_span), Vec2(-half_depth, half_span)};
-  return overlap(corners, net);
+  return court.net.enabled && overlap(corners, net_corners(court));
+}
+
+double footprint_clearance(const RobotFootprint& footprint, const Pose2D& pose,
+                           const TennisCourtSpec& court) {
+  if (footprint_blocked(footprint, pose, court)) return 0.0;
+  const Corners corners = footprint_corners(footprint, pose);
+  // Inside the fence's rectangle the nearest point of the body to it is a corner.
+  double nearest = INFINITY;
+  for (const Vec2& c : corners) {
+    nearest = std::min({nearest, court.surround_length_m / 2.0 - std::abs(c.x()),
+                        court.surround_width_m / 2.0 - std::abs(c.y())});
+  }
+  return court.net.enabled ? std::min(nearest, gap(corners, net_corners(court))) : nearest;
 }
 
 void RobotImperfections::validate() const {

@@ -65,6 +65,11 @@ struct RobotFootprint {
 bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
                        const TennisCourtSpec& court);
 
+/// How far the robot at `pose` is from the net and the fence (the nearest of its footprint's
+/// points to either), exactly; 0 where it overlaps one (footprint_blocked).
+double footprint_clearance(const RobotFootprint& footprint, const Pose2D& pose,
+                           const TennisCourtSpec& court);
+
 struct DriveStep {
   RobotMotion motion;
   bool blocked = false;  // the net or the fence was in the way of the commanded motion
