@@ -90,4 +90,13 @@ Pose2D json_pose(const nlohmann::json& value, const std::string& where) {
           rad_from_deg(json_number(value, "heading_deg", where))};
 }
 
+std::optional<Pose2D> json_pose_if_any(const nlohmann::json& object, const std::string& key) {
+  if (!object.is_object() || !object.contains(key)) return std::nullopt;
+  try {
+    return json_pose(object[key], key);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace ballsight

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,8 @@ std::vector<double> json_numbers(const nlohmann::json& object, const std::string
 nlohmann::json pose_json(const Pose2D& pose);
 /// The pose `value` ({"x_m", "y_m", "heading_deg"}, finite numbers).
 Pose2D json_pose(const nlohmann::json& value, const std::string& where);
+/// The member `key` of `object` as a pose; nullopt when it is missing or not one (a reading
+/// that is to be skipped, not refused).
+std::optional<Pose2D> json_pose_if_any(const nlohmann::json& object, const std::string& key);
 
 }  // namespace ballsight

@@ -90,11 +90,9 @@ void RobotReports::answer(const RobotReportMsg& report) {
   if (done.is_object()) {  // the wheels' answer
     reply.collected = done.value("collected", 0);
     reply.time_s = done.value("time_s", 0.0);
-    if (done.contains("odometry")) {
-      try {
-        reply.odometry = pose_2d_message(json_pose(done["odometry"], "drive.odometry"));
-      } catch (const InputError&) {  // not a pose: none carried (the robot keeps its prediction)
-      }
+    // Not a pose: none carried (the robot keeps its prediction).
+    if (const std::optional<Pose2D> odometry = json_pose_if_any(done, "odometry")) {
+      reply.odometry = pose_2d_message(*odometry);
     }
   }
   ++answered_;  // before the reply: the robot may count on it once answered

@@ -42,15 +42,18 @@ Costmap::Costmap(const DrivableCourt& court, double resolution_m) : resolution_m
   for (int row = 0; row < rows_; ++row) {
     for (int col = 0; col < cols_; ++col) {
       const Vec2 p = origin_ + resolution_m * Vec2(col, row);
-      distance_m_[static_cast<std::size_t>(row) * static_cast<std::size_t>(cols_) +
-                  static_cast<std::size_t>(col)] = static_cast<float>(obstacle_distance(court, p));
+      distance_m_[index(col, row)] = static_cast<float>(obstacle_distance(court, p));
     }
   }
 }
 
+std::size_t Costmap::index(int col, int row) const {
+  return static_cast<std::size_t>(row) * static_cast<std::size_t>(cols_) +
+         static_cast<std::size_t>(col);
+}
+
 double Costmap::cell(int col, int row) const {
-  return distance_m_[static_cast<std::size_t>(row) * static_cast<std::size_t>(cols_) +
-                     static_cast<std::size_t>(col)];
+  return distance_m_[index(col, row)];
 }
 
 double Costmap::clearance(const Vec2& p) const {

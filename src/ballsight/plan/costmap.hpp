@@ -6,6 +6,7 @@
 // robot's outline is checked against the distances (robot/local_planner.hpp), which is the same
 // test for a round robot and an exact one for the collector's rectangle.
 
+#include <cstddef>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
@@ -26,6 +27,7 @@ class Costmap {
   double resolution_m() const { return resolution_m_; }
 
  private:
+  std::size_t index(int col, int row) const;  // into distance_m_
   double cell(int col, int row) const;
 
   Vec2 origin_;  // the centre of cell (0, 0)

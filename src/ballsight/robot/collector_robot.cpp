@@ -131,10 +131,10 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
       sim_clock = true;
       result.sim_time_s = time_s;
     }
-    if (new_frames && drove && drove->contains("odometry")) {
-      try {
-        tracker.odometry(json_pose((*drove)["odometry"], "drive.odometry"));
-      } catch (const InputError&) {  // a reading that is not one: the prediction stands
+    if (new_frames && drove) {
+      // A reading that is not one is skipped: the prediction stands.
+      if (const std::optional<Pose2D> odometry = json_pose_if_any(*drove, "odometry")) {
+        tracker.odometry(*odometry);
       }
     }
     // Out of the cameras' sight, the service plans from where the robot says it is.

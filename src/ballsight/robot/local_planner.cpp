@@ -112,8 +112,7 @@ GuardedCommand LocalPlanner::guard(const Pose2D& pose, const FollowCommand& want
     }
     return end;
   };
-  const auto score = [&](const FollowCommand& c) {
-    const Pose2D end = end_of(c);
+  const auto score = [&](const Pose2D& end) {
     const Vec2 h(std::cos(end.heading_rad), std::sin(end.heading_rad));
     const Vec2 to_carrot = carrot - (end.position + mouth_ahead_m * h);
     const double facing =
@@ -130,16 +129,17 @@ GuardedCommand LocalPlanner::guard(const Pose2D& pose, const FollowCommand& want
   }
   kept_.reset();
   std::optional<FollowCommand> nearer, away;
-  double best_score = score(FollowCommand{}) - kBetterM, best_room = start + kBetterM;
+  double best_score = score(pose) - kBetterM, best_room = start + kBetterM;
   for (const double v : kSpeedShares) {
     for (const double w : kTurnShares) {
       const FollowCommand c{v * options_.max_speed_mps, w * options_.max_turn_rate_rps, false};
       if ((v == 0.0 && w == 0.0) || !clear(pose, c, start, options_.contact_m)) continue;
-      if (const double s = score(c); s < best_score) {
+      const Pose2D end = end_of(c);
+      if (const double s = score(end); s < best_score) {
         nearer = c;
         best_score = s;
       }
-      if (const double room = clearance(end_of(c)); room > best_room) {
+      if (const double room = clearance(end); room > best_room) {
         away = c;
         best_room = room;
       }

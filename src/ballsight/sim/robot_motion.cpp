@@ -116,15 +116,18 @@ bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
 
 double footprint_clearance(const RobotFootprint& footprint, const Pose2D& pose,
                            const TennisCourtSpec& court) {
-  if (footprint_blocked(footprint, pose, court)) return 0.0;
   const Corners corners = footprint_corners(footprint, pose);
-  // Inside the fence's rectangle the nearest point of the body to it is a corner.
+  // Inside the fence's rectangle the nearest point of the body to it is a corner (negative: one
+  // beyond it, as footprint_blocked has it).
   double nearest = INFINITY;
   for (const Vec2& c : corners) {
     nearest = std::min({nearest, court.surround_length_m / 2.0 - std::abs(c.x()),
                         court.surround_width_m / 2.0 - std::abs(c.y())});
   }
-  return court.net.enabled ? std::min(nearest, gap(corners, net_corners(court))) : nearest;
+  if (nearest < 0.0) return 0.0;
+  if (!court.net.enabled) return nearest;
+  const Corners net = net_corners(court);
+  return overlap(corners, net) ? 0.0 : std::min(nearest, gap(corners, net));
 }
 
 void RobotImperfections::validate() const {
