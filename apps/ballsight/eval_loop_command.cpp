@@ -47,10 +47,10 @@ void run_eval_loop(const EvalLoopArgs& args) {
         std::fprintf(stderr,
                      "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m, %d "
                      "stalls, %d ticks in contact, nearest %.3f m, %d frame sets dead "
-                     "reckoned, %d commands guarded%s\n",
+                     "reckoned, %d commands guarded, %d unloads%s\n",
                      r.system.c_str(), static_cast<unsigned long long>(r.seed), r.layout.c_str(),
                      r.collected, r.balls, r.time_s, r.distance_m, r.stalls, r.contacts,
-                     r.min_clearance_m, r.dead_reckoned, r.guarded,
+                     r.min_clearance_m, r.dead_reckoned, r.guarded, r.unloads,
                      r.never_overlapped ? "" : " (overlapped the net or fence!)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
@@ -109,6 +109,10 @@ void add_eval_loop_command(CLI::App& eval) {
                   "off by about 1 cm over a metre or two)")
       ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
+  cmd->add_option("--capacity", args->options.robot.capacity,
+                  "Balls the simulated collector's basket holds (default: the site's 60); when "
+                  "full it empties it at the site's unload point")
+      ->check(CLI::Range(1, 1000));
   cmd->add_option("--steer-ahead-ms", args->steer_ahead_ms,
                   "The latency the robot's controller steers ahead by (default: "
                   "--command-latency-ms; 0: none, to measure what the prediction gives)")

@@ -109,6 +109,9 @@ void add_serve_command(CLI::App& app) {
                   "Simulated court: frame sets per second of simulated time")
       ->capture_default_str();
   cmd->add_option("--balls", args->balls, "Simulated court: tennis balls on it (default 20-60)");
+  cmd->add_option("--capacity", args->service.capacity,
+                  "Simulated court: balls the collector's basket holds (default 60)")
+      ->check(CLI::Range(1, 1000));
   cmd->add_option("--cluster-share", args->service.cluster_share,
                   "Simulated court: of the balls, the share in clusters of 2-4 touching balls")
       ->capture_default_str();

@@ -74,10 +74,13 @@ TEST(DdsRobotLink, EveryUpdateOnceInOrderAndReportsReachTheHub) {
       << link.status().last_error;
   EXPECT_EQ(court.hub.acknowledged(), 31u);
 
-  EXPECT_TRUE(link.report_collected({Vec2(3, 4), Vec2(1, 2)}));
+  EXPECT_TRUE(link.report_collected({Vec2(3, 4), Vec2(1, 2)}, 2));
   EXPECT_EQ(court.hub.collected(), (std::vector<Vec2>{Vec2(3, 4), Vec2(1, 2)}));
+  ASSERT_TRUE(court.hub.reports().basket);
+  EXPECT_EQ(court.hub.reports().basket->value, 2);
   EXPECT_EQ(court.replans, 1);
-  EXPECT_FALSE(link.report_collected({Vec2(1, 1), Vec2(30, 0)}));  // the second is off the court
+  // The second is off the court.
+  EXPECT_FALSE(link.report_collected({Vec2(1, 1), Vec2(30, 0)}, std::nullopt));
   EXPECT_NE(link.status().last_error.find("report.points[1]"), std::string::npos)
       << link.status().last_error;
   EXPECT_EQ(court.hub.collected().size(), 2u);

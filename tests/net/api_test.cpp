@@ -95,6 +95,17 @@ TEST(Api, TheReportsFourMethodsAndItsFlag) {
                "body.ids[0]");
   expect_error(f.call("POST", "/api/v1/collected", R"({"seq": 9, "ids": [0]})"), 409, "body.seq");
   expect_error(f.call("POST", "/api/v1/collected", R"({"ids": [0]})"), 400, "body.seq");
+  // With the balls in the robot's basket now (0 after emptying it, no ball).
+  EXPECT_EQ(f.call("POST", "/api/v1/collected", R"({"seq": 1, "ids": [0], "held": 12})").status,
+            200);
+  EXPECT_EQ(f.hub.reports().basket->value, 12);
+  EXPECT_EQ(f.call("POST", "/api/v1/collected", R"({"balls": [], "held": 0})").status, 200);
+  EXPECT_EQ(f.hub.reports().basket->value, 0);
+  expect_error(f.call("POST", "/api/v1/collected", R"({"balls": [], "held": -1})"), 400,
+               "body.held");
+  expect_error(f.call("POST", "/api/v1/collected", R"({"balls": [], "held": 2.5})"), 400,
+               "body.held");
+  expect_error(f.call("PUT", "/api/v1/balls", R"({"balls": [], "held": 0})"), 400, "body");
 }
 
 TEST(Api, LongPollAnswersTheFirstNewerUpdateOrAsksTheTransportToWait) {

@@ -64,8 +64,13 @@ TEST_P(RobotLinkTransports, EveryUpdateOnceInOrderAndWritesReachTheService) {
   EXPECT_EQ(link.status().gaps, 0u);
   EXPECT_TRUE(link.acknowledge(31));
   EXPECT_EQ(hub.acknowledged(), 31u);
-  EXPECT_TRUE(link.report_collected({Vec2(3, 4)})) << link.status().last_error;
+  EXPECT_TRUE(link.report_collected({Vec2(3, 4)}, std::nullopt)) << link.status().last_error;
   EXPECT_EQ(hub.collected(), std::vector<Vec2>{Vec2(3, 4)});
+  EXPECT_FALSE(hub.reports().basket);
+  EXPECT_TRUE(link.report_collected({}, 7)) << link.status().last_error;  // the basket alone
+  ASSERT_TRUE(hub.reports().basket);
+  EXPECT_EQ(hub.reports().basket->value, 7);
+  EXPECT_EQ(hub.collected().size(), 1u);
   EXPECT_TRUE(link.set_pose({Vec2(-2, 1), 0.0}));
   ASSERT_TRUE(hub.robot());
   EXPECT_EQ(hub.robot()->value.position, Vec2(-2, 1));

@@ -157,6 +157,32 @@ TEST(Planner, BadInputIsNamed) {
   expect_error(test::random_court_problem(13, 1), with(PlannerKind::exact), "at most 12");
 }
 
+// A basket half full when the route begins (held), the last trip left open: the first trip has
+// room for what is left, the route ends at a ball; a full basket is emptied first.
+TEST(Planner, TheBasketsLoadAndAnOpenEnd) {
+  PlanningProblem problem = test::random_court_problem(20, 3);
+  for (const int held : {0, 5, 7}) {
+    problem.capacity = Capacity{7, Vec2(-17, 0), held, false};
+    for (const PlannerKind kind : {PlannerKind::ballsight, PlannerKind::priority}) {
+      SCOPED_TRACE(testing::Message() << "held " << held << " " << planner_name(kind));
+      const Route route = plan(problem, with(kind, 1));
+      expect_valid(problem, route);
+      ASSERT_FALSE(route.unload_after.empty());
+      EXPECT_LT(route.unload_after.back(), static_cast<int>(route.order.size()) - 1);
+      EXPECT_EQ(route.waypoints_m.back(), route.visits_m.back());
+      EXPECT_LE(route.unload_after.front() + 1, 7 - held);
+      if (held == 7) {
+        EXPECT_EQ(route.unload_after.front(), -1);
+      }
+      for (std::size_t k = 1; k < route.unload_after.size(); ++k) {
+        EXPECT_LE(route.unload_after[k] - route.unload_after[k - 1], 7);
+      }
+    }
+  }
+  problem.capacity->held = 8;
+  expect_error(problem, {}, "holds 0 to 7 balls, not 8");
+}
+
 TEST(Planner, ReplanningKeepsTheTargetAndTheOrder) {
   const PlanningProblem problem = test::random_court_problem(100, 4);
   const Route first = plan(problem, {});

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "example_site.hpp"
 
 namespace ballsight {
@@ -76,6 +78,29 @@ TEST(PlanUpdate, AReportTakesOneBallNotItsTwinNorItsNeighbour) {
   const NavigationUpdate u = plan_update(site, world, reports, nullptr, {});
   EXPECT_EQ(u.route.order.size(), 3u);  // (4, -2), (-1, 3) and the neighbour
   EXPECT_EQ(u.world.balls.size(), 5u);
+}
+
+// The basket matters once the balls outnumber its room: the route then empties it when full and
+// leaves its last trip open; a full basket is emptied first.
+TEST(PlanUpdate, TheBasketsRoomPlansTheUnloadTrips) {
+  Site site = read_site(kExampleSite.string());
+  site.robot.capacity = 3;
+  const WorldModel world = seen_world(5000);
+  const NavigationUpdate room = plan_update(site, world, {}, nullptr, {});
+  EXPECT_TRUE(room.route.unload_after.empty());  // 3 balls, room for 3
+  ClientReports reports;
+  reports.basket = External<int>{1, 4000};
+  const NavigationUpdate one = plan_update(site, world, reports, nullptr, {});
+  ASSERT_EQ(one.route.unload_after.size(), 1u);
+  EXPECT_LE(one.route.unload_after[0], 1);  // after at most the 2 balls it has room for
+  EXPECT_EQ(one.route.order.size(), 3u);
+  EXPECT_NE(
+      std::find(one.route.waypoints_m.begin(), one.route.waypoints_m.end(), site.unload_point()),
+      one.route.waypoints_m.end());
+  reports.basket->value = 3;
+  const NavigationUpdate full = plan_update(site, world, reports, nullptr, {});
+  EXPECT_TRUE(full.route.unloads_first());
+  EXPECT_FALSE(one.route.unloads_first());
 }
 
 }  // namespace

@@ -185,5 +185,27 @@ TEST(Site, TheNetAndTheRobotsLimits) {
                "than half of area_width_m)");
 }
 
+TEST(Site, TheBasketAndWhereItIsEmptied) {
+  const Site defaults = parse_site(kMinimal, "site.yml");
+  EXPECT_EQ(defaults.robot.capacity, 60);
+  EXPECT_DOUBLE_EQ(defaults.robot.unload_s, 5.0);
+  EXPECT_EQ(defaults.unload_point(), Vec2(16.5, 0.0));  // 1.5 m inside the 36 m area's east end
+  const Site site = parse_site(std::string(kMinimal) +
+                                   "robot:\n  capacity: 25\n  unload_m: [-15, 2]\n"
+                                   "  unload_s: 8\n",
+                               "site.yml");
+  EXPECT_EQ(site.robot.capacity, 25);
+  EXPECT_EQ(site.unload_point(), Vec2(-15.0, 2.0));
+  EXPECT_DOUBLE_EQ(site.robot.unload_s, 8.0);
+  expect_error(std::string(kMinimal) + "robot:\n  capacity: 0\n",
+               "site.yml:19: key 'robot.capacity' must be 1 to 1000 balls, got 0");
+  expect_error(std::string(kMinimal) + "robot:\n  unload_m: [17.8, 0]\n",
+               "site.yml:19: key 'robot.unload_m' must lie inside the fence's lane and off the "
+               "net's (unload_m 17.80, 0.00)");
+  expect_error(std::string(kMinimal) + "robot:\n  unload_m: [0.1, 3]\n",
+               "site.yml:19: key 'robot.unload_m' must lie inside the fence's lane and off the "
+               "net's (unload_m 0.10, 3.00)");
+}
+
 }  // namespace
 }  // namespace ballsight

@@ -68,7 +68,8 @@ void DdsRobotLink::receive() {
                               message.error ? message.error : "",
                               message.collected,
                               message.time_s,
-                              pose_from_message(message.odometry)};
+                              pose_from_message(message.odometry),
+                              message.held};
       ++mine;
     });
     if (mine > 0) replied_.notify_all();
@@ -134,10 +135,11 @@ bool DdsRobotLink::acknowledge(std::uint64_t seq) {
       .has_value();
 }
 
-bool DdsRobotLink::report_collected(const std::vector<Vec2>& positions) {
+bool DdsRobotLink::report_collected(const std::vector<Vec2>& positions, std::optional<int> held) {
   return request(ReportKind::collected,
-                 [&positions](RobotReportMsg& r, MessageArena& arena) {
+                 [&](RobotReportMsg& r, MessageArena& arena) {
                    fill_points(r.points, positions, arena);
+                   r.held = held.value_or(-1);
                  })
       .has_value();
 }
@@ -158,6 +160,7 @@ std::optional<nlohmann::json> DdsRobotLink::drive_simulated(std::uint64_t seq, d
       });
   if (!reply) return std::nullopt;
   return nlohmann::json{{"collected", reply->collected},
+                        {"held", reply->held},
                         {"time_s", reply->time_s},
                         {"odometry", pose_json(reply->odometry)}};
 }

@@ -43,7 +43,7 @@ class DdsRobotLink : public RobotLink {
   std::optional<LinkUpdate> latest(std::chrono::milliseconds timeout) override;
 
   bool acknowledge(std::uint64_t seq) override;
-  bool report_collected(const std::vector<Vec2>& positions) override;
+  bool report_collected(const std::vector<Vec2>& positions, std::optional<int> held) override;
   bool set_pose(const Pose2D& pose) override;
   std::optional<nlohmann::json> drive_simulated(std::uint64_t seq, double speed_mps,
                                                 double turn_rate_dps) override;
@@ -60,6 +60,7 @@ class DdsRobotLink : public RobotLink {
     int collected = 0;
     double time_s = 0.0;
     Pose2D odometry;
+    int held = 0;
   };
   void receive();
   /// Writes a report of `kind` (`fill` adds what it carries) and waits for its reply; nullopt

@@ -75,15 +75,16 @@ std::vector<TypeDescription> descriptions() {
        {header, field("seq", F::uint64), field("service_id", F::string),
         nested("published", "builtin_interfaces/msg/Time"), field("has_robot", F::boolean),
         nested("robot", "geometry_msgs/msg/Pose2D"), points("balls"), points("visits"),
-        points("waypoints")}},
+        points("waypoints"), field("unload_first", F::boolean)}},
       {"ballsight_msgs/msg/RobotReport",
        {header, field("client", F::string), field("request", F::uint64), field("kind", F::uint8),
         field("seq", F::uint64), points("points"), nested("pose", "geometry_msgs/msg/Pose2D"),
-        field("speed_mps", F::float64), field("turn_rate_dps", F::float64)}},
+        field("speed_mps", F::float64), field("turn_rate_dps", F::float64),
+        field("held", F::int32)}},
       {"ballsight_msgs/msg/RobotReply",
        {header, field("client", F::string), field("request", F::uint64), field("ok", F::boolean),
         field("error", F::string), field("collected", F::int32), field("time_s", F::float64),
-        nested("odometry", "geometry_msgs/msg/Pose2D")}},
+        nested("odometry", "geometry_msgs/msg/Pose2D"), field("held", F::int32)}},
   };
 }
 

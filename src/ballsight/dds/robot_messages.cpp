@@ -25,6 +25,7 @@ NavigationUpdateMsg navigation_update_message(const NavigationUpdate& update,
   fill_points(message.balls, balls, arena, ball_radius_m);
   fill_points(message.visits, update.route.visits_m, arena);
   fill_points(message.waypoints, update.route.waypoints_m, arena);
+  message.unload_first = update.route.unloads_first();
   return message;
 }
 
@@ -40,6 +41,7 @@ LinkUpdate link_update_from_message(const NavigationUpdateMsg& message) {
   out.balls_m = points_from_message(message.balls);
   out.visits_m = points_from_message(message.visits);
   out.waypoints_m = points_from_message(message.waypoints);
+  out.unload_first = message.unload_first;
   return out;
 }
 
@@ -50,6 +52,7 @@ RobotReportMsg report_message(ReportKind kind, const std::string& client, std::u
   message.client = arena.text(client);
   message.request = request;
   message.kind = static_cast<std::uint8_t>(kind);
+  message.held = -1;
   return message;
 }
 

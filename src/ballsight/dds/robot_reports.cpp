@@ -52,6 +52,9 @@ nlohmann::json RobotReports::apply(const RobotReportMsg& report) {
               "more than " + std::to_string(kMaxReportPoints) + " balls");
       const std::vector<Vec2> balls = points_from_message(report.points);
       check_inside(balls, context_.area, "report.points");
+      require(report.held >= -1 && report.held <= 1000, "report.held",
+              "expected the balls in the basket, 0 to 1000 (-1: not said)");
+      if (report.held >= 0) context_.hub.set_basket(report.held);
       context_.hub.add_collected(balls);
       if (context_.on_collected) context_.on_collected();
       return {};
@@ -90,6 +93,7 @@ void RobotReports::answer(const RobotReportMsg& report) {
   if (done.is_object()) {  // the wheels' answer
     reply.collected = done.value("collected", 0);
     reply.time_s = done.value("time_s", 0.0);
+    reply.held = done.value("held", 0);
     // Not a pose: none carried (the robot keeps its prediction).
     if (const std::optional<Pose2D> odometry = json_pose_if_any(done, "odometry")) {
       reply.odometry = pose_2d_message(*odometry);

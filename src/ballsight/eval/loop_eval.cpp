@@ -48,6 +48,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   options.planner.kind = system.planner;
   options.lockstep = true;
   options.robot = robot.body;
+  options.capacity = robot.capacity;
   SimulatedCourtService service(options);
   NavigationHub hub;
   const std::unique_ptr<RobotLink> link = connect(service, hub);
@@ -57,6 +58,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   std::atomic<bool> robot_done{false};
   CollectorOptions collector;
   collector.latency_s = robot.steer_ahead_s;
+  collector.unload_m = service.site().unload_point();
   CollectorResult driven;
   std::thread driver([&] {
     driven = run_collector(*link, collector, stop);
@@ -92,7 +94,8 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
           score.blocked_ticks,
           driven.dead_reckoned,
           driven.guarded,
-          score.min_clearance_m};
+          score.min_clearance_m,
+          score.unloads};
 }
 
 void LoopEvalOptions::validate() const {
@@ -101,6 +104,8 @@ void LoopEvalOptions::validate() const {
           "need 1 <= min <= max <= 200");
   require(std::isfinite(max_time_s) && max_time_s > 0.0, "--max-time", "must be positive");
   robot.body.validate();
+  require(!robot.capacity || (*robot.capacity >= 1 && *robot.capacity <= 1000), "--capacity",
+          "must be 1 to 1000 balls");
   require(std::isfinite(robot.steer_ahead_s) && robot.steer_ahead_s >= 0.0 &&
               robot.steer_ahead_s <= 5.0,
           "steer_ahead_s", "must be in [0, 5] s");
@@ -182,7 +187,8 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
                       {"contacts", r->contacts},
                       {"dead_reckoned", r->dead_reckoned},
                       {"guarded", r->guarded},
-                      {"min_clearance_m", r->min_clearance_m}});
+                      {"min_clearance_m", r->min_clearance_m},
+                      {"unloads", r->unloads}});
     }
     const double n = static_cast<double>(list.size());
     nlohmann::json s{

@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,7 @@ struct LoopRun {
                           // estimate (robot/pose_tracker.hpp)
   int guarded = 0;        // commands the robot's local planner slowed, replaced or stopped
   double min_clearance_m = 0.0;  // the body's nearest approach to the net or the fence (truth)
+  int unloads = 0;               // times the basket was emptied at the unload point (truth)
 };
 
 /// How the robot reaches the service in a run: a link to `service`'s updates in `hub` that owns
@@ -78,6 +80,7 @@ using RobotConnector =
 struct LoopRobot {
   sim::RobotImperfections body;
   double steer_ahead_s = 0.0;
+  std::optional<int> capacity;  // its basket's balls, if not the site's default (60)
 };
 
 /// One scene, one system, until every ball is collected or `max_time_s` of simulated time.

@@ -50,9 +50,7 @@ Vec2 field_point(const json& object, const std::string& where, const FieldRect& 
 }
 
 /// The body {"balls": [{"x_m", "y_m"}, ...]}, every ball inside `area`.
-std::vector<Vec2> ball_list(const ApiRequest& request, const FieldRect& area) {
-  const json body = parse_body(request.body);
-  only_keys(body, {"balls"}, "body");
+std::vector<Vec2> ball_list(const json& body, const FieldRect& area) {
   const auto list = body.find("balls");
   if (list == body.end() || !list->is_array()) api_fail(400, "expected a list", "body.balls");
   std::vector<Vec2> balls;
@@ -130,7 +128,9 @@ ApiResponse robot_route(const ApiRequest& request, const std::string&, const Api
 ApiResponse balls_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
   if (request.method == "PUT") {
     require_write(request);
-    c.hub.set_balls(ball_list(request, c.area));
+    const json body = parse_body(request.body);
+    only_keys(body, {"balls"}, "body");
+    c.hub.set_balls(ball_list(body, c.area));
     return ok({{"ok", true}});
   }
   json out = json::array();
@@ -227,10 +227,17 @@ ApiResponse collected_route(const ApiRequest& request, const std::string&, const
   const json body = parse_body(request.body);
   std::vector<Vec2> positions;
   if (body.contains("ids")) {
-    only_keys(body, {"seq", "ids"}, "body");
+    only_keys(body, {"seq", "ids", "held"}, "body");
     positions = balls_by_id(body, c.hub);
   } else {
-    positions = ball_list(request, c.area);
+    only_keys(body, {"balls", "held"}, "body");
+    positions = ball_list(body, c.area);
+  }
+  if (const auto held = body.find("held"); held != body.end()) {
+    if (!held->is_number_integer() || *held < 0 || *held > 1000) {
+      api_fail(400, "expected the balls in the basket, an integer 0 to 1000", "body.held");
+    }
+    c.hub.set_basket(held->get<int>());
   }
   c.hub.add_collected(positions);
   if (c.on_collected) c.on_collected();

@@ -342,10 +342,11 @@ bool HttpRobotLink::acknowledge(std::uint64_t seq) {
   return impl_->call(http::verb::post, "/api/v1/navigation/ack", {{"seq", seq}}).has_value();
 }
 
-bool HttpRobotLink::report_collected(const std::vector<Vec2>& positions) {
-  json balls = json::array();
-  for (const Vec2& p : positions) balls.push_back({{"x_m", p.x()}, {"y_m", p.y()}});
-  return impl_->call(http::verb::post, "/api/v1/collected", {{"balls", balls}}).has_value();
+bool HttpRobotLink::report_collected(const std::vector<Vec2>& positions, std::optional<int> held) {
+  json body = {{"balls", json::array()}};
+  for (const Vec2& p : positions) body["balls"].push_back({{"x_m", p.x()}, {"y_m", p.y()}});
+  if (held) body["held"] = *held;
+  return impl_->call(http::verb::post, "/api/v1/collected", body).has_value();
 }
 
 bool HttpRobotLink::set_pose(const Pose2D& pose) {

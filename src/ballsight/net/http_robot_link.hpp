@@ -54,7 +54,7 @@ class HttpRobotLink : public RobotLink {
   /// POST /api/v1/navigation/ack.
   bool acknowledge(std::uint64_t seq) override;
   /// POST /api/v1/collected with the balls' positions.
-  bool report_collected(const std::vector<Vec2>& positions) override;
+  bool report_collected(const std::vector<Vec2>& positions, std::optional<int> held) override;
   /// PUT /api/v1/robot.
   bool set_pose(const Pose2D& pose) override;
   /// PUT /api/v1/sim/drive.

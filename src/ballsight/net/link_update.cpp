@@ -56,6 +56,10 @@ LinkUpdate parse_link_update(const json& u) {
           "update.route", "expected waypoints_m and visits_m");
   out.waypoints_m = points(route["waypoints_m"], "update.route.waypoints_m");
   out.visits_m = points(route["visits_m"], "update.route.visits_m");
+  if (const auto unloads = route.find("unload_after"); unloads != route.end()) {
+    require(unloads->is_array(), "update.route.unload_after", "expected a list of integers");
+    out.unload_first = !unloads->empty() && unloads->front() == -1;
+  }
   return out;
 }
 

@@ -24,7 +24,10 @@ const nlohmann::json& openapi_document() {
       "Drive": {"type": "object", "required": ["seq", "speed_mps", "turn_rate_dps"], "additionalProperties": false,
                 "properties": {"seq": {"type": "integer", "minimum": 0}, "speed_mps": {"type": "number"}, "turn_rate_dps": {"type": "number", "description": "counter-clockwise"}}},
       "BallIds": {"type": "object", "required": ["seq", "ids"], "additionalProperties": false,
-                  "properties": {"seq": {"type": "integer", "minimum": 1}, "ids": {"type": "array", "items": {"type": "integer", "minimum": 0}}}},
+                  "properties": {"seq": {"type": "integer", "minimum": 1}, "ids": {"type": "array", "items": {"type": "integer", "minimum": 0}}, "held": {"$ref": "#/components/schemas/Held"}}},
+      "CollectedBalls": {"type": "object", "required": ["balls"], "additionalProperties": false,
+                         "properties": {"balls": {"type": "array", "items": {"$ref": "#/components/schemas/Point"}}, "held": {"$ref": "#/components/schemas/Held"}}},
+      "Held": {"type": "integer", "minimum": 0, "maximum": 1000, "description": "balls in the robot's basket now"},
       "Ack": {"type": "object", "required": ["seq"], "additionalProperties": false,
               "properties": {"seq": {"type": "integer", "minimum": 0, "description": "an update published already (else 409)"}}},
       "Update": {"type": "object", "required": ["seq", "service_id", "capture_time_ns", "published_ns", "world", "route"],
@@ -62,8 +65,8 @@ const nlohmann::json& openapi_document() {
                "responses": {"200": {"description": "acknowledged"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "409": {"description": "not published"}}}
     },
     "/api/v1/collected": {
-      "post": {"summary": "Balls the robot picked up, as positions {\"balls\": [...]} or as indices into an update's world model {\"seq\": N, \"ids\": [...]}: they leave the plan at once (re-planned and published), until the cameras confirm them gone", "security": [{"bearer": []}],
-               "requestBody": {"required": true, "content": {"application/json": {"schema": {"oneOf": [{"$ref": "#/components/schemas/Balls"}, {"$ref": "#/components/schemas/BallIds"}]}}}},
+      "post": {"summary": "Balls the robot picked up, as positions {\"balls\": [...]} or as indices into an update's world model {\"seq\": N, \"ids\": [...]}: they leave the plan at once (re-planned and published), until the cameras confirm them gone. Either may carry \"held\": the balls in the robot's basket now (0 after emptying it; the route plans the unload trips with it)", "security": [{"bearer": []}],
+               "requestBody": {"required": true, "content": {"application/json": {"schema": {"oneOf": [{"$ref": "#/components/schemas/CollectedBalls"}, {"$ref": "#/components/schemas/BallIds"}]}}}},
                "responses": {"200": {"description": "accepted"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "409": {"description": "that update is not kept"}, "422": {"description": "outside the field, or no such ball"}}}
     },
     "/api/v1/sim/drive": {

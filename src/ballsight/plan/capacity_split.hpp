@@ -10,10 +10,18 @@
 
 namespace ballsight {
 
-/// Cuts `path` (node 0 first, then the places with balls) into trips of at most `capacity` balls,
-/// `load[node]` balls picked up at each node (each at most `capacity`); returns the path with
-/// `unload` inserted after each trip, the last one included.
+/// How the basket stands when the route begins.
+struct Basket {
+  int capacity = 1;
+  int held = 0;            // balls in it now: the first trip has room for capacity - held
+  bool close_last = true;  // the last trip too ends at the unload point
+};
+
+/// Cuts `path` (node 0 first, then the places with balls) into trips of at most
+/// `basket.capacity` balls, `load[node]` balls picked up at each node (each at most the
+/// capacity); returns the path with `unload` inserted after each trip (the last one only with
+/// `close_last`), and first of all when the basket has no room for the first place's balls.
 std::vector<int> split_into_trips(const TravelModel& model, const std::vector<int>& path,
-                                  const std::vector<int>& load, int capacity, int unload);
+                                  const std::vector<int>& load, const Basket& basket, int unload);
 
 }  // namespace ballsight

@@ -10,19 +10,24 @@ namespace ballsight {
 namespace {
 
 /// Drives to the target `choose` picks among the remaining balls, collecting what the leg sweeps
-/// while the basket has room, unloading when it is full and at the end, until none remain.
+/// while the basket has room, unloading when it is full (and at the end, if the basket says so),
+/// until none remain.
 std::vector<RouteStop> drive_greedily(
     const PlanningProblem& problem, std::vector<int> remaining,
     const std::function<int(const Pose2D&, const std::vector<int>&)>& choose) {
   std::vector<RouteStop> stops;
   Pose2D pose = problem.robot;
-  int in_basket = 0;
+  int in_basket = problem.capacity ? problem.capacity->held : 0;
   const auto go_to = [&](const Vec2& to, int ball) {
     const Drive d = drive(problem, pose, to);
     pose = {to, d.arrive_heading_rad};
     stops.push_back({to, ball});
   };
   while (!remaining.empty()) {
+    if (problem.capacity && in_basket == problem.capacity->balls) {
+      go_to(problem.capacity->unload_m, -1);
+      in_basket = 0;
+    }
     const int target = choose(pose, remaining);
     const Vec2& ball = problem.balls[static_cast<std::size_t>(target)];
     const Vec2 visit = problem.court ? problem.court->approach_point(ball) : ball;
@@ -39,9 +44,8 @@ std::vector<RouteStop> drive_greedily(
       std::erase(remaining, s.ball);
     }
     go_to(visit, target);
-    if (problem.capacity && (in_basket == problem.capacity->balls || remaining.empty())) {
+    if (problem.capacity && problem.capacity->unload_at_end && remaining.empty()) {
       go_to(problem.capacity->unload_m, -1);
-      in_basket = 0;
     }
   }
   return stops;

@@ -204,7 +204,9 @@ std::vector<Visit> searched_visits(const PlanningProblem& problem, const std::ve
       search.improve(path, how);
     }
     if (problem.capacity) {
-      path = split_into_trips(model, path, nodes.load, problem.capacity->balls, nodes.unload_node);
+      const Capacity& c = *problem.capacity;
+      path = split_into_trips(model, path, nodes.load, {c.balls, c.held, c.unload_at_end},
+                              nodes.unload_node);
     }
   }
   std::vector<Visit> visits;

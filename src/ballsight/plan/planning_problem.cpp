@@ -69,6 +69,9 @@ void PlanningProblem::validate() const {
   }
   if (capacity) {
     require(capacity->balls >= 1, "capacity", "must be at least 1 ball");
+    require(capacity->held >= 0 && capacity->held <= capacity->balls, "capacity",
+            "holds 0 to " + std::to_string(capacity->balls) + " balls, not " +
+                std::to_string(capacity->held));
     require(capacity->unload_m.allFinite(), "unload point", "must be finite");
     if (court) {
       require(court->in_area(capacity->unload_m) && !court->in_net_zone(capacity->unload_m),

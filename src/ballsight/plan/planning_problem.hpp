@@ -25,10 +25,14 @@ struct RobotLimits {
   void validate() const;
 };
 
-/// A basket that holds `balls` balls, emptied at `unload_m`: visited when full and at the end.
+/// A basket that holds `balls` balls, emptied at `unload_m`: visited when full (or before, when
+/// the next place's balls would not fit) and, with `unload_at_end`, at the end. It holds `held`
+/// balls when the route begins.
 struct Capacity {
   int balls = 0;
   Vec2 unload_m = Vec2::Zero();
+  int held = 0;
+  bool unload_at_end = true;
 };
 
 inline constexpr std::size_t kMaxBalls = 2000;  // a court holds a few hundred
@@ -102,6 +106,9 @@ struct Route {
   double length_m = 0.0;
   double time_s = 0.0;
   double plan_ms = 0.0;
+
+  /// The route empties the basket before its next ball (unload_after begins with -1).
+  bool unloads_first() const { return !unload_after.empty() && unload_after.front() == -1; }
 };
 
 }  // namespace ballsight

@@ -14,6 +14,10 @@ namespace {
 
 constexpr double kUpdatePeriodS = 0.1;  // the cameras' 10 Hz, until the court's clock tells
 
+Vec2 mouth_of(const Pose2D& p, double ahead_m) {
+  return p.position + ahead_m * Vec2(std::cos(p.heading_rad), std::sin(p.heading_rad));
+}
+
 }  // namespace
 
 FollowerOptions follower_for_site(const Site& site) {
@@ -49,6 +53,9 @@ void CollectorOptions::validate() const {
   require(std::isfinite(max_time_s) && max_time_s >= 0.0, "max_time_s", "must not be negative");
   require(std::isfinite(latency_s) && latency_s >= 0.0 && latency_s <= 5.0, "latency_s",
           "must be in [0, 5] s");
+  require(unload_m.allFinite(), "unload_m", "must be finite");
+  require(std::isfinite(unload_reach_m) && unload_reach_m > 0.0, "unload_reach_m",
+          "must be positive");
   progress.validate();
   pose.validate();
 }
@@ -71,6 +78,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   double period_s = kUpdatePeriodS;  // between the last two frame sets, on the court's clock
   bool sim_clock = false;            // the simulated court tells its time: stalls are timed on it
   CollectorResult result;
+  int held = 0;  // balls in the basket, as the collector's sensor counts them
   int empty = 0;
   const auto started = std::chrono::steady_clock::now();
   while (!stop) {
@@ -107,13 +115,22 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
           sim_clock
               ? result.sim_time_s
               : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-      const std::optional<FollowCommand> freeing = recovery.step(*pose, now_s, !u->balls_m.empty());
+      // The route empties the basket first, and the mouth is over the unload point: it stands
+      // until the basket is empty (no stall: it is working).
+      const bool unloading =
+          u->unload_first && held > 0 &&
+          (mouth_of(*pose, options.follow.mouth_ahead_m) - options.unload_m).norm() <=
+              options.unload_reach_m;
+      const std::optional<FollowCommand> freeing =
+          recovery.step(*pose, now_s, !u->balls_m.empty() && !unloading);
       // Steered from where the robot will be when the command acts.
       const Pose2D acting =
           options.latency_s > 0.0
               ? along_arc(*pose, in_flight.speed_mps, in_flight.turn_rate_rps, options.latency_s)
               : *pose;
-      const FollowCommand wanted = freeing ? *freeing : follower.command(acting);
+      const FollowCommand wanted = unloading ? FollowCommand{}
+                                   : freeing ? *freeing
+                                             : follower.command(acting);
       const GuardedCommand guarded =
           local.guard(acting, wanted, follower.carrot(), options.follow.mouth_ahead_m);
       command = guarded.command;
@@ -143,12 +160,17 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
       ++result.dead_reckoned;
     }
     const int taken = drove ? drove->value("collected", 0) : 0;
+    // The basket: as the court's sensor says, else counted.
+    const int was_held = held;
+    held = drove && drove->contains("held") ? drove->value("held", 0) : held + taken;
+    if (held < was_held + taken) ++result.unloads;
     if (taken > 0 && pose) {
-      const Pose2D& p = *pose;
-      const Vec2 mouth = p.position + options.follow.mouth_ahead_m *
-                                          Vec2(std::cos(p.heading_rad), std::sin(p.heading_rad));
-      link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken), mouth));
+      link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken),
+                                              mouth_of(*pose, options.follow.mouth_ahead_m)),
+                            held);
       result.collected += taken;
+    } else if (held != was_held) {
+      link.report_collected({}, held);
     }
     link.acknowledge(u->seq);  // last: the update is dealt with, its collected balls reported
     if (progress && result.updates % 100 == 0) {

@@ -6,7 +6,10 @@
 // mouth). It knows only what the service sends and its wheels' odometry, by which it carries its
 // pose on where the cameras do not see it (pose_tracker.hpp), and tells the service that pose. A
 // robot with balls left that makes no progress frees itself (progress_recovery.hpp), on the
-// simulated court's clock when it drives there, else on its own.
+// simulated court's clock when it drives there, else on its own. Its basket: when the route
+// empties it first (the basket is full, or the next balls would not fit), the robot drives to
+// the unload point and stands there, mouth over it, until the basket is empty; it tells the
+// service how many balls its basket holds with every report (the simulated court's answer says).
 
 #include <atomic>
 #include <cstdint>
@@ -44,6 +47,8 @@ struct CollectorOptions {
   double latency_s = 0.0;
   ProgressOptions progress;  // when it is stalled and how it frees itself
   PoseTrackerOptions pose;   // how far it drives on its own estimate out of the cameras' sight
+  Vec2 unload_m = Site{}.unload_point();  // where the basket is emptied (the site's)
+  double unload_reach_m = 0.3;  // the mouth this near it: the robot stands to empty the basket
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -57,6 +62,7 @@ struct CollectorResult {
   int dead_reckoned = 0;  // frame sets on which the cameras did not see it and it drove on its
                           // own estimate (pose_tracker.hpp)
   int guarded = 0;        // commands the local planner slowed, replaced or stopped
+  int unloads = 0;        // times it emptied its basket
   std::uint64_t gaps = 0;
   int reconnects = 0;
   double sim_time_s = 0.0;  // the simulated court's clock at the last command

@@ -26,6 +26,7 @@ struct LinkUpdate {
   std::vector<Vec2> balls_m;
   std::vector<Vec2> visits_m;     // where the collector passes, in order
   std::vector<Vec2> waypoints_m;  // the path to drive
+  bool unload_first = false;      // the route empties the basket before its next ball
 };
 
 struct LinkStatus {
@@ -49,10 +50,13 @@ class RobotLink {
 
   /// These return false (and set last_error) when the service could not be reached or refused.
   virtual bool acknowledge(std::uint64_t seq) = 0;
-  virtual bool report_collected(const std::vector<Vec2>& positions) = 0;
+  /// Balls collected at `positions`, and the balls the basket holds now when `held` says (0
+  /// after emptying it, with no positions).
+  virtual bool report_collected(const std::vector<Vec2>& positions, std::optional<int> held) = 0;
   virtual bool set_pose(const Pose2D& pose) = 0;
   /// The simulated court only: the wheels' command for update `seq` (speed m/s, turn rate deg/s,
-  /// counter-clockwise); answers {"collected", "time_s", "odometry"}, nullopt when refused.
+  /// counter-clockwise); answers {"collected", "held", "time_s", "odometry"}, nullopt when
+  /// refused.
   virtual std::optional<nlohmann::json> drive_simulated(std::uint64_t seq, double speed_mps,
                                                         double turn_rate_dps) = 0;
 

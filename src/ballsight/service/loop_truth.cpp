@@ -26,6 +26,8 @@ TruthTick tick_of(const json& j, const std::string& where) {
   t.world.collected = j.at("collected").get<std::vector<int>>();
   t.world.balls_left = j.at("balls_left").get<int>();
   t.world.blocked = j.at("blocked").get<bool>();
+  t.world.held = j.value("held", 0);  // absent from records written before the basket
+  t.world.unloaded = j.value("unloaded", false);
   t.seq = j.at("seq").get<std::uint64_t>();
   t.command.speed_mps = j.at("command").at("speed_mps").get<double>();
   t.command.turn_rate_rps = rad_from_deg(j.at("command").at("turn_rate_dps").get<double>());
@@ -61,6 +63,8 @@ json tick_record(const TruthTick& t) {
           {"collected", t.world.collected},
           {"balls_left", t.world.balls_left},
           {"blocked", t.world.blocked},
+          {"held", t.world.held},
+          {"unloaded", t.world.unloaded},
           {"published",
            {{"robot", t.published.robot ? pose_json(*t.published.robot) : json(nullptr)},
             {"balls_seen", t.published.balls_seen},
@@ -147,6 +151,7 @@ LoopScore score_loop(int balls, const Pose2D& start, const std::vector<sim::Worl
     last = t.robot.position;
     score.collected += static_cast<int>(t.collected.size());
     score.blocked_ticks += t.blocked ? 1 : 0;
+    score.unloads += t.unloaded ? 1 : 0;
     score.min_clearance_m =
         std::min(score.min_clearance_m, sim::footprint_clearance(footprint, t.robot, court));
     score.never_overlapped = score.never_overlapped && score.min_clearance_m > 0.0;

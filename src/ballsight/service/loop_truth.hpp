@@ -4,7 +4,8 @@
 // "robot": {"x_m", "y_m", "heading_deg"}}. Then one line per vision tick: {"kind": "tick",
 // "time_s", "seq" (the update published from the tick's frames, 0: none), "robot" (true pose
 // after the tick), "command": {"speed_mps", "turn_rate_dps"}, "collected": [ball ids],
-// "balls_left", "blocked", "published": {"robot" (as the cameras saw it, or null), "balls_seen",
+// "balls_left", "blocked", "held" (balls in the basket after it), "unloaded" (the basket was
+// emptied in it), "published": {"robot" (as the cameras saw it, or null), "balls_seen",
 // "waypoints_m"}, "removed_by_hand": [ball ids]}. And events as they happen: {"kind": "event",
 // "time_s", "what"} (the service started or resumed, a camera failed). A restarted service resumes
 // the court from this record.
@@ -81,6 +82,7 @@ struct LoopScore {
   bool all = false;
   bool never_overlapped = true;
   int blocked_ticks = 0;              // ticks in which the net or the fence stopped the robot
+  int unloads = 0;                    // times the basket was emptied
   double min_clearance_m = INFINITY;  // the body's nearest approach to them over the run
 };
 

@@ -150,6 +150,11 @@ void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
   keep_newest(for_hand_, kMaxCollected);
 }
 
+void NavigationHub::set_basket(int held) {
+  const std::lock_guard lock(mutex_);
+  basket_ = External<int>{held, utc_now_ns()};
+}
+
 std::vector<Vec2> NavigationHub::take_for_hand() {
   const std::lock_guard lock(mutex_);
   return std::exchange(for_hand_, {});
@@ -183,7 +188,7 @@ std::vector<bool> taken_by_reports(const std::vector<Vec2>& balls,
 
 ClientReports NavigationHub::reports() const {
   const std::lock_guard lock(mutex_);
-  return {robot_, balls_, positions(collected_)};
+  return {robot_, balls_, positions(collected_), basket_};
 }
 
 void NavigationHub::frames_fused(std::int64_t capture_ns) {

@@ -47,6 +47,8 @@ struct ClientReports {
   /// Where the robot reported balls collected that no frames captured since have been fused
   /// into a world model (the frames before the report may still show them).
   std::vector<Vec2> collected;
+  /// The balls in the robot's basket, as it last reported them (none reported: empty).
+  std::optional<External<int>> basket;
 };
 
 /// A ball reported collected is a ball seen this close to where it was reported.
@@ -102,6 +104,9 @@ class NavigationHub {
   /// model of frames captured after the report is made. At most kMaxCollected are kept (the
   /// oldest go first).
   void add_collected(const std::vector<Vec2>& positions);
+  /// The balls the robot's basket holds now (it reports them with its collected balls, and 0
+  /// after emptying it).
+  void set_basket(int held);
   std::vector<Vec2> collected() const;
   /// The robot pose, ball list and collected balls clients reported, as one consistent value.
   ClientReports reports() const;
@@ -129,6 +134,7 @@ class NavigationHub {
   std::optional<External<Pose2D>> robot_;
   std::optional<External<std::vector<Vec2>>> balls_;
   std::vector<External<Vec2>> collected_;
+  std::optional<External<int>> basket_;
   std::vector<Vec2> for_hand_;
 };
 

@@ -53,6 +53,7 @@ void SimulatedServiceOptions::validate() const {
 struct SimulatedCourtService::Impl {
   SimulatedServiceOptions options;
   std::unique_ptr<SimulatedCourt> court;
+  Site site;  // the court's, with the options' basket
   std::unique_ptr<sim::CourtWorld> world;
   std::unique_ptr<UpdatePublisher> publisher;
   std::atomic<double> render_ms{0.0};
@@ -64,7 +65,7 @@ struct SimulatedCourtService::Impl {
   sim::DriveCommand command;
   std::optional<Clock::time_point> last_command;
   int unreported = 0;  // balls collected since the robot's last command
-  int collected = 0, blocked_ticks = 0, balls_left = 0;
+  int collected = 0, blocked_ticks = 0, balls_left = 0, held = 0;
   double time_s = 0.0;
   Pose2D robot;
   Pose2D odometry;  // the wheels' (sim::WorldTick::odometry)
@@ -94,7 +95,9 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   s.options = options;
   s.court = std::make_unique<SimulatedCourt>(
       SimulatedCourtOptions{options.seed, options.balls, options.cluster_share, options.layout});
-  const Site& site = s.court->site();
+  s.site = s.court->site();
+  if (options.capacity) s.site.robot.capacity = *options.capacity;
+  const Site& site = s.site;
   sim::CourtScene scene = s.court->scene();
   for (const sim::SceneSphere& b : scene.balls) {
     if (b.kind == sim::ObjectKind::tennis_ball) {
@@ -120,8 +123,9 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
       sim::RobotFootprint::of(scene.robot, site.robot.collector_x_m, site.robot.collector_width_m);
   sim::RobotImperfections imperfections = options.robot;
   imperfections.seed = options.seed;
+  const sim::CollectorBasket basket{site.robot.capacity, site.unload_point(), site.robot.unload_s};
   s.world = std::make_unique<sim::CourtWorld>(std::move(scene), s.court->rig().court, limits,
-                                              footprint, imperfections);
+                                              footprint, imperfections, basket);
   if (s.resumed && !s.resumed->ticks.empty()) {
     std::vector<int> gone;
     for (const TruthTick& t : s.resumed->ticks) {
@@ -129,7 +133,8 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
       gone.insert(gone.end(), t.removed_by_hand.begin(), t.removed_by_hand.end());
     }
     const TruthTick& last = s.resumed->ticks.back();
-    s.world->resume(last.world.time_s, last.world.robot, gone);
+    s.world->resume(last.world.time_s, last.world.robot, gone, last.world.held);
+    s.held = last.world.held;
     s.collected = static_cast<int>(gone.size());
     s.time_s = last.world.time_s;
     s.camera_failed = s.failed_cameras(s.time_s);  // recorded as they were
@@ -149,7 +154,7 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
 SimulatedCourtService::~SimulatedCourtService() = default;
 
 const Site& SimulatedCourtService::site() const {
-  return impl_->court->site();
+  return impl_->site;
 }
 
 nlohmann::json SimulatedCourtService::drive(std::uint64_t seq, double speed_mps,
@@ -161,8 +166,10 @@ nlohmann::json SimulatedCourtService::drive(std::uint64_t seq, double speed_mps,
     s.command_seq = std::max(s.command_seq, seq);
     s.command = {speed_mps, turn_rate_rps};
     s.last_command = Clock::now();
-    answer = {
-        {"collected", s.unreported}, {"time_s", s.time_s}, {"odometry", pose_json(s.odometry)}};
+    answer = {{"collected", s.unreported},
+              {"held", s.held},
+              {"time_s", s.time_s},
+              {"odometry", pose_json(s.odometry)}};
     s.unreported = 0;
   }
   s.commanded.notify_all();
@@ -223,9 +230,9 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
     }
     for (std::size_t k = 0; k < failed.size(); ++k) {
       if (failed[k] == was[k]) continue;
-      record(event_record({s.world->time_s(), s.court->site().cameras[k].name +
-                                                  (failed[k] ? " failed: no more frames"
-                                                             : " returned: frames again")}));
+      record(event_record(
+          {s.world->time_s(), s.site.cameras[k].name + (failed[k] ? " failed: no more frames"
+                                                                  : " returned: frames again")}));
     }
     cv::parallel_for_(cv::Range(0, static_cast<int>(frames.size())), [&](const cv::Range& r) {
       for (int c = r.start; c < r.end; ++c) {
@@ -263,6 +270,7 @@ void SimulatedCourtService::run(NavigationHub& hub, const std::atomic<bool>& sto
       s.unreported += static_cast<int>(t.collected.size());
       s.collected += static_cast<int>(t.collected.size());
       s.blocked_ticks += t.blocked ? 1 : 0;
+      s.held = t.held;
       s.balls_left = t.balls_left;
       s.time_s = t.time_s;
       s.robot = t.robot;
@@ -313,8 +321,8 @@ nlohmann::json SimulatedCourtService::health() const {
   nlohmann::json h = s.publisher->health();
   nlohmann::json cameras = nlohmann::json::array();
   const std::lock_guard lock(s.mutex);
-  for (std::size_t k = 0; k < s.court->site().cameras.size(); ++k) {
-    cameras.push_back({{"name", s.court->site().cameras[k].name},
+  for (std::size_t k = 0; k < s.site.cameras.size(); ++k) {
+    cameras.push_back({{"name", s.site.cameras[k].name},
                        {"state", s.camera_failed[k] ? "failed" : "simulated"},
                        {"frames", h["frame_sets"]}});
   }
@@ -323,6 +331,7 @@ nlohmann::json SimulatedCourtService::health() const {
   h["sim"] = {{"time_s", s.time_s},
               {"balls_left", s.balls_left},
               {"collected", s.collected},
+              {"held", s.held},
               {"robot", pose_json(s.robot)},
               {"driving", s.driving(Clock::now())},
               {"blocked_ticks", s.blocked_ticks}};

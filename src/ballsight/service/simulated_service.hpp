@@ -54,6 +54,7 @@ struct SimulatedServiceOptions {
   bool report_pipeline = false;              // the report's court pipeline instead of ballsight's
   PlannerOptions planner;
   sim::RobotImperfections robot;  // the simulated collector's latency and slip (its seed: seed's)
+  std::optional<int> capacity;    // the basket's balls (site.yml's robot.capacity), if not 60
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -70,13 +71,14 @@ class SimulatedCourtService : public CourtService {
   /// drive(), for the API's PUT /api/v1/sim/drive.
   SimulatedDrive simulated_drive() override;
   /// {"cameras": [{"name", "state": "simulated", "frames"}], "render_ms", "sim": {"time_s",
-  /// "balls_left", "collected", "robot", "driving", "blocked_ticks"}, and the figures of
+  /// "balls_left", "collected", "held", "robot", "driving", "blocked_ticks"}, and the figures of
   /// UpdatePublisher::health()}.
   nlohmann::json health() const override;
 
   /// The robot's command for the update `seq` (speed m/s, turn rate rad/s, counter-clockwise):
   /// it drives the next vision period. Returns {"collected": balls its collector took since its
-  /// previous command (the collector's sensor), "time_s": simulated time}. Any thread.
+  /// previous command (the collector's sensor), "held": balls in its basket, "time_s": simulated
+  /// time, "odometry": the wheels' pose}. Any thread.
   nlohmann::json drive(std::uint64_t seq, double speed_mps, double turn_rate_rps);
 
   /// Where the robot stood when this service began (or resumed).

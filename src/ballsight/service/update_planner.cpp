@@ -44,7 +44,15 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
   }
   PlannerOptions planner = options;
   planner.previous = previous;
-  update.route = plan(site_planning_problem(site, *robot, std::move(left)), planner);
+  PlanningProblem problem = site_planning_problem(site, *robot, std::move(left));
+  // The basket matters when the balls left outnumber its room: then the route plans its unload
+  // trips, the last one left open (the collection ends at the last ball).
+  const int capacity = site.robot.capacity;
+  const int held = std::clamp(reports.basket ? reports.basket->value : 0, 0, capacity);
+  if (static_cast<int>(problem.balls.size()) > capacity - held) {
+    problem.capacity = Capacity{capacity, site.unload_point(), held, false};
+  }
+  update.route = plan(problem, planner);
   return update;
 }
 

@@ -2,7 +2,9 @@
 // From a world model to the update the service publishes: the route is planned from the robot as
 // the cameras saw it (or as a client set it, if that is newer), over the balls the cameras saw
 // (or a client's list, if newer) less those the robot reported collected, warm-started from the
-// previous route so that the robot's target does not flap.
+// previous route so that the robot's target does not flap. With more balls left than the robot's
+// basket has room for (site robot.capacity, less the balls it reported holding) the route goes
+// to the unload point when the basket is full.
 
 #include <cstdint>
 

@@ -6,12 +6,14 @@
 namespace ballsight::sim {
 
 CourtWorld::CourtWorld(CourtScene scene, const TennisCourtSpec& court, const DriveLimits& limits,
-                       const RobotFootprint& footprint, const RobotImperfections& imperfections)
+                       const RobotFootprint& footprint, const RobotImperfections& imperfections,
+                       const CollectorBasket& basket)
     : scene_(std::move(scene)),
       court_(court),
       limits_(limits),
       footprint_(footprint),
       imperfections_(imperfections),
+      basket_(basket),
       rng_(imperfections.seed) {
   limits_.validate();
   imperfections_.validate();
@@ -24,8 +26,11 @@ int CourtWorld::balls_left() const {
                     [](const SceneSphere& b) { return b.kind == ObjectKind::tennis_ball; }));
 }
 
-void CourtWorld::resume(double time_s, const Pose2D& pose, const std::vector<int>& collected) {
+void CourtWorld::resume(double time_s, const Pose2D& pose, const std::vector<int>& collected,
+                        int held) {
   time_s_ = time_s;
+  held_ = held;
+  standing_s_ = 0.0;
   motion_ = RobotMotion{pose, 0.0, 0.0};
   odometry_ = {};
   pending_.clear();
@@ -34,6 +39,23 @@ void CourtWorld::resume(double time_s, const Pose2D& pose, const std::vector<int
   remove_balls_if([&](const SceneSphere& b) {
     return std::find(collected.begin(), collected.end(), b.id) != collected.end();
   });
+}
+
+bool CourtWorld::unloading_step() {
+  const Vec2 mouth =
+      motion_.pose.position + footprint_.collector_x_m * Vec2(std::cos(motion_.pose.heading_rad),
+                                                              std::sin(motion_.pose.heading_rad));
+  const bool still = std::abs(motion_.speed_mps) < 0.05 && std::abs(motion_.turn_rate_rps) < 0.1;
+  if (basket_.capacity == 0 || held_ == 0 || !still ||
+      (mouth - basket_.unload_m).norm() > basket_.reach_m) {
+    standing_s_ = 0.0;
+    return false;
+  }
+  standing_s_ += kStepS;
+  if (standing_s_ < basket_.unload_s - 1e-9) return false;
+  held_ = 0;
+  standing_s_ = 0.0;
+  return true;
 }
 
 const WorldTick& CourtWorld::advance(const DriveCommand& command, double seconds) {
@@ -62,10 +84,16 @@ const WorldTick& CourtWorld::advance(const DriveCommand& command, double seconds
                           0.5 * (motion_.turn_rate_rps + step.motion.turn_rate_rps), kStepS);
     motion_ = step.motion;
     tick.blocked = tick.blocked || step.blocked;
-    for (int id : collect_swept(scene_, before, motion_.pose, footprint_)) {
+    const std::size_t room = basket_.capacity > 0
+                                 ? static_cast<std::size_t>(std::max(0, basket_.capacity - held_))
+                                 : static_cast<std::size_t>(-1);
+    for (int id : collect_swept(scene_, before, motion_.pose, footprint_, room)) {
       tick.collected.push_back(id);
+      ++held_;
     }
+    if (unloading_step()) tick.unloaded = true;
   }
+  tick.held = held_;
   scene_.robot.pose = motion_.pose;
   time_s_ += steps * kStepS;
   tick.time_s = time_s_;

@@ -22,12 +22,24 @@ struct WorldTick {
   /// The wheels' odometry at its end: the pose the wheels' turns add up to, slip not seen, in
   /// the odometry's own frame (the robot's pose when the world began, or resumed).
   Pose2D odometry;
+  int held = 0;           // balls in the basket at its end
+  bool unloaded = false;  // the basket was emptied during it
+};
+
+/// The collector's basket: it holds `capacity` balls (0: no limit), and is emptied when the
+/// robot has stood still for `unload_s` with its mouth within `reach_m` of `unload_m`.
+struct CollectorBasket {
+  int capacity = 0;
+  Vec2 unload_m = Vec2::Zero();
+  double unload_s = 5.0;
+  double reach_m = 0.5;
 };
 
 class CourtWorld {
  public:
   CourtWorld(CourtScene scene, const TennisCourtSpec& court, const DriveLimits& limits,
-             const RobotFootprint& footprint, const RobotImperfections& imperfections = {});
+             const RobotFootprint& footprint, const RobotImperfections& imperfections = {},
+             const CollectorBasket& basket = {});
 
   const CourtScene& scene() const { return scene_; }
   const RobotMotion& motion() const { return motion_; }
@@ -42,8 +54,10 @@ class CourtWorld {
   /// records and returns the tick.
   const WorldTick& advance(const DriveCommand& command, double seconds);
   /// Continues a run recorded earlier: the clock at `time_s`, the robot standing at `pose`, the
-  /// tennis balls `collected` gone.
-  void resume(double time_s, const Pose2D& pose, const std::vector<int>& collected);
+  /// tennis balls `collected` gone, `held` of them in the basket.
+  void resume(double time_s, const Pose2D& pose, const std::vector<int>& collected, int held);
+  /// Balls in the basket now.
+  int held() const { return held_; }
   /// Removes the tennis balls for which `taken` holds (a hand picking them up, as in the
   /// report's own test); their ids.
   template <class Pred>
@@ -60,11 +74,18 @@ class CourtWorld {
   static constexpr double kStepS = 0.01;
 
  private:
+  /// One step's emptying: the robot still at the unload point with balls in the basket; true
+  /// when the basket was emptied in it.
+  bool unloading_step();
+
   CourtScene scene_;
   TennisCourtSpec court_;
   DriveLimits limits_;
   RobotFootprint footprint_;
   RobotImperfections imperfections_;
+  CollectorBasket basket_;
+  int held_ = 0;
+  double standing_s_ = 0.0;  // at the unload point, still, with balls in the basket
   RobotMotion motion_;
   Pose2D odometry_;
   double time_s_ = 0.0;

@@ -175,7 +175,7 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
 }
 
 std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Pose2D& after,
-                               const RobotFootprint& footprint) {
+                               const RobotFootprint& footprint, std::size_t room) {
   // The ball's place in the robot's frame: ahead of the mouth before, at or behind it after.
   const auto local = [](const Pose2D& pose, const Vec2& p) {
     const Vec2 d = p - pose.position;
@@ -192,8 +192,9 @@ std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Po
     const bool crossed = a.x() > grab && b.x() <= grab;
     const bool inside = b.x() <= grab && b.x() <= a.x() && b.x() > -footprint.back_m &&
                         std::abs(b.y()) <= half;  // e.g. turned onto it on the spot
-    const bool taken = (crossed && std::abs(a.y()) <= half + 0.05 && std::abs(b.y()) <= half) ||
-                       (inside && a.x() > footprint.collector_x_m - 0.05);
+    const bool taken = ids.size() < room &&
+                       ((crossed && std::abs(a.y()) <= half + 0.05 && std::abs(b.y()) <= half) ||
+                        (inside && a.x() > footprint.collector_x_m - 0.05));
     if (taken) ids.push_back(ball.id);
     return taken;
   });

@@ -91,8 +91,10 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
 
 /// Removes from `scene` the tennis balls the collector's mouth reached while the robot moved from
 /// `before` to `after` (forwards, within the mouth's width): the mouth touched the ball (its
-/// centre came within a radius of the mouth's line), as a roller takes it in; their ids.
+/// centre came within a radius of the mouth's line), as a roller takes it in; their ids. At most
+/// `room` are taken (a full basket's collector passes over the rest).
 std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Pose2D& after,
-                               const RobotFootprint& footprint);
+                               const RobotFootprint& footprint,
+                               std::size_t room = static_cast<std::size_t>(-1));
 
 }  // namespace ballsight::sim

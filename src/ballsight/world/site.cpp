@@ -1,5 +1,6 @@
 #include "ballsight/world/site.hpp"
 
+#include <cmath>
 #include <set>
 
 #include "ballsight/core/error.hpp"
@@ -27,6 +28,10 @@ std::string_view camera_source_kind_name(CameraSource::Kind kind) {
 
 Vec3 Site::reference_center_in_field(const ReferenceBall& ball) const {
   return {ball.floor_position_m.x(), ball.floor_position_m.y(), reference_ball_radius_m};
+}
+
+Vec2 Site::unload_point() const {
+  return robot.unload_m.value_or(Vec2(court.area_length_m / 2.0 - 1.5, 0.0));
 }
 
 namespace {
@@ -100,7 +105,7 @@ SiteColours read_colours(YamlMap map) {
   return colours;
 }
 
-SiteRobot read_robot(YamlMap map) {
+SiteRobot read_robot(YamlMap map, const SiteCourt& court) {
   SiteRobot robot;
   read_length(map, "marker_radius_m", robot.marker_radius_m);
   read_length(map, "marker_height_m", robot.marker_height_m);
@@ -110,6 +115,24 @@ SiteRobot read_robot(YamlMap map) {
   read_length(map, "turn_rate_dps", robot.turn_rate_dps);
   read_length(map, "max_accel_mps2", robot.max_accel_mps2);
   read_length(map, "turn_accel_dps2", robot.turn_accel_dps2);
+  if (const auto v = map.find("capacity")) {
+    robot.capacity = v->integer();
+    if (robot.capacity < 1 || robot.capacity > 1000) {
+      v->fail("must be 1 to 1000 balls, got " + v->node().Scalar());
+    }
+  }
+  if (const auto v = map.find("unload_m")) {
+    const std::vector<double> p = v->numbers(2);
+    robot.unload_m = Vec2(p[0], p[1]);
+    const double x = std::abs(p[0]), y = std::abs(p[1]);
+    if (x > court.area_length_m / 2.0 - court.fence_lane_m ||
+        y > court.area_width_m / 2.0 - court.fence_lane_m ||
+        (court.net && x < court.net_travel_clearance_m)) {
+      v->fail("must lie inside the fence's lane and off the net's (unload_m " + fixed(p[0], 2) +
+              ", " + fixed(p[1], 2) + ")");
+    }
+  }
+  read_non_negative(map, "unload_s", robot.unload_s);
   map.finish();
   return robot;
 }
@@ -198,7 +221,7 @@ Site parse_site(std::string_view text, const fs::path& file) {
   read_length(root, "ball_radius_m", site.ball_radius_m);
   read_reference_balls(root.at("reference_balls").map(), site);
   if (const auto v = root.find("colours")) site.colours = read_colours(v->map());
-  if (const auto v = root.find("robot")) site.robot = read_robot(v->map());
+  if (const auto v = root.find("robot")) site.robot = read_robot(v->map(), site.court);
   read_cameras(root.at("cameras"), site, base);
   root.finish();
   return site;

@@ -68,6 +68,12 @@ struct SiteRobot {
   double turn_rate_dps = 90.0;      // turning on the spot
   double max_accel_mps2 = 1.0;      // speeding up and braking
   double turn_accel_dps2 = 360.0;   // turn rate's change
+  /// The basket: balls it holds (a 60-ball hopper: scenes of up to 60 balls never unload), where
+  /// it is emptied (the collector's mouth there; absent: Site::unload_point()'s default) and how
+  /// long emptying takes, the robot standing.
+  int capacity = 60;
+  std::optional<Vec2> unload_m;
+  double unload_s = 5.0;
 };
 
 struct Site {
@@ -82,6 +88,9 @@ struct Site {
 
   /// A reference ball's centre in the field frame (it rests on the floor: z = radius).
   Vec3 reference_center_in_field(const ReferenceBall& ball) const;
+  /// Where the basket is emptied: robot.unload_m, else 1.5 m inside the east fence on the
+  /// court's long axis (behind the baseline, clear of the fence's lane).
+  Vec2 unload_point() const;
 };
 
 /// Parses a site file's text; `file` names it in messages and its folder resolves relative paths.
