@@ -45,12 +45,12 @@ void run_eval_loop(const EvalLoopArgs& args) {
   const std::vector<eval::LoopRun> runs =
       eval::run_loop_eval(options, connect_over_loopback, [](const eval::LoopRun& r) {
         std::fprintf(stderr,
-                     "eval loop: %-18s seed %llu, %s: %d of %d balls in %.1f s, %.1f m, %d "
-                     "stalls, %d ticks in contact, nearest %.3f m, %d frame sets dead "
+                     "eval loop: %-9s seed %llu, %s: %d of %d balls (%d reachable) in %.1f s, "
+                     "%.1f m, %d stalls, %d ticks in contact, nearest %.3f m, %d frame sets dead "
                      "reckoned, %d commands guarded, %d unloads%s\n",
                      r.system.c_str(), static_cast<unsigned long long>(r.seed), r.layout.c_str(),
-                     r.collected, r.balls, r.time_s, r.distance_m, r.stalls, r.contacts,
-                     r.min_clearance_m, r.dead_reckoned, r.guarded, r.unloads,
+                     r.collected, r.balls, r.reachable, r.time_s, r.distance_m, r.stalls,
+                     r.contacts, r.min_clearance_m, r.dead_reckoned, r.guarded, r.unloads,
                      r.never_overlapped ? "" : " (overlapped the net or fence!)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
@@ -79,8 +79,9 @@ void add_eval_loop_command(CLI::App& eval) {
   CLI::App* cmd = eval.add_subcommand(
       "loop",
       "The closed loop on simulated scenes, per system (report: the report's pipeline and "
-      "priority planner; ballsight-priority; ballsight): balls collected, simulated time to "
-      "collect them all, distance driven");
+      "priority planner; priority: ballsight's pipeline with that planner; ballsight): balls "
+      "collected, simulated time to collect them all, distance driven, scene by scene with the "
+      "balls reachable");
   add_seed_option(*cmd, args->options.seed, "Seed of the first scene (scene k: seed + k)");
   cmd->add_option("--scenes", args->options.scenes,
                   "Scenes (ball counts spread over the range; layouts in turn: uniform, clustered, "
@@ -98,7 +99,7 @@ void add_eval_loop_command(CLI::App& eval) {
   cmd->add_option("--max-time", args->options.max_time_s, "Simulated seconds per run at most")
       ->capture_default_str();
   cmd->add_option("--systems", args->systems,
-                  "Comma-separated subset of report,ballsight-priority,ballsight");
+                  "Comma-separated subset of report,priority,ballsight");
   cmd->add_option("--command-latency-ms", args->command_latency_ms,
                   "The simulated robot's wheels act on a command this long after it was sent")
       ->check(CLI::Range(0.0, 1000.0))
@@ -119,8 +120,9 @@ void add_eval_loop_command(CLI::App& eval) {
       ->check(CLI::Range(0.0, 1000.0));
   cmd->add_flag("--json", args->json,
                 "JSON: {\"systems\": {\"<name>\": {\"collected_fraction\", \"time_s_mean\", "
-                "\"distance_m_mean\", \"time_ratio_to_ballsight\", \"runs\"}}, \"wall_clock\": {}} "
-                "(simulated time only: the same every run of a seed)");
+                "\"distance_m_mean\", \"time_ratio_to_ballsight\", \"runs\"}}, \"scenes\": "
+                "[{\"seed\", \"layout\", \"balls\", \"reachable\", \"systems\"}], "
+                "\"wall_clock\": {}} (simulated time only: the same every run of a seed)");
   cmd->callback([args] { run_eval_loop(*args); });
 }
 

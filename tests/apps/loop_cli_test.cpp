@@ -88,6 +88,14 @@ TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {
   EXPECT_TRUE(s["runs"][0]["guarded"].is_number_integer());
   // The body's nearest approach to the net or the fence, from the truth: clear of both.
   EXPECT_GT(s["runs"][0]["min_clearance_m"].get<double>(), 0.0);
+  // Scene by scene: every ball along the fence reachable, all collected, none timed out.
+  ASSERT_EQ(j["scenes"].size(), 1u);
+  const nlohmann::json& scene = j["scenes"][0];
+  EXPECT_EQ(scene["layout"], "along_fence");
+  EXPECT_EQ(scene["reachable"], 6);
+  EXPECT_EQ(scene["systems"]["ballsight"]["collected"], 6);
+  EXPECT_FALSE(scene["systems"]["ballsight"]["timed_out"].get<bool>());
+  EXPECT_GE(scene["systems"]["ballsight"]["recoveries"].get<int>(), 0);
   expect_one_line_error(run_cli({"eval", "loop", "--systems", "magic"}), "--systems");
   expect_one_line_error(run_cli({"eval", "loop", "--layouts", "square"}), "--layouts");
   expect_one_line_error(run_cli({"eval", "loop", "--odometry-drift", "0.9"}), "--odometry-drift");

@@ -48,6 +48,7 @@ TEST(ProgressRecovery, AStalledRobotBacksUpThenFollowsAgain) {
   }
   pose.position -= 0.06 * Vec2(std::cos(0.5), std::sin(0.5));
   EXPECT_FALSE(r.step(pose, t + kTick, true));
+  EXPECT_EQ(r.recoveries(), 1);  // the back-up
 }
 
 TEST(ProgressRecovery, BlockedBehindItDrivesAhead) {
@@ -69,6 +70,7 @@ TEST(ProgressRecovery, BlockedBehindItDrivesAhead) {
   EXPECT_LE(ahead, 20);
   EXPECT_FALSE(r.step(still, t += kTick, true));
   EXPECT_EQ(r.stalls(), 1);
+  EXPECT_EQ(r.recoveries(), 2);  // the back-up and the drive ahead
 }
 
 // A window is timed on one clock: a restart (the clock changes) or a clock that goes back (a

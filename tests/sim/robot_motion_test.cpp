@@ -156,5 +156,25 @@ TEST(RobotMotion, ClearanceIsTheBodysNearestApproach) {
   EXPECT_EQ(footprint_clearance(f, {Vec2(0.2, 1.0), 0.0}, court), 0.0);
 }
 
+// A ball is reachable when the mouth can be put over it with the whole body clear: against one
+// fence (square to it) or against the net's mesh, yes; in a corner, touching both fences, only
+// when the body is no wider than the mouth (the ball at the mouth's edge, the body's side along
+// the fence): a body 0.10 m wider on each side reaches it only 12 cm out of the corner.
+TEST(RobotMotion, TheMouthReachesABallUnlessTheBodyCannotStandThere) {
+  const TennisCourtSpec court;
+  const RobotFootprint f;
+  const double r = kTennisBallRadiusM;
+  const double fx = court.surround_length_m / 2.0, fy = court.surround_width_m / 2.0;
+  EXPECT_TRUE(mouth_can_reach(f, Vec2(5.0, 2.0), r, court));
+  EXPECT_TRUE(mouth_can_reach(f, Vec2(fx - r, 0.0), r, court));
+  EXPECT_TRUE(mouth_can_reach(f, Vec2(court.net.post_radius_m + r, 2.0), r, court));
+  EXPECT_TRUE(mouth_can_reach(f, Vec2(fx - r, fy - r), r, court));
+  RobotFootprint wide = f;
+  wide.half_width_m = 0.45;
+  EXPECT_TRUE(mouth_can_reach(wide, Vec2(fx - r, 0.0), r, court));
+  EXPECT_FALSE(mouth_can_reach(wide, Vec2(fx - r, fy - r), r, court));
+  EXPECT_TRUE(mouth_can_reach(wide, Vec2(fx - r - 0.12, fy - r - 0.12), r, court));
+}
+
 }  // namespace
 }  // namespace ballsight::sim

@@ -285,7 +285,8 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
       " balls, until all are collected, the robot sees none left, or " +
       fixed(options.loop_max_time_s, 0) +
       " s. Systems: the report's pipeline and priority rule (report), ballsight's pipeline with "
-      "the priority rule, ballsight; then ballsight with faults (a camera dies, the service and "
+      "the priority rule (priority), ballsight; then ballsight with faults (a camera dies, the "
+      "service and "
       "the robot are killed and started again). Scored on the court's record; " +
       fixed(seconds_since(loop_start), 1) + " s wall (docs/robot-link.md):" + loop_results;
   const std::string title = "ballsight demo (seed " + std::to_string(options.seed) + ")";

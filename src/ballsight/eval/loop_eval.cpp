@@ -15,7 +15,7 @@ namespace ballsight::eval {
 const std::vector<LoopSystem>& loop_systems() {
   static const std::vector<LoopSystem> kSystems{
       {"report", true, PlannerKind::priority},
-      {"ballsight-priority", false, PlannerKind::priority},
+      {"priority", false, PlannerKind::priority},
       {"ballsight", false, PlannerKind::ballsight},
   };
   return kSystems;
@@ -79,23 +79,32 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   // max_time_s simulated seconds, the same ticks every time.
   std::vector<sim::WorldTick> ticks = service.history();
   std::erase_if(ticks, [&](const sim::WorldTick& t) { return t.time_s > max_time_s + 1e-6; });
-  const LoopScore score =
-      score_loop(scene.balls, start, ticks, collector_footprint(service.site().robot));
-  return {system.name,
-          scene.seed,
-          scene.layout.name(),
-          score.balls,
-          score.collected,
-          score.all ? score.time_s : max_time_s,
-          score.distance_m,
-          score.all,
-          score.never_overlapped,
-          driven.stalls,
-          score.blocked_ticks,
-          driven.dead_reckoned,
-          driven.guarded,
-          score.min_clearance_m,
-          score.unloads};
+  const sim::RobotFootprint footprint = collector_footprint(service.site().robot);
+  const LoopScore score = score_loop(scene.balls, start, ticks, footprint);
+  LoopRun run;
+  run.system = system.name;
+  run.seed = scene.seed;
+  run.layout = scene.layout.name();
+  run.balls = score.balls;
+  const sim::TennisCourtSpec spec;  // the referee's court, as score_loop's
+  for (const SceneBall& b : service.scene_balls()) {
+    run.reachable +=
+        sim::mouth_can_reach(footprint, b.position_m, service.site().ball_radius_m, spec) ? 1 : 0;
+  }
+  run.collected = score.collected;
+  run.time_s = score.all ? score.time_s : max_time_s;
+  run.distance_m = score.distance_m;
+  run.all = score.all;
+  run.timed_out = !score.all && !driven.done;
+  run.never_overlapped = score.never_overlapped;
+  run.stalls = driven.stalls;
+  run.recoveries = driven.recoveries;
+  run.contacts = score.blocked_ticks;
+  run.dead_reckoned = driven.dead_reckoned;
+  run.guarded = driven.guarded;
+  run.min_clearance_m = score.min_clearance_m;
+  run.unloads = score.unloads;
+  return run;
 }
 
 void LoopEvalOptions::validate() const {
@@ -112,7 +121,7 @@ void LoopEvalOptions::validate() const {
   for (const std::string& name : systems) {
     require(std::any_of(loop_systems().begin(), loop_systems().end(),
                         [&](const LoopSystem& s) { return s.name == name; }),
-            "--systems", "unknown system '" + name + "' (report, ballsight-priority, ballsight)");
+            "--systems", "unknown system '" + name + "' (report, priority, ballsight)");
   }
   for (const std::string& name : layouts) {
     require(
@@ -201,8 +210,27 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
     }
     systems[name] = s;
   }
+  // Scene by scene, in the order run (each scene's systems one after the other).
+  nlohmann::json scenes = nlohmann::json::array();
+  for (const LoopRun& r : runs) {
+    if (scenes.empty() || scenes.back()["seed"] != r.seed) {
+      scenes.push_back({{"seed", r.seed},
+                        {"layout", r.layout},
+                        {"balls", r.balls},
+                        {"reachable", r.reachable},
+                        {"systems", nlohmann::json::object()}});
+    }
+    scenes.back()["systems"][r.system] = {{"collected", r.collected},
+                                          {"time_s", r.time_s},
+                                          {"timed_out", r.timed_out},
+                                          {"contacts", r.contacts},
+                                          {"stalls", r.stalls},
+                                          {"recoveries", r.recoveries},
+                                          {"min_clearance_m", r.min_clearance_m},
+                                          {"unloads", r.unloads}};
+  }
   // Every figure is simulated (time_s is the court's clock): nothing to keep apart.
-  return with_wall_clock_apart({{"systems", systems}}, {});
+  return with_wall_clock_apart({{"systems", systems}, {"scenes", scenes}}, {});
 }
 
 }  // namespace ballsight::eval

@@ -1,7 +1,7 @@
 #pragma once
 // `ballsight eval loop`: the closed loop on simulated scenes, per system: the report's pipeline
 // with its priority planner ("report"), ballsight's pipeline with the priority planner
-// ("ballsight-priority"), and ballsight's pipeline and planner ("ballsight"). Each run is the real
+// ("priority"), and ballsight's pipeline and planner ("ballsight"). Each run is the real
 // loop in one process: the simulated court service and the collector driving over a RobotLink
 // (`ballsight eval loop`: API v1 on a free loopback port, net/loopback_robot_link.hpp), scored on
 // the court's recorded truth.
@@ -26,7 +26,7 @@ struct LoopSystem {
   PlannerKind planner = PlannerKind::ballsight;
 };
 
-/// report, ballsight-priority, ballsight.
+/// report, priority, ballsight.
 const std::vector<LoopSystem>& loop_systems();
 
 /// How a scene's balls lie: scattered on both sides of the net and some in the run-off
@@ -55,14 +55,17 @@ struct LoopRun {
   std::uint64_t seed = 0;
   std::string layout;  // LoopLayout::name()
   int balls = 0;
+  int reachable = 0;  // balls the mouth can be put over with the body clear (from the truth)
   int collected = 0;
   double time_s = 0.0;      // simulated: when the last ball was collected; the limit when not
                             // all were (the robot gave up, seeing none, or ran out of time)
   double distance_m = 0.0;  // driven until then
   bool all = false;
+  bool timed_out = false;        // not all collected, and the robot still at work at the limit
   bool never_overlapped = true;  // the net and the fence (checked on every tick's true pose)
-  int stalls = 0;    // times the robot found itself stalled and freed itself (progress_recovery)
-  int contacts = 0;  // ticks (0.1 s) in which the net or the fence stopped the robot
+  int stalls = 0;      // times the robot found itself stalled and freed itself (progress_recovery)
+  int recoveries = 0;  // recovery behaviours it began (a back-up, a drive ahead)
+  int contacts = 0;    // ticks (0.1 s) in which the net or the fence stopped the robot
   int dead_reckoned = 0;  // frame sets the cameras did not see the robot and it drove on its own
                           // estimate (robot/pose_tracker.hpp)
   int guarded = 0;        // commands the robot's local planner slowed, replaced or stopped
@@ -108,7 +111,9 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
                                    const std::function<void(const LoopRun&)>& progress = {});
 
 /// {"systems": {"<name>": {"collected_fraction", "time_s_mean", "distance_m_mean",
-///  "time_ratio_to_ballsight", "runs": [...]}}}
+///  "time_ratio_to_ballsight", "runs": [...]}}, "scenes": [{"seed", "layout", "balls",
+///  "reachable", "systems": {"<name>": {"collected", "time_s", "timed_out", "contacts",
+///  "stalls", "recoveries", "min_clearance_m", "unloads"}}}]} (scenes in the order run)
 nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs);
 
 }  // namespace ballsight::eval

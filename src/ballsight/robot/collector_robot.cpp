@@ -186,6 +186,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   }
   const LinkStatus status = link.status();
   result.stalls = recovery.stalls();
+  result.recoveries = recovery.recoveries();
   result.gaps = status.gaps;
   result.reconnects = status.reconnects;
   return result;

@@ -59,6 +59,7 @@ struct CollectorResult {
   int updates = 0;
   int collected = 0;      // as the collector's sensor counted them
   int stalls = 0;         // times it was stalled and backed up (or drove ahead) to free itself
+  int recoveries = 0;     // recovery behaviours begun (a back-up, a drive ahead)
   int dead_reckoned = 0;  // frame sets on which the cameras did not see it and it drove on its
                           // own estimate (pose_tracker.hpp)
   int guarded = 0;        // commands the local planner slowed, replaced or stopped

@@ -25,6 +25,7 @@ void ProgressRecovery::start(Phase phase, const Pose2D& pose, double now_s) {
   phase_ = phase;
   since_ = pose;
   since_s_ = now_s;
+  if (phase != Phase::watching) ++recoveries_;
 }
 
 void ProgressRecovery::restart() {

@@ -41,6 +41,9 @@ class ProgressRecovery {
 
   /// Times the robot was found stalled.
   int stalls() const { return stalls_; }
+  /// Recovery behaviours begun: a back-up for each stall, and a drive ahead where backing was
+  /// blocked.
+  int recoveries() const { return recoveries_; }
 
  private:
   enum class Phase { watching, backing, forward };
@@ -54,6 +57,7 @@ class ProgressRecovery {
   std::optional<Pose2D> since_;  // where the window (or the recovery's phase) began
   double since_s_ = 0.0;
   int stalls_ = 0;
+  int recoveries_ = 0;
 };
 
 }  // namespace ballsight

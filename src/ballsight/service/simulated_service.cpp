@@ -298,6 +298,10 @@ Pose2D SimulatedCourtService::robot_start() const {
   return impl_->start;
 }
 
+const std::vector<SceneBall>& SimulatedCourtService::scene_balls() const {
+  return impl_->scene_balls;
+}
+
 const std::vector<sim::WorldTick>& SimulatedCourtService::history() const {
   return impl_->world->history();
 }

@@ -21,6 +21,7 @@
 #include <optional>
 
 #include "ballsight/service/court_service.hpp"
+#include "ballsight/service/loop_truth.hpp"
 #include "ballsight/sim/court_scenario.hpp"
 #include "ballsight/sim/court_world.hpp"
 
@@ -83,6 +84,8 @@ class SimulatedCourtService : public CourtService {
 
   /// Where the robot stood when this service began (or resumed).
   Pose2D robot_start() const;
+  /// The tennis balls as the scene began (loop_truth.hpp's scene record).
+  const std::vector<SceneBall>& scene_balls() const;
   /// What really happened, one tick per vision period; read it once run() has returned.
   const std::vector<sim::WorldTick>& history() const;
 

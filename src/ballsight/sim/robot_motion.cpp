@@ -174,6 +174,20 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
   return {stopped, true};
 }
 
+bool mouth_can_reach(const RobotFootprint& footprint, const Vec2& ball, double ball_radius_m,
+                     const TennisCourtSpec& court) {
+  const double across = std::max(0.0, footprint.collector_width_m / 2.0 - ball_radius_m);
+  for (int deg = 0; deg < 360; deg += 5) {
+    const double heading = rad_from_deg(deg);
+    const Vec2 ahead(std::cos(heading), std::sin(heading)), left(-ahead.y(), ahead.x());
+    for (double s = -across; s <= across + 1e-9; s += 0.02) {
+      const Pose2D pose{ball - footprint.collector_x_m * ahead - s * left, heading};
+      if (!footprint_blocked(footprint, pose, court)) return true;
+    }
+  }
+  return false;
+}
+
 std::vector<int> collect_swept(CourtScene& scene, const Pose2D& before, const Pose2D& after,
                                const RobotFootprint& footprint, std::size_t room) {
   // The ball's place in the robot's frame: ahead of the mouth before, at or behind it after.

@@ -70,6 +70,13 @@ bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
 double footprint_clearance(const RobotFootprint& footprint, const Pose2D& pose,
                            const TennisCourtSpec& court);
 
+/// Whether the collector's mouth can be put over a ball at `ball` with no part of the robot in
+/// the net or beyond the fence: some heading (every 5 degrees) and some place of the ball across
+/// the mouth (every 2 cm, the ball wholly inside it) where the footprint is clear. The court's
+/// free space is one piece (round the posts), so such a pose can be driven to.
+bool mouth_can_reach(const RobotFootprint& footprint, const Vec2& ball, double ball_radius_m,
+                     const TennisCourtSpec& court);
+
 struct DriveStep {
   RobotMotion motion;
   bool blocked = false;  // the net or the fence was in the way of the commanded motion
