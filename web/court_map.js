@@ -1,5 +1,5 @@
 // Draws the court from above on a canvas: the fenced area, the lines (ITF layout), the net, the
-// balls, collection sites, the robot and its route. Field frame (docs/conventions.md): origin at
+// balls, collection sites, the robot, its route and the balls it gave up on. Field frame (docs/conventions.md): origin at
 // the court's centre on the net line, x along its length, y across, metres; the canvas shows +y up.
 
 const SINGLES_WIDTH_M = 8.23; // ITF rule 1: the lines a site's court does not list
@@ -103,6 +103,21 @@ function drawRoute(ctx, t, route) {
   ctx.stroke();
 }
 
+/** A red cross over each ball the robot gave up on. */
+function drawGivenUp(ctx, t, marks, halfPx) {
+  ctx.strokeStyle = "#d0342c";
+  ctx.lineWidth = 2;
+  for (const m of marks) {
+    const [x, y] = t.toCanvas(m.x_m, m.y_m);
+    ctx.beginPath();
+    ctx.moveTo(x - halfPx, y - halfPx);
+    ctx.lineTo(x + halfPx, y + halfPx);
+    ctx.moveTo(x + halfPx, y - halfPx);
+    ctx.lineTo(x - halfPx, y + halfPx);
+    ctx.stroke();
+  }
+}
+
 /** The whole picture of one navigation update (`update` may be null: the court alone). */
 export function drawCourtMap(canvas, site, update) {
   const ctx = canvas.getContext("2d");
@@ -116,6 +131,7 @@ export function drawCourtMap(canvas, site, update) {
     disc(ctx, t, s.x_m, s.y_m, Math.max(4, (s.diameter_m / 2) * t.scale), null, "#7fe07f");
   const ballPx = Math.max(3, site.ball_radius_m * t.scale);
   for (const b of update.world.balls) disc(ctx, t, b.x_m, b.y_m, ballPx, "#e4f53c", "#3a4a10");
+  drawGivenUp(ctx, t, update.given_up ?? [], ballPx + 3);
   if (update.world.robot) drawRobot(ctx, t, update.world.robot);
   return t;
 }

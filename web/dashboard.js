@@ -1,6 +1,7 @@
 // The live dashboard (/): the court from above with the latest navigation update of the service's
 // stream (/api/v1/stream, docs/robot-link.md), and the service's health. What is drawn is also in
-// window.ballsightDashboard ({seq, balls, robot, route}), for tests and the browser's console.
+// window.ballsightDashboard ({seq, balls, robot, route, givenUp}), for tests and the browser's
+// console.
 import { drawCourtMap, drawSparkline } from "/web/court_map.js";
 import { $, api, showError, socketUrl } from "/web/page_support.js";
 
@@ -26,7 +27,11 @@ function showUpdate(update) {
     ? `${fixed(world.robot.x_m, 2)}, ${fixed(world.robot.y_m, 2)} m, ${fixed(world.robot.heading_deg, 0)} deg`
     : "not seen";
   $("route").textContent = `${route.order.length} balls, ${fixed(route.length_m, 1)} m, ${fixed(route.time_s, 0)} s (${route.planner})`;
-  Object.assign(window.ballsightDashboard, { seq: update.seq, balls: world.balls, robot: world.robot, route });
+  const givenUp = update.given_up ?? [];
+  $("given-up").textContent = givenUp.length === 0
+    ? "none"
+    : givenUp.map((m) => `${fixed(m.x_m, 1)}, ${fixed(m.y_m, 1)} m: ${m.reason}`).join("; ");
+  Object.assign(window.ballsightDashboard, { seq: update.seq, balls: world.balls, robot: world.robot, route, givenUp });
   state.latencies.push((update.published_ns - update.capture_time_ns) / 1e6);
   state.latencies.splice(0, Math.max(0, state.latencies.length - LATENCY_POINTS));
   drawSparkline($("latency"), state.latencies);

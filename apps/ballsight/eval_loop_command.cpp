@@ -47,11 +47,11 @@ void run_eval_loop(const EvalLoopArgs& args) {
         std::fprintf(stderr,
                      "eval loop: %-9s seed %llu, %s: %d of %d balls (%d reachable) in %.1f s, "
                      "%.1f m, %d stalls, %d ticks in contact, nearest %.3f m, %d frame sets dead "
-                     "reckoned, %d commands guarded, %d unloads%s\n",
+                     "reckoned, %d commands guarded, %d unloads, %d given up%s\n",
                      r.system.c_str(), static_cast<unsigned long long>(r.seed), r.layout.c_str(),
                      r.collected, r.balls, r.reachable, r.time_s, r.distance_m, r.stalls,
                      r.contacts, r.min_clearance_m, r.dead_reckoned, r.guarded, r.unloads,
-                     r.never_overlapped ? "" : " (overlapped the net or fence!)");
+                     r.unreachable, r.never_overlapped ? "" : " (overlapped the net or fence!)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
   if (args.json) {

@@ -144,6 +144,7 @@ class DemoRun {
     out.latency_ms = latency_ms_;
     out.gaps = gaps_;
     out.reconnects = reconnects_;
+    out.unreachable = unreachable_;
     out.events = events_;  // what the demo did first, then what the court recorded of it
     out.events.insert(out.events.end(), out.truth.events.begin(), out.truth.events.end());
     std::stable_sort(out.events.begin(), out.events.end(),
@@ -201,6 +202,7 @@ class DemoRun {
     latency_ms_.insert(latency_ms_.end(), l.begin(), l.end());
     gaps_ += j.at("gaps").get<std::uint64_t>();
     reconnects_ += j.at("reconnects").get<int>();
+    unreachable_ += j.at("unreachable").get<int>();
   }
 
   const LoopDemoOptions& options_;
@@ -214,6 +216,7 @@ class DemoRun {
   std::vector<double> latency_ms_;
   std::uint64_t gaps_ = 0;
   int reconnects_ = 0;
+  int unreachable_ = 0;
   std::vector<TruthEvent> events_;
 };
 

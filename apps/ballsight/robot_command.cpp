@@ -81,7 +81,10 @@ void run_robot(RobotArgs args) {
                                  {"latency_ms", r.latency_ms},
                                  {"stalls", r.stalls},
                                  {"dead_reckoned", r.dead_reckoned},
-                                 {"guarded", r.guarded}};
+                                 {"guarded", r.guarded},
+                                 {"recoveries", r.recoveries},
+                                 {"unloads", r.unloads},
+                                 {"unreachable", r.unreachable}};
     write_file_atomic(args.summary, summary.dump() + "\n");
   }
 }
@@ -122,7 +125,8 @@ void add_robot_command(CLI::App& app) {
                   "Write what happened here at the end (JSON: done, updates, collected, gaps, "
                   "reconnects, sim_time_s, seqs, latency_ms per update, stalls, dead_reckoned: "
                   "frame sets driven on its own estimate out of the cameras' sight, guarded: "
-                  "commands its local planner slowed, replaced or stopped)");
+                  "commands its local planner slowed, replaced or stopped, recoveries, unloads: "
+                  "times it emptied its basket, unreachable: balls it gave up on)");
   cmd->callback([args] { run_robot(*args); });
 }
 

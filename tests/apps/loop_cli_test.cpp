@@ -94,6 +94,7 @@ TEST(LoopCli, EvalLoopScoresEachSystemOnTheTruth) {
   EXPECT_EQ(scene["layout"], "along_fence");
   EXPECT_EQ(scene["reachable"], 6);
   EXPECT_EQ(scene["systems"]["ballsight"]["collected"], 6);
+  EXPECT_EQ(scene["systems"]["ballsight"]["unreachable"], 0);
   EXPECT_FALSE(scene["systems"]["ballsight"]["timed_out"].get<bool>());
   EXPECT_GE(scene["systems"]["ballsight"]["recoveries"].get<int>(), 0);
   expect_one_line_error(run_cli({"eval", "loop", "--systems", "magic"}), "--systems");

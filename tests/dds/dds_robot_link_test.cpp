@@ -85,6 +85,11 @@ TEST(DdsRobotLink, EveryUpdateOnceInOrderAndReportsReachTheHub) {
       << link.status().last_error;
   EXPECT_EQ(court.hub.collected().size(), 2u);
   EXPECT_EQ(court.replans, 1);
+  EXPECT_TRUE(link.report_unreachable({Vec2(5, 1)}, "stuck"));
+  ASSERT_EQ(court.hub.reports().unreachable.size(), 1u);
+  EXPECT_EQ(court.hub.reports().unreachable[0].reason, "stuck");
+  EXPECT_EQ(court.replans, 2);
+  EXPECT_FALSE(link.report_unreachable({Vec2(5, 1)}, ""));  // why is required
 
   EXPECT_TRUE(link.set_pose({Vec2(-2, 3), 1.5}));
   ASSERT_TRUE(court.hub.robot());
@@ -93,8 +98,8 @@ TEST(DdsRobotLink, EveryUpdateOnceInOrderAndReportsReachTheHub) {
 
   EXPECT_FALSE(link.drive_simulated(31, 0.5, 10.0));  // not a simulated court
   EXPECT_NE(link.status().last_error.find("not a simulated court"), std::string::npos);
-  EXPECT_EQ(court.reports->answered(), 6u);
-  EXPECT_EQ(court.reports->refused(), 3u);
+  EXPECT_EQ(court.reports->answered(), 8u);
+  EXPECT_EQ(court.reports->refused(), 4u);
 }
 
 TEST(DdsRobotLink, DrivesTheSimulatedCourtsWheels) {

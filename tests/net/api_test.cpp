@@ -106,6 +106,19 @@ TEST(Api, TheReportsFourMethodsAndItsFlag) {
   expect_error(f.call("POST", "/api/v1/collected", R"({"balls": [], "held": 2.5})"), 400,
                "body.held");
   expect_error(f.call("PUT", "/api/v1/balls", R"({"balls": [], "held": 0})"), 400, "body");
+  // A ball the robot gave up on, with why; a reason is required.
+  EXPECT_EQ(f.call("POST", "/api/v1/unreachable",
+                   R"({"balls": [{"x_m": 5, "y_m": 1}], "reason": "stuck at the post"})")
+                .status,
+            200);
+  ASSERT_EQ(f.hub.reports().unreachable.size(), 1u);
+  EXPECT_EQ(f.hub.reports().unreachable[0].position_m, Vec2(5, 1));
+  EXPECT_EQ(f.hub.reports().unreachable[0].reason, "stuck at the post");
+  expect_error(f.call("POST", "/api/v1/unreachable", R"({"balls": [{"x_m": 5, "y_m": 1}]})"), 400,
+               "body.reason");
+  expect_error(
+      f.call("POST", "/api/v1/unreachable", R"({"balls": [{"x_m": 50, "y_m": 1}], "reason": "x"})"),
+      422, "body.balls[0]");
 }
 
 TEST(Api, LongPollAnswersTheFirstNewerUpdateOrAsksTheTransportToWait) {
@@ -292,7 +305,7 @@ TEST(Api, TheOpenApiDocumentListsExactlyTheRoutesThatAnswer) {
       EXPECT_EQ(f.call(method, path).status, 405) << method << " " << path;
     }
   }
-  EXPECT_EQ(operations, 35);
+  EXPECT_EQ(operations, 36);
 }
 
 }  // namespace

@@ -116,7 +116,7 @@ TEST(HttpServer, EveryDocumentedRouteAnswersAsDocumentedOverTheWire) {
       ++operations;
     }
   }
-  EXPECT_EQ(operations, 35);
+  EXPECT_EQ(operations, 36);
   // The errors' own headers.
   const auto refused = client.send(http::verb::put, "/api/v1/robot", "{}");
   EXPECT_EQ(refused[http::field::www_authenticate], "Bearer");

@@ -71,6 +71,9 @@ TEST_P(RobotLinkTransports, EveryUpdateOnceInOrderAndWritesReachTheService) {
   ASSERT_TRUE(hub.reports().basket);
   EXPECT_EQ(hub.reports().basket->value, 7);
   EXPECT_EQ(hub.collected().size(), 1u);
+  EXPECT_TRUE(link.report_unreachable({Vec2(5, 1)}, "stuck")) << link.status().last_error;
+  ASSERT_EQ(hub.reports().unreachable.size(), 1u);
+  EXPECT_EQ(hub.reports().unreachable[0].reason, "stuck");
   EXPECT_TRUE(link.set_pose({Vec2(-2, 1), 0.0}));
   ASSERT_TRUE(hub.robot());
   EXPECT_EQ(hub.robot()->value.position, Vec2(-2, 1));

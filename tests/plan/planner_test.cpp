@@ -177,6 +177,8 @@ TEST(Planner, TheBasketsLoadAndAnOpenEnd) {
       for (std::size_t k = 1; k < route.unload_after.size(); ++k) {
         EXPECT_LE(route.unload_after[k] - route.unload_after[k - 1], 7);
       }
+      // The open last trip fits the basket too.
+      EXPECT_LE(static_cast<int>(route.order.size()) - 1 - route.unload_after.back(), 7);
     }
   }
   problem.capacity->held = 8;

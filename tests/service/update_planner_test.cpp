@@ -103,5 +103,18 @@ TEST(PlanUpdate, TheBasketsRoomPlansTheUnloadTrips) {
   EXPECT_FALSE(one.route.unloads_first());
 }
 
+// A ball the robot marked unreachable stays out of the route; the update lists the marks.
+TEST(PlanUpdate, AMarkedBallStaysOutOfTheRoute) {
+  const Site site = read_site(kExampleSite.string());
+  const WorldModel world = seen_world(5000);
+  ClientReports reports;
+  reports.unreachable = {{Vec2(4.1, -2.0), "stuck"}};
+  const NavigationUpdate u = plan_update(site, world, reports, nullptr, {});
+  EXPECT_EQ(u.route.order.size(), 2u);
+  EXPECT_EQ(u.world.balls.size(), 3u);
+  ASSERT_EQ(u.given_up.size(), 1u);
+  EXPECT_EQ(u.given_up[0].reason, "stuck");
+}
+
 }  // namespace
 }  // namespace ballsight

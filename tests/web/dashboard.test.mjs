@@ -112,6 +112,31 @@ test("the dashboard in Chromium", { timeout: 240_000 }, async (t) => {
     assert.equal((await (await fetch(`${origin}/api/v1/planner`)).json()).planner, "nearest");
   });
 
+  await t.test("a ball the robot gave up on is listed with why and crossed out on the map", async () => {
+    assert.equal(await page.textContent("#given-up"), "none");
+    const { balls, robot } = await shown();
+    const ball = balls.find((b) => !robot || Math.hypot(b.x_m - robot.x_m, b.y_m - robot.y_m) > 1.5);
+    const answer = await fetch(`${origin}/api/v1/unreachable`, {
+      method: "POST",
+      headers: { authorization: `Bearer ${service.token}`, "content-type": "application/json" },
+      body: JSON.stringify({ balls: [{ x_m: ball.x_m, y_m: ball.y_m }], reason: "stuck at the post" }),
+    });
+    assert.equal(answer.status, 200);
+    await until(async () => (await shown()).givenUp?.length === 1, "the mark in an update");
+    assert.match(await page.textContent("#given-up"), /^-?\d+\.\d, -?\d+\.\d m: stuck at the post$/);
+    // The cross's red (#d0342c) a few pixels off the ball's centre along its diagonal.
+    const red = await page.evaluate(async ({ x, y }) => {
+      const { courtTransform } = await import("/web/court_map.js");
+      const site = await (await fetch("/api/v1/site")).json();
+      const canvas = document.getElementById("court");
+      const [px, py] = courtTransform(site, canvas).toCanvas(x, y);
+      const found = [];
+      for (let d = 3; d <= 6; ++d) found.push(window.pixelAt(canvas, Math.round(px + d), Math.round(py + d)));
+      return found;
+    }, { x: ball.x_m, y: ball.y_m });
+    assert.ok(red.some(([r, g, b]) => r > 170 && g < 90 && b < 90), `cross pixels ${JSON.stringify(red)}`);
+  });
+
   await t.test("fits a tablet (768 x 1024) without scrolling sideways", async () => {
     const tablet = await browser.newPage({ viewport: { width: 768, height: 1024 } });
     await tablet.goto(`${origin}/`);

@@ -200,11 +200,20 @@ TEST(Site, TheBasketAndWhereItIsEmptied) {
   expect_error(std::string(kMinimal) + "robot:\n  capacity: 0\n",
                "site.yml:19: key 'robot.capacity' must be 1 to 1000 balls, got 0");
   expect_error(std::string(kMinimal) + "robot:\n  unload_m: [17.8, 0]\n",
-               "site.yml:19: key 'robot.unload_m' must lie inside the fence's lane and off the "
+               "site.yml:19: key 'robot.unload_m' must be clear of the fence's lane and of the "
                "net's (unload_m 17.80, 0.00)");
   expect_error(std::string(kMinimal) + "robot:\n  unload_m: [0.1, 3]\n",
-               "site.yml:19: key 'robot.unload_m' must lie inside the fence's lane and off the "
+               "site.yml:19: key 'robot.unload_m' must be clear of the fence's lane and of the "
                "net's (unload_m 0.10, 3.00)");
+  // A fence lane wider than the default's 1.5 m: the default point is refused, a given one is not.
+  expect_error(std::string(kMinimal) + "court:\n  fence_lane_m: 2\n",
+               "site.yml: the default unload point (16.50, 0.00) is not clear of the fence's lane: "
+               "give robot.unload_m");
+  EXPECT_EQ(parse_site(std::string(kMinimal) + "court:\n  fence_lane_m: 2\nrobot:\n  unload_m: "
+                                               "[15, 0]\n",
+                       "site.yml")
+                .unload_point(),
+            Vec2(15.0, 0.0));
 }
 
 }  // namespace

@@ -144,6 +144,16 @@ bool DdsRobotLink::report_collected(const std::vector<Vec2>& positions, std::opt
       .has_value();
 }
 
+bool DdsRobotLink::report_unreachable(const std::vector<Vec2>& positions,
+                                      const std::string& reason) {
+  return request(ReportKind::unreachable,
+                 [&](RobotReportMsg& r, MessageArena& arena) {
+                   fill_points(r.points, positions, arena);
+                   r.reason = arena.text(reason);
+                 })
+      .has_value();
+}
+
 bool DdsRobotLink::set_pose(const Pose2D& pose) {
   return request(ReportKind::pose,
                  [&pose](RobotReportMsg& r, MessageArena&) { r.pose = pose_2d_message(pose); })

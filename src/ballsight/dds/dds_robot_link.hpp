@@ -44,6 +44,7 @@ class DdsRobotLink : public RobotLink {
 
   bool acknowledge(std::uint64_t seq) override;
   bool report_collected(const std::vector<Vec2>& positions, std::optional<int> held) override;
+  bool report_unreachable(const std::vector<Vec2>& positions, const std::string& reason) override;
   bool set_pose(const Pose2D& pose) override;
   std::optional<nlohmann::json> drive_simulated(std::uint64_t seq, double speed_mps,
                                                 double turn_rate_dps) override;

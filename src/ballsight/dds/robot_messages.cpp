@@ -25,7 +25,10 @@ NavigationUpdateMsg navigation_update_message(const NavigationUpdate& update,
   fill_points(message.balls, balls, arena, ball_radius_m);
   fill_points(message.visits, update.route.visits_m, arena);
   fill_points(message.waypoints, update.route.waypoints_m, arena);
-  message.unload_first = update.route.unloads_first();
+  if (update.route.unloads_first() && update.route.unload_m) {
+    message.unload_first = true;
+    message.unload = {update.route.unload_m->x(), update.route.unload_m->y(), 0.0};
+  }
   return message;
 }
 
@@ -41,7 +44,7 @@ LinkUpdate link_update_from_message(const NavigationUpdateMsg& message) {
   out.balls_m = points_from_message(message.balls);
   out.visits_m = points_from_message(message.visits);
   out.waypoints_m = points_from_message(message.waypoints);
-  out.unload_first = message.unload_first;
+  if (message.unload_first) out.unload_first_m = Vec2(message.unload.x, message.unload.y);
   return out;
 }
 
@@ -53,6 +56,7 @@ RobotReportMsg report_message(ReportKind kind, const std::string& client, std::u
   message.request = request;
   message.kind = static_cast<std::uint8_t>(kind);
   message.held = -1;
+  message.reason = arena.text("");
   return message;
 }
 

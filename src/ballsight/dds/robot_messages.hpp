@@ -27,7 +27,13 @@ inline constexpr TopicQos kReportQos{false, 64};
 inline constexpr std::size_t kMaxReportPoints = 1024;
 
 /// What a RobotReport asks (its `kind`).
-enum class ReportKind : std::uint8_t { acknowledge = 0, collected = 1, pose = 2, drive = 3 };
+enum class ReportKind : std::uint8_t {
+  acknowledge = 0,
+  collected = 1,
+  pose = 2,
+  drive = 3,
+  unreachable = 4
+};
 
 /// `update` of the service `service_id`, the balls' centres at z = `ball_radius_m`.
 NavigationUpdateMsg navigation_update_message(const NavigationUpdate& update,

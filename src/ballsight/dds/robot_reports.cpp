@@ -17,6 +17,15 @@ void check_inside(const std::vector<Vec2>& points, const FieldRect& area, const 
             std::string(where) + "[" + std::to_string(k) + "]", "outside the field area");
 }
 
+// The balls a report names, each inside the field area.
+std::vector<Vec2> reported_balls(const RobotReportMsg& report, const FieldRect& area) {
+  require(report.points._length <= kMaxReportPoints, "report.points",
+          "more than " + std::to_string(kMaxReportPoints) + " balls");
+  std::vector<Vec2> balls = points_from_message(report.points);
+  check_inside(balls, area, "report.points");
+  return balls;
+}
+
 }  // namespace
 
 RobotReportsContext robot_reports_context(CourtService& service, NavigationHub& hub) {
@@ -48,14 +57,20 @@ nlohmann::json RobotReports::apply(const RobotReportMsg& report) {
       context_.hub.acknowledge(report.seq);  // InputError: not published yet
       return {};
     case ReportKind::collected: {
-      require(report.points._length <= kMaxReportPoints, "report.points",
-              "more than " + std::to_string(kMaxReportPoints) + " balls");
-      const std::vector<Vec2> balls = points_from_message(report.points);
-      check_inside(balls, context_.area, "report.points");
+      const std::vector<Vec2> balls = reported_balls(report, context_.area);
       require(report.held >= -1 && report.held <= 1000, "report.held",
               "expected the balls in the basket, 0 to 1000 (-1: not said)");
       if (report.held >= 0) context_.hub.set_basket(report.held);
       context_.hub.add_collected(balls);
+      if (context_.on_collected) context_.on_collected();
+      return {};
+    }
+    case ReportKind::unreachable: {
+      const std::vector<Vec2> balls = reported_balls(report, context_.area);
+      const std::string reason = report.reason ? report.reason : "";
+      require(!reason.empty() && reason.size() <= 200, "report.reason",
+              "expected why, a text of 1 to 200 characters");
+      context_.hub.mark_unreachable(balls, reason);
       if (context_.on_collected) context_.on_collected();
       return {};
     }

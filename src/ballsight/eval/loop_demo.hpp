@@ -32,6 +32,7 @@ struct LoopDemoRun {
   std::vector<double> latency_ms;   // frames captured -> update parsed at the robot (wall)
   std::uint64_t gaps = 0;           // updates published but never delivered to the robot
   int reconnects = 0;
+  int unreachable = 0;             // balls the robot gave up on
   std::vector<TruthEvent> events;  // the record's and the demo's own (what it did, when)
   double wall_s = 0.0;
   std::filesystem::path dir;  // serve and robot logs, the record, the robot's summaries
@@ -42,7 +43,8 @@ using LoopDemoRunner = std::function<std::vector<LoopDemoRun>(
     const LoopDemoOptions& options, const std::filesystem::path& out_dir,
     const std::function<void(const std::string&)>& progress)>;
 
-/// The runs side by side: balls collected, time to collect all, distance, latency, gaps.
+/// The runs side by side: balls collected, time to collect all, distance, unload trips, balls
+/// given up, latency, gaps.
 std::string loop_demo_table(const std::vector<LoopDemoRun>& runs);
 
 }  // namespace ballsight

@@ -58,7 +58,6 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   std::atomic<bool> robot_done{false};
   CollectorOptions collector;
   collector.latency_s = robot.steer_ahead_s;
-  collector.unload_m = service.site().unload_point();
   CollectorResult driven;
   std::thread driver([&] {
     driven = run_collector(*link, collector, stop);
@@ -92,6 +91,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
         sim::mouth_can_reach(footprint, b.position_m, service.site().ball_radius_m, spec) ? 1 : 0;
   }
   run.collected = score.collected;
+  run.unreachable = driven.unreachable;
   run.time_s = score.all ? score.time_s : max_time_s;
   run.distance_m = score.distance_m;
   run.all = score.all;
@@ -220,14 +220,12 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
                         {"reachable", r.reachable},
                         {"systems", nlohmann::json::object()}});
     }
-    scenes.back()["systems"][r.system] = {{"collected", r.collected},
-                                          {"time_s", r.time_s},
-                                          {"timed_out", r.timed_out},
-                                          {"contacts", r.contacts},
-                                          {"stalls", r.stalls},
-                                          {"recoveries", r.recoveries},
-                                          {"min_clearance_m", r.min_clearance_m},
-                                          {"unloads", r.unloads}};
+    scenes.back()["systems"][r.system] = {
+        {"collected", r.collected},   {"unreachable", r.unreachable},
+        {"time_s", r.time_s},         {"timed_out", r.timed_out},
+        {"contacts", r.contacts},     {"stalls", r.stalls},
+        {"recoveries", r.recoveries}, {"min_clearance_m", r.min_clearance_m},
+        {"unloads", r.unloads}};
   }
   // Every figure is simulated (time_s is the court's clock): nothing to keep apart.
   return with_wall_clock_apart({{"systems", systems}, {"scenes", scenes}}, {});

@@ -57,6 +57,7 @@ struct LoopRun {
   int balls = 0;
   int reachable = 0;  // balls the mouth can be put over with the body clear (from the truth)
   int collected = 0;
+  int unreachable = 0;      // balls the robot gave up on (robot/collector_robot.hpp)
   double time_s = 0.0;      // simulated: when the last ball was collected; the limit when not
                             // all were (the robot gave up, seeing none, or ran out of time)
   double distance_m = 0.0;  // driven until then
@@ -112,8 +113,8 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
 
 /// {"systems": {"<name>": {"collected_fraction", "time_s_mean", "distance_m_mean",
 ///  "time_ratio_to_ballsight", "runs": [...]}}, "scenes": [{"seed", "layout", "balls",
-///  "reachable", "systems": {"<name>": {"collected", "time_s", "timed_out", "contacts",
-///  "stalls", "recoveries", "min_clearance_m", "unloads"}}}]} (scenes in the order run)
+///  "reachable", "systems": {"<name>": {"collected", "unreachable", "time_s", "timed_out",
+///  "contacts", "stalls", "recoveries", "min_clearance_m", "unloads"}}}]} (scenes in the order run)
 nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs);
 
 }  // namespace ballsight::eval

@@ -64,6 +64,14 @@ json point_json(const Vec2& p) {
   return {{"x_m", p.x()}, {"y_m", p.y()}};
 }
 
+json given_up_json(const std::vector<UnreachableMark>& marks) {
+  json out = json::array();
+  for (const UnreachableMark& m : marks) {
+    out.push_back({{"x_m", m.position_m.x()}, {"y_m", m.position_m.y()}, {"reason", m.reason}});
+  }
+  return out;
+}
+
 /// "a=1&b=2" -> the value of `key` as an unsigned integer, or `fallback` when absent.
 std::uint64_t query_number(const std::string& query, const std::string& key,
                            std::uint64_t fallback) {
@@ -244,6 +252,21 @@ ApiResponse collected_route(const ApiRequest& request, const std::string&, const
   return ok({{"accepted", positions.size()}});
 }
 
+ApiResponse unreachable_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
+  require_write(request);
+  const json body = parse_body(request.body);
+  only_keys(body, {"balls", "reason"}, "body");
+  const std::vector<Vec2> positions = ball_list(body, c.area);
+  const auto reason = body.find("reason");
+  if (reason == body.end() || !reason->is_string() || reason->get<std::string>().empty() ||
+      reason->get<std::string>().size() > 200) {
+    api_fail(400, "expected why, a text of 1 to 200 characters", "body.reason");
+  }
+  c.hub.mark_unreachable(positions, reason->get<std::string>());
+  if (c.on_collected) c.on_collected();  // planned again without them
+  return ok({{"accepted", positions.size()}});
+}
+
 ApiResponse drive_route(const ApiRequest& request, const std::string&, const ApiContext& c) {
   require_write(request);
   if (!c.drive)
@@ -418,7 +441,8 @@ nlohmann::json navigation_json(const NavigationUpdate& update, const ApiContext&
           {"capture_time_ns", update.capture_time_ns},
           {"published_ns", update.published_ns},
           {"world", world_model_json(update.world, c.camera_names)},
-          {"route", route_json(update.route)}};
+          {"route", route_json(update.route)},
+          {"given_up", given_up_json(update.given_up)}};
 }
 
 ApiContext::ApiContext(NavigationHub& hub_, std::vector<std::string> camera_names_,
@@ -439,6 +463,7 @@ ApiResponse handle_api(const ApiRequest& request, const ApiContext& c) {
       {"/api/v1/navigation", {"GET"}, navigation_route},
       {"/api/v1/navigation/ack", {"POST"}, ack_route},
       {"/api/v1/collected", {"POST"}, collected_route},
+      {"/api/v1/unreachable", {"POST"}, unreachable_route},
       {"/api/v1/sim/drive", {"PUT"}, drive_route},
       {"/api/v1/world", {"GET"}, world_route},
       {"/api/v1/route", {"GET"}, plan_route},

@@ -349,6 +349,13 @@ bool HttpRobotLink::report_collected(const std::vector<Vec2>& positions, std::op
   return impl_->call(http::verb::post, "/api/v1/collected", body).has_value();
 }
 
+bool HttpRobotLink::report_unreachable(const std::vector<Vec2>& positions,
+                                       const std::string& reason) {
+  json body = {{"balls", json::array()}, {"reason", reason}};
+  for (const Vec2& p : positions) body["balls"].push_back({{"x_m", p.x()}, {"y_m", p.y()}});
+  return impl_->call(http::verb::post, "/api/v1/unreachable", body).has_value();
+}
+
 bool HttpRobotLink::set_pose(const Pose2D& pose) {
   return impl_->call(http::verb::put, "/api/v1/robot", pose_json(pose)).has_value();
 }

@@ -55,6 +55,8 @@ class HttpRobotLink : public RobotLink {
   bool acknowledge(std::uint64_t seq) override;
   /// POST /api/v1/collected with the balls' positions.
   bool report_collected(const std::vector<Vec2>& positions, std::optional<int> held) override;
+  /// POST /api/v1/unreachable.
+  bool report_unreachable(const std::vector<Vec2>& positions, const std::string& reason) override;
   /// PUT /api/v1/robot.
   bool set_pose(const Pose2D& pose) override;
   /// PUT /api/v1/sim/drive.

@@ -58,7 +58,11 @@ LinkUpdate parse_link_update(const json& u) {
   out.visits_m = points(route["visits_m"], "update.route.visits_m");
   if (const auto unloads = route.find("unload_after"); unloads != route.end()) {
     require(unloads->is_array(), "update.route.unload_after", "expected a list of integers");
-    out.unload_first = !unloads->empty() && unloads->front() == -1;
+    if (!unloads->empty() && unloads->front() == -1) {
+      require(route.contains("unload_m"), "update.route.unload_m",
+              "missing where the basket is emptied");
+      out.unload_first_m = points(json::array({route["unload_m"]}), "update.route.unload_m")[0];
+    }
   }
   return out;
 }

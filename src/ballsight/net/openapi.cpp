@@ -33,7 +33,11 @@ const nlohmann::json& openapi_document() {
       "Update": {"type": "object", "required": ["seq", "service_id", "capture_time_ns", "published_ns", "world", "route"],
                  "properties": {"seq": {"type": "integer"}, "service_id": {"type": "string"}, "capture_time_ns": {"type": "integer"},
                                 "published_ns": {"type": "integer"}, "world": {"type": "object"},
-                                "route": {"type": "object"}}}
+                                "route": {"type": "object"},
+                                "given_up": {"type": "array", "description": "balls the robot gave up on (POST /api/v1/unreachable), with why",
+                                                "items": {"type": "object", "properties": {"x_m": {"type": "number"}, "y_m": {"type": "number"}, "reason": {"type": "string"}}}}}},
+      "Unreachable": {"type": "object", "required": ["balls", "reason"], "additionalProperties": false,
+                      "properties": {"balls": {"type": "array", "items": {"$ref": "#/components/schemas/Point"}}, "reason": {"type": "string", "minLength": 1, "maxLength": 200}}}
     }
   },
   "paths": {
@@ -68,6 +72,11 @@ const nlohmann::json& openapi_document() {
       "post": {"summary": "Balls the robot picked up, as positions {\"balls\": [...]} or as indices into an update's world model {\"seq\": N, \"ids\": [...]}: they leave the plan at once (re-planned and published), until the cameras confirm them gone. Either may carry \"held\": the balls in the robot's basket now (0 after emptying it; the route plans the unload trips with it)", "security": [{"bearer": []}],
                "requestBody": {"required": true, "content": {"application/json": {"schema": {"oneOf": [{"$ref": "#/components/schemas/CollectedBalls"}, {"$ref": "#/components/schemas/BallIds"}]}}}},
                "responses": {"200": {"description": "accepted"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "409": {"description": "that update is not kept"}, "422": {"description": "outside the field, or no such ball"}}}
+    },
+    "/api/v1/unreachable": {
+      "post": {"summary": "Balls the robot gave up on after a bounded number of tries, with why: left out of every route from now on (re-planned and published), listed in every update's 'unreachable'", "security": [{"bearer": []}],
+               "requestBody": {"required": true, "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Unreachable"}}}},
+               "responses": {"200": {"description": "accepted"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "422": {"description": "outside the field"}}}
     },
     "/api/v1/sim/drive": {
       "put": {"summary": "The simulated court only: the simulated robot's command for update 'seq' (it drives the next vision period; the court waits for it). Answers {\"collected\": balls its collector took since its previous command, \"time_s\": simulated time, \"odometry\": the wheels' odometry at the update's frames (a Pose, in the odometry's own frame: it drifts as wheels slip)}", "security": [{"bearer": []}],

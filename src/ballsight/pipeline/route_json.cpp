@@ -17,6 +17,9 @@ nlohmann::json route_json(const Route& route) {
           {"visits_m", points(route.visits_m)},
           {"waypoints_m", points(route.waypoints_m)},
           {"unload_after", route.unload_after},
+          {"unload_m", route.unload_m
+                           ? nlohmann::json::array({route.unload_m->x(), route.unload_m->y()})
+                           : nlohmann::json(nullptr)},
           {"unreachable", route.unreachable},
           {"length_m", route.length_m},
           {"time_s", route.time_s},

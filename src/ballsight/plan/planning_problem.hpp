@@ -101,6 +101,7 @@ struct Route {
   std::vector<Vec2> targets_m;    // those balls' positions, in visiting order
   std::vector<Vec2> visits_m;     // where the collector mouth passes for each of them
   std::vector<int> unload_after;  // with a capacity: positions in `order` after which it unloads
+  std::optional<Vec2> unload_m;   // with a capacity: where it unloads
   std::vector<Vec2> waypoints_m;  // the path: start, visits, detours round the net, unloads, end
   std::vector<int> unreachable;   // balls outside the drivable area, not in `order`
   double length_m = 0.0;

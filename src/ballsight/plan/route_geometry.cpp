@@ -65,6 +65,8 @@ void measure_route(const PlanningProblem& problem, const std::vector<RouteStop>&
   route.targets_m.clear();
   route.visits_m.clear();
   route.unload_after.clear();
+  route.unload_m.reset();
+  if (problem.capacity) route.unload_m = problem.capacity->unload_m;
   route.waypoints_m = {problem.robot.position};
   route.length_m = 0.0;
   route.time_s = 0.0;

@@ -8,6 +8,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/json_fields.hpp"
 #include "ballsight/plan/drivable_court.hpp"
+#include "ballsight/robot/basket_tracker.hpp"
 
 namespace ballsight {
 namespace {
@@ -16,6 +17,43 @@ constexpr double kUpdatePeriodS = 0.1;  // the cameras' 10 Hz, until the court's
 
 Vec2 mouth_of(const Pose2D& p, double ahead_m) {
   return p.position + ahead_m * Vec2(std::cos(p.heading_rad), std::sin(p.heading_rad));
+}
+
+constexpr double kSameBallM = 0.3;  // a ball seen this near a mark is the ball marked
+
+/// The stalls on the way to one ball, with no ball collected between them: after `give_up_after`
+/// of them it is unreachable.
+class Tries {
+ public:
+  explicit Tries(int give_up_after) : give_up_after_(give_up_after) {}
+
+  /// A stall on the way to the first visit of update `u`'s route: the ball it is for (the one
+  /// seen nearest the visit) once it has had its tries (again at every stall until reset()).
+  std::optional<Vec2> stalled(const LinkUpdate& u) {
+    if (u.unload_first_m || u.visits_m.empty() || u.balls_m.empty()) return std::nullopt;
+    const Vec2& visit = u.visits_m.front();
+    const Vec2 ball = *std::min_element(
+        u.balls_m.begin(), u.balls_m.end(),
+        [&](const Vec2& a, const Vec2& b) { return (a - visit).norm() < (b - visit).norm(); });
+    tries_ = tries_ > 0 && (ball_ - ball).norm() < kSameBallM ? tries_ + 1 : 1;
+    ball_ = ball;
+    return tries_ >= give_up_after_ ? std::optional<Vec2>(ball) : std::nullopt;
+  }
+  /// A ball was collected, or the one given up on was marked: the count begins again.
+  void reset() { tries_ = 0; }
+
+ private:
+  int give_up_after_;
+  int tries_ = 0;  // stalls on the way to ball_ (0: none yet)
+  Vec2 ball_ = Vec2::Zero();
+};
+
+/// The balls seen that this robot has not given up on.
+int balls_left(const LinkUpdate& u, const std::vector<Vec2>& given_up) {
+  return static_cast<int>(std::count_if(u.balls_m.begin(), u.balls_m.end(), [&](const Vec2& b) {
+    return std::none_of(given_up.begin(), given_up.end(),
+                        [&](const Vec2& g) { return (g - b).norm() < kSameBallM; });
+  }));
 }
 
 }  // namespace
@@ -53,9 +91,8 @@ void CollectorOptions::validate() const {
   require(std::isfinite(max_time_s) && max_time_s >= 0.0, "max_time_s", "must not be negative");
   require(std::isfinite(latency_s) && latency_s >= 0.0 && latency_s <= 5.0, "latency_s",
           "must be in [0, 5] s");
-  require(unload_m.allFinite(), "unload_m", "must be finite");
-  require(std::isfinite(unload_reach_m) && unload_reach_m > 0.0, "unload_reach_m",
-          "must be positive");
+  require(give_up_after >= 1, "give_up_after", "must be at least 1 stall");
+  basket.validate();
   progress.validate();
   pose.validate();
 }
@@ -78,7 +115,9 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   double period_s = kUpdatePeriodS;  // between the last two frame sets, on the court's clock
   bool sim_clock = false;            // the simulated court tells its time: stalls are timed on it
   CollectorResult result;
-  int held = 0;  // balls in the basket, as the collector's sensor counts them
+  Tries tries(options.give_up_after);
+  std::vector<Vec2> given_up;  // balls this robot marked unreachable
+  BasketTracker basket(options.basket);
   int empty = 0;
   const auto started = std::chrono::steady_clock::now();
   while (!stop) {
@@ -117,12 +156,22 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
               : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       // The route empties the basket first, and the mouth is over the unload point: it stands
       // until the basket is empty (no stall: it is working).
-      const bool unloading =
-          u->unload_first && held > 0 &&
-          (mouth_of(*pose, options.follow.mouth_ahead_m) - options.unload_m).norm() <=
-              options.unload_reach_m;
+      const Vec2 mouth = mouth_of(*pose, options.follow.mouth_ahead_m);
+      const bool unloading = basket.standing(*u, mouth);
+      const int stalls = recovery.stalls();
       const std::optional<FollowCommand> freeing =
-          recovery.step(*pose, now_s, !u->balls_m.empty() && !unloading);
+          recovery.step(*pose, now_s, balls_left(*u, given_up) > 0 && !unloading);
+      if (recovery.stalls() > stalls) {
+        if (const std::optional<Vec2> ball = tries.stalled(*u)) {
+          const std::string why = "no progress on the way to it after " +
+                                  std::to_string(options.give_up_after) + " recoveries";
+          if (link.report_unreachable({*ball}, why)) {  // else it is tried again at the next stall
+            given_up.push_back(*ball);
+            tries.reset();
+            ++result.unreachable;
+          }
+        }
+      }
       // Steered from where the robot will be when the command acts.
       const Pose2D acting =
           options.latency_s > 0.0
@@ -130,7 +179,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
               : *pose;
       const FollowCommand wanted = unloading ? FollowCommand{}
                                    : freeing ? *freeing
-                                             : follower.command(acting);
+                                             : basket.approach(*u, mouth, follower.command(acting));
       const GuardedCommand guarded =
           local.guard(acting, wanted, follower.carrot(), options.follow.mouth_ahead_m);
       command = guarded.command;
@@ -160,17 +209,21 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
       ++result.dead_reckoned;
     }
     const int taken = drove ? drove->value("collected", 0) : 0;
-    // The basket: as the court's sensor says, else counted.
-    const int was_held = held;
-    held = drove && drove->contains("held") ? drove->value("held", 0) : held + taken;
-    if (held < was_held + taken) ++result.unloads;
+    // The basket: as the court's sensor says, else counted; the service is told until it knows.
+    basket.answered(taken, drove && drove->contains("held")
+                               ? std::optional<int>(drove->value("held", 0))
+                               : std::nullopt);
+    if (taken > 0) tries.reset();
+    const std::optional<int> tell = basket.to_tell(u->service_id);
     if (taken > 0 && pose) {
-      link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken),
-                                              mouth_of(*pose, options.follow.mouth_ahead_m)),
-                            held);
+      if (link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken),
+                                                  mouth_of(*pose, options.follow.mouth_ahead_m)),
+                                basket.held())) {
+        basket.told(basket.held());
+      }
       result.collected += taken;
-    } else if (held != was_held) {
-      link.report_collected({}, held);
+    } else if (tell && link.report_collected({}, *tell)) {
+      basket.told(*tell);
     }
     link.acknowledge(u->seq);  // last: the update is dealt with, its collected balls reported
     if (progress && result.updates % 100 == 0) {
@@ -178,7 +231,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
                " balls seen, " + std::to_string(result.collected) + " collected, simulated time " +
                std::to_string(static_cast<int>(result.sim_time_s)) + " s");
     }
-    empty = u->balls_m.empty() && u->visits_m.empty() ? empty + 1 : 0;
+    empty = balls_left(*u, given_up) == 0 && u->visits_m.empty() ? empty + 1 : 0;
     if (empty >= options.done_after) {
       result.done = true;
       break;
@@ -186,6 +239,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
   }
   const LinkStatus status = link.status();
   result.stalls = recovery.stalls();
+  result.unloads = basket.unloads();
   result.recoveries = recovery.recoveries();
   result.gaps = status.gaps;
   result.reconnects = status.reconnects;

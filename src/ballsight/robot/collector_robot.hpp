@@ -8,8 +8,12 @@
 // robot with balls left that makes no progress frees itself (progress_recovery.hpp), on the
 // simulated court's clock when it drives there, else on its own. Its basket: when the route
 // empties it first (the basket is full, or the next balls would not fit), the robot drives to
-// the unload point and stands there, mouth over it, until the basket is empty; it tells the
-// service how many balls its basket holds with every report (the simulated court's answer says).
+// the unload point the update names and stands there, mouth over it, until the basket is empty;
+// it tells the service how many balls its basket holds (the simulated court's answer says) with
+// every report of collected balls, and again until the service has it (basket_tracker.hpp).
+// A ball it stalls on the way to `give_up_after` times, with no ball collected between, it marks
+// unreachable, with why; the service plans the rest without it, and the robot counts it no more
+// among the balls left.
 
 #include <atomic>
 #include <cstdint>
@@ -18,6 +22,7 @@
 #include <vector>
 
 #include "ballsight/plan/drivable_court.hpp"
+#include "ballsight/robot/basket_tracker.hpp"
 #include "ballsight/robot/local_planner.hpp"
 #include "ballsight/robot/path_follower.hpp"
 #include "ballsight/robot/pose_tracker.hpp"
@@ -47,8 +52,8 @@ struct CollectorOptions {
   double latency_s = 0.0;
   ProgressOptions progress;  // when it is stalled and how it frees itself
   PoseTrackerOptions pose;   // how far it drives on its own estimate out of the cameras' sight
-  Vec2 unload_m = Site{}.unload_point();  // where the basket is emptied (the site's)
-  double unload_reach_m = 0.3;  // the mouth this near it: the robot stands to empty the basket
+  int give_up_after = 3;     // stalls on the way to the same ball before it is marked unreachable
+  BasketOptions basket;      // the stop to empty the basket
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
@@ -64,6 +69,7 @@ struct CollectorResult {
                           // own estimate (pose_tracker.hpp)
   int guarded = 0;        // commands the local planner slowed, replaced or stopped
   int unloads = 0;        // times it emptied its basket
+  int unreachable = 0;    // balls it gave up on
   std::uint64_t gaps = 0;
   int reconnects = 0;
   double sim_time_s = 0.0;  // the simulated court's clock at the last command

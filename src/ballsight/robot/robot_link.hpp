@@ -26,7 +26,8 @@ struct LinkUpdate {
   std::vector<Vec2> balls_m;
   std::vector<Vec2> visits_m;     // where the collector passes, in order
   std::vector<Vec2> waypoints_m;  // the path to drive
-  bool unload_first = false;      // the route empties the basket before its next ball
+  /// Where the route empties the basket before its next ball (none: it does not).
+  std::optional<Vec2> unload_first_m;
 };
 
 struct LinkStatus {
@@ -53,6 +54,9 @@ class RobotLink {
   /// Balls collected at `positions`, and the balls the basket holds now when `held` says (0
   /// after emptying it, with no positions).
   virtual bool report_collected(const std::vector<Vec2>& positions, std::optional<int> held) = 0;
+  /// Balls it gave up on (it could not reach them), and why: the service plans without them.
+  virtual bool report_unreachable(const std::vector<Vec2>& positions,
+                                  const std::string& reason) = 0;
   virtual bool set_pose(const Pose2D& pose) = 0;
   /// The simulated court only: the wheels' command for update `seq` (speed m/s, turn rate deg/s,
   /// counter-clockwise); answers {"collected", "held", "time_s", "odometry"}, nullopt when

@@ -150,6 +150,13 @@ void NavigationHub::add_collected(const std::vector<Vec2>& positions) {
   keep_newest(for_hand_, kMaxCollected);
 }
 
+void NavigationHub::mark_unreachable(const std::vector<Vec2>& positions,
+                                     const std::string& reason) {
+  const std::lock_guard lock(mutex_);
+  for (const Vec2& p : positions) unreachable_.push_back({p, reason});
+  keep_newest(unreachable_, kMaxUnreachable);
+}
+
 void NavigationHub::set_basket(int held) {
   const std::lock_guard lock(mutex_);
   basket_ = External<int>{held, utc_now_ns()};
@@ -188,7 +195,7 @@ std::vector<bool> taken_by_reports(const std::vector<Vec2>& balls,
 
 ClientReports NavigationHub::reports() const {
   const std::lock_guard lock(mutex_);
-  return {robot_, balls_, positions(collected_), basket_};
+  return {robot_, balls_, positions(collected_), basket_, unreachable_};
 }
 
 void NavigationHub::frames_fused(std::int64_t capture_ns) {

@@ -24,6 +24,13 @@ namespace ballsight {
 /// `digits` random hexadecimal digits (std::random_device).
 std::string random_hex(int digits);
 
+/// A ball the robot gave up on (it could not reach it after a bounded number of tries), where it
+/// was and why: the planner leaves balls there out.
+struct UnreachableMark {
+  Vec2 position_m = Vec2::Zero();
+  std::string reason;
+};
+
 /// One published value: what the cameras saw and where the robot should go.
 struct NavigationUpdate {
   std::uint64_t seq = 0;             // 1, 2, ... in publishing order
@@ -31,6 +38,7 @@ struct NavigationUpdate {
   std::int64_t published_ns = 0;     // UTC, when it was published
   WorldModel world;
   Route route;
+  std::vector<UnreachableMark> given_up;  // the balls the robot marked unreachable, oldest first
 };
 
 /// A pose or ball list a client set (PUT), with when it was set.
@@ -49,6 +57,8 @@ struct ClientReports {
   std::vector<Vec2> collected;
   /// The balls in the robot's basket, as it last reported them (none reported: empty).
   std::optional<External<int>> basket;
+  /// Balls the robot marked unreachable.
+  std::vector<UnreachableMark> unreachable;
 };
 
 /// A ball reported collected is a ball seen this close to where it was reported.
@@ -107,6 +117,10 @@ class NavigationHub {
   /// The balls the robot's basket holds now (it reports them with its collected balls, and 0
   /// after emptying it).
   void set_basket(int held);
+  /// Balls the robot gave up on: left out of every plan from now on (the balls seen within
+  /// kCollectedMatchM of a mark). At most kMaxUnreachable are kept (the oldest go first).
+  void mark_unreachable(const std::vector<Vec2>& positions, const std::string& reason);
+  static constexpr std::size_t kMaxUnreachable = 256;
   std::vector<Vec2> collected() const;
   /// The robot pose, ball list and collected balls clients reported, as one consistent value.
   ClientReports reports() const;
@@ -135,6 +149,7 @@ class NavigationHub {
   std::optional<External<std::vector<Vec2>>> balls_;
   std::vector<External<Vec2>> collected_;
   std::optional<External<int>> basket_;
+  std::vector<UnreachableMark> unreachable_;
   std::vector<Vec2> for_hand_;
 };
 

@@ -32,11 +32,17 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
       distinct.push_back(b);
     }
   }
-  // Less the balls the robot reported collected, one for each report.
+  // Less the balls the robot reported collected, one for each report, and those it gave up on.
   const std::vector<bool> taken = taken_by_reports(distinct, reports.collected);
+  update.given_up = reports.unreachable;
+  const auto given_up = [&](const Vec2& b) {
+    return std::any_of(
+        reports.unreachable.begin(), reports.unreachable.end(),
+        [&](const UnreachableMark& m) { return (m.position_m - b).norm() < kCollectedMatchM; });
+  };
   std::vector<Vec2> left;
   for (std::size_t i = 0; i < distinct.size(); ++i) {
-    if (!taken[i]) left.push_back(distinct[i]);
+    if (!taken[i] && !given_up(distinct[i])) left.push_back(distinct[i]);
   }
   if (!robot) {
     update.route.planner = std::string(planner_name(options.kind));

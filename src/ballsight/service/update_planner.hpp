@@ -4,7 +4,8 @@
 // (or a client's list, if newer) less those the robot reported collected, warm-started from the
 // previous route so that the robot's target does not flap. With more balls left than the robot's
 // basket has room for (site robot.capacity, less the balls it reported holding) the route goes
-// to the unload point when the basket is full.
+// to the unload point when the basket is full. Balls the robot marked unreachable stay out of
+// the route, and the update lists the marks.
 
 #include <cstdint>
 

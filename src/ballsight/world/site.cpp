@@ -105,6 +105,14 @@ SiteColours read_colours(YamlMap map) {
   return colours;
 }
 
+// An unload point clear of the fence's lane and of the net's.
+bool clear_to_unload(const SiteCourt& court, const Vec2& p) {
+  const double x = std::abs(p.x()), y = std::abs(p.y());
+  return x <= court.area_length_m / 2.0 - court.fence_lane_m &&
+         y <= court.area_width_m / 2.0 - court.fence_lane_m &&
+         !(court.net && x < court.net_travel_clearance_m);
+}
+
 SiteRobot read_robot(YamlMap map, const SiteCourt& court) {
   SiteRobot robot;
   read_length(map, "marker_radius_m", robot.marker_radius_m);
@@ -124,11 +132,8 @@ SiteRobot read_robot(YamlMap map, const SiteCourt& court) {
   if (const auto v = map.find("unload_m")) {
     const std::vector<double> p = v->numbers(2);
     robot.unload_m = Vec2(p[0], p[1]);
-    const double x = std::abs(p[0]), y = std::abs(p[1]);
-    if (x > court.area_length_m / 2.0 - court.fence_lane_m ||
-        y > court.area_width_m / 2.0 - court.fence_lane_m ||
-        (court.net && x < court.net_travel_clearance_m)) {
-      v->fail("must lie inside the fence's lane and off the net's (unload_m " + fixed(p[0], 2) +
+    if (!clear_to_unload(court, *robot.unload_m)) {
+      v->fail("must be clear of the fence's lane and of the net's (unload_m " + fixed(p[0], 2) +
               ", " + fixed(p[1], 2) + ")");
     }
   }
@@ -224,6 +229,11 @@ Site parse_site(std::string_view text, const fs::path& file) {
   if (const auto v = root.find("robot")) site.robot = read_robot(v->map(), site.court);
   read_cameras(root.at("cameras"), site, base);
   root.finish();
+  if (!clear_to_unload(site.court, site.unload_point())) {
+    throw InputError(file.string() + ": the default unload point (" +
+                     fixed(site.unload_point().x(), 2) + ", " + fixed(site.unload_point().y(), 2) +
+                     ") is not clear of the fence's lane: give robot.unload_m");
+  }
   return site;
 }
 
