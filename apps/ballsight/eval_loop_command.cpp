@@ -85,7 +85,8 @@ void add_eval_loop_command(CLI::App& eval) {
   add_seed_option(*cmd, args->options.seed, "Seed of the first scene (scene k: seed + k)");
   cmd->add_option("--scenes", args->options.scenes,
                   "Scenes (ball counts spread over the range; layouts in turn: uniform, clustered, "
-                  "along the net, along the fence, around the net posts)")
+                  "along the net, along the fence, around the net posts; the default mix of 24 "
+                  "scenes of 10-120 balls takes a few hours)")
       ->capture_default_str();
   cmd->add_option("--layouts", args->layouts,
                   "Comma-separated layouts taken in turn instead of all five (uniform, clustered, "

@@ -95,8 +95,10 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
 
 struct LoopEvalOptions {
   std::uint64_t seed = 1;
-  int scenes = 4;  // ball counts spread over [min_balls, max_balls], layouts in turn (loop_layouts)
-  int min_balls = 10, max_balls = 60;
+  // The default mix: 24 scenes, the five layouts in turn (loop_layouts), 10 to 120 balls spread
+  // evenly over them (the scenes over the basket's 60 balls need an unload trip).
+  int scenes = 24;
+  int min_balls = 10, max_balls = 120;
   double max_time_s = 400.0;         // simulated, per run
   std::vector<std::string> systems;  // empty: all three
   std::vector<std::string> layouts;  // LoopLayout::name()s taken in turn; empty: all
