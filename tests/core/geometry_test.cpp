@@ -52,6 +52,13 @@ TEST(Pose2D, MovesAlongAnArc) {
   EXPECT_NEAR(spin.heading_rad, 3.5 - 2.0 * kPi, 1e-12);
 }
 
+TEST(Pose2D, APointAheadAlongTheHeading) {
+  const Pose2D pose{Vec2(1, 2), kPi / 2.0};
+  EXPECT_NEAR((pose.ahead(0.3) - Vec2(1, 2.3)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((pose.ahead(-0.5) - Vec2(1, 1.5)).norm(), 0.0, 1e-12);
+  EXPECT_EQ(pose.ahead(0.0), Vec2(1, 2));
+}
+
 TEST(Rigid2, ComposesAndInverts) {
   SCOPED_TRACE("seed " + std::to_string(kSeed));
   std::mt19937 rng(kSeed);

@@ -19,11 +19,6 @@ CourtWorld court_with_balls_ahead(const CollectorBasket& basket) {
   return CourtWorld(scene, TennisCourtSpec{}, DriveLimits{}, RobotFootprint{}, {}, basket);
 }
 
-Vec2 mouth(const CourtWorld& world) {
-  const Pose2D& p = world.motion().pose;
-  return p.position + RobotFootprint{}.collector_x_m * Vec2(std::cos(p.heading_rad), 0.0);
-}
-
 TEST(CollectorBasket, AFullBasketTakesNoMore) {
   CourtWorld world = court_with_balls_ahead({2, Vec2(-15, 0), 5.0, 0.5});
   for (int k = 0; k < 30; ++k) world.advance({1.0, 0.0}, 0.1);  // over the first three
@@ -44,8 +39,9 @@ TEST(CollectorBasket, EmptiedByStandingAtTheUnloadPoint) {
 
   CourtWorld world = court_with_balls_ahead(basket);
   for (int k = 0; k < 25; ++k) world.advance({1.0, 0.0}, 0.1);
-  world.advance({0.0, 0.0}, 0.5);                   // brakes
-  basket.unload_m = mouth(world) + Vec2(0.3, 0.2);  // within 0.5 m of where the mouth stands
+  world.advance({0.0, 0.0}, 0.5);  // brakes
+  basket.unload_m = world.motion().pose.ahead(RobotFootprint{}.collector_x_m) +
+                    Vec2(0.3, 0.2);  // within 0.5 m of where the mouth stands
   CourtWorld there = court_with_balls_ahead(basket);
   for (int k = 0; k < 25; ++k) there.advance({1.0, 0.0}, 0.1);
   there.advance({0.0, 0.0}, 0.5);

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace ballsight {
 
@@ -42,6 +43,10 @@ struct Pose2D {
   double heading_rad = 0.0;
 
   Rigid2 field_from_robot() const { return {position, heading_rad}; }
+  /// The point `distance` ahead of the position along the heading (a collector's mouth).
+  Vec2 ahead(double distance) const {
+    return position + distance * Vec2(std::cos(heading_rad), std::sin(heading_rad));
+  }
 };
 
 /// Where a robot at `pose` is after `dt` seconds at forward speed `speed` (m/s) and turn rate

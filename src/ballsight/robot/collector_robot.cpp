@@ -15,10 +15,6 @@ namespace {
 
 constexpr double kUpdatePeriodS = 0.1;  // the cameras' 10 Hz, until the court's clock tells
 
-Vec2 mouth_of(const Pose2D& p, double ahead_m) {
-  return p.position + ahead_m * Vec2(std::cos(p.heading_rad), std::sin(p.heading_rad));
-}
-
 constexpr double kSameBallM = 0.3;  // a ball seen this near a mark is the ball marked
 
 /// The stalls on the way to one ball, with no ball collected between them: after `give_up_after`
@@ -156,7 +152,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
               : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       // The route empties the basket first, and the mouth is over the unload point: it stands
       // until the basket is empty (no stall: it is working).
-      const Vec2 mouth = mouth_of(*pose, options.follow.mouth_ahead_m);
+      const Vec2 mouth = pose->ahead(options.follow.mouth_ahead_m);
       const bool unloading = basket.standing(*u, mouth);
       const int stalls = recovery.stalls();
       const std::optional<FollowCommand> freeing =
@@ -217,7 +213,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
     const std::optional<int> tell = basket.to_tell(u->service_id);
     if (taken > 0 && pose) {
       if (link.report_collected(std::vector<Vec2>(static_cast<std::size_t>(taken),
-                                                  mouth_of(*pose, options.follow.mouth_ahead_m)),
+                                                  pose->ahead(options.follow.mouth_ahead_m)),
                                 basket.held())) {
         basket.told(basket.held());
       }

@@ -42,9 +42,7 @@ void CourtWorld::resume(double time_s, const Pose2D& pose, const std::vector<int
 }
 
 bool CourtWorld::unloading_step() {
-  const Vec2 mouth =
-      motion_.pose.position + footprint_.collector_x_m * Vec2(std::cos(motion_.pose.heading_rad),
-                                                              std::sin(motion_.pose.heading_rad));
+  const Vec2 mouth = motion_.pose.ahead(footprint_.collector_x_m);
   const bool still = std::abs(motion_.speed_mps) < 0.05 && std::abs(motion_.turn_rate_rps) < 0.1;
   if (basket_.capacity == 0 || held_ == 0 || !still ||
       (mouth - basket_.unload_m).norm() > basket_.reach_m) {

@@ -31,8 +31,7 @@ void HiddenBallMemory::apply(WorldModel& world) {
   if (world.robot) {
     const Pose2D& pose = world.robot->pose;
     const Vec2& robot = pose.position;
-    const Vec2 mouth = robot + options_.mouth_ahead_m *
-                                   Vec2(std::cos(pose.heading_rad), std::sin(pose.heading_rad));
+    const Vec2 mouth = pose.ahead(options_.mouth_ahead_m);
     const auto hidden = [&](const Vec2& p) {
       return (p - robot).norm() < options_.near_robot_m && !near_any(p, world.balls, of_ball);
     };
