@@ -6,10 +6,13 @@
 #include "ballsight/sim/court_renderer.hpp"
 #include "ballsight/sim/court_scenario.hpp"
 #include "ballsight/sim/silhouette.hpp"
+#include "polygon_area.hpp"
 #include "sim/court_test_support.hpp"
 
 namespace ballsight::sim {
 namespace {
+
+using test_support::polygon_area;
 
 using test_support::clean_scenario;
 using test_support::render_in_all_cameras;
@@ -79,16 +82,6 @@ bool isolated(const CourtRender& render, int index, int allowed, const std::vect
 /// Below this silhouette area (a radius of 1.6 px) a blob is a handful of mixed pixels and its
 /// centroid depends on the colour thresholds more than on the renderer.
 constexpr double kMinBlobAreaPx = 8.0;
-
-double polygon_area(const std::vector<Vec2>& polygon) {
-  double area2 = 0.0;
-  for (size_t i = 0; i < polygon.size(); ++i) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[(i + 1) % polygon.size()];
-    area2 += a.x() * b.y() - b.x() * a.y();
-  }
-  return std::abs(area2) / 2.0;
-}
 
 struct CentroidStats {
   std::map<ObjectKind, int> checked;

@@ -9,9 +9,12 @@
 #include "ballsight/sim/omni_scenario.hpp"
 #include "ballsight/sim/silhouette.hpp"
 #include "omni_blobs.hpp"
+#include "polygon_area.hpp"
 
 namespace ballsight::sim {
 namespace {
+
+using test_support::polygon_area;
 
 OmniRigParams misaligned_rig() {
   OmniRigParams rig;
@@ -19,16 +22,6 @@ OmniRigParams misaligned_rig() {
   rig.tilt_azimuth_deg = 40.0;
   rig.center_offset_px = {4.0, -3.0};
   return rig;
-}
-
-double polygon_area(const std::vector<Vec2>& polygon) {
-  double twice = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[(i + 1) % polygon.size()];
-    twice += a.x() * b.y() - b.x() * a.y();
-  }
-  return 0.5 * std::abs(twice);
 }
 
 TEST(OmniRender, BallBlobCentroidMatchesTheAnalyticSilhouette) {

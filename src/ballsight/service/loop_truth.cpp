@@ -28,6 +28,7 @@ TruthTick tick_of(const json& j, const std::string& where) {
   t.world.blocked = j.at("blocked").get<bool>();
   t.world.held = j.value("held", 0);  // absent from records written before the basket
   t.world.unloaded = j.value("unloaded", false);
+  t.world.clearance_m = j.value("clearance_m", NAN);  // absent from records before obstacles
   t.seq = j.at("seq").get<std::uint64_t>();
   t.command.speed_mps = j.at("command").at("speed_mps").get<double>();
   t.command.turn_rate_rps = rad_from_deg(j.at("command").at("turn_rate_dps").get<double>());
@@ -53,23 +54,25 @@ json scene_record(std::uint64_t seed, const std::vector<SceneBall>& balls, const
 }
 
 json tick_record(const TruthTick& t) {
-  return {{"kind", "tick"},
-          {"time_s", t.world.time_s},
-          {"seq", t.seq},
-          {"robot", pose_json(t.world.robot)},
-          {"command",
-           {{"speed_mps", t.command.speed_mps},
-            {"turn_rate_dps", deg_from_rad(t.command.turn_rate_rps)}}},
-          {"collected", t.world.collected},
-          {"balls_left", t.world.balls_left},
-          {"blocked", t.world.blocked},
-          {"held", t.world.held},
-          {"unloaded", t.world.unloaded},
-          {"published",
-           {{"robot", t.published.robot ? pose_json(*t.published.robot) : json(nullptr)},
-            {"balls_seen", t.published.balls_seen},
-            {"waypoints_m", points_json(t.published.waypoints_m)}}},
-          {"removed_by_hand", t.removed_by_hand}};
+  json j = {{"kind", "tick"},
+            {"time_s", t.world.time_s},
+            {"seq", t.seq},
+            {"robot", pose_json(t.world.robot)},
+            {"command",
+             {{"speed_mps", t.command.speed_mps},
+              {"turn_rate_dps", deg_from_rad(t.command.turn_rate_rps)}}},
+            {"collected", t.world.collected},
+            {"balls_left", t.world.balls_left},
+            {"blocked", t.world.blocked},
+            {"held", t.world.held},
+            {"unloaded", t.world.unloaded},
+            {"published",
+             {{"robot", t.published.robot ? pose_json(*t.published.robot) : json(nullptr)},
+              {"balls_seen", t.published.balls_seen},
+              {"waypoints_m", points_json(t.published.waypoints_m)}}},
+            {"removed_by_hand", t.removed_by_hand}};
+  if (!std::isnan(t.world.clearance_m)) j["clearance_m"] = t.world.clearance_m;
+  return j;
 }
 
 json event_record(const TruthEvent& e) {
@@ -153,7 +156,9 @@ LoopScore score_loop(int balls, const Pose2D& start, const std::vector<sim::Worl
     score.blocked_ticks += t.blocked ? 1 : 0;
     score.unloads += t.unloaded ? 1 : 0;
     score.min_clearance_m =
-        std::min(score.min_clearance_m, sim::footprint_clearance(footprint, t.robot, court));
+        std::min(score.min_clearance_m, std::isnan(t.clearance_m)
+                                            ? sim::footprint_clearance(footprint, t.robot, court)
+                                            : t.clearance_m);
     score.never_overlapped = score.never_overlapped && score.min_clearance_m > 0.0;
     score.time_s = t.time_s;
     if (t.balls_left == 0) {

@@ -5,7 +5,8 @@
 // "time_s", "seq" (the update published from the tick's frames, 0: none), "robot" (true pose
 // after the tick), "command": {"speed_mps", "turn_rate_dps"}, "collected": [ball ids],
 // "balls_left", "blocked", "held" (balls in the basket after it), "unloaded" (the basket was
-// emptied in it), "published": {"robot" (as the cameras saw it, or null), "balls_seen",
+// emptied in it), "clearance_m" (the body's nearest approach to the net, the fence or an obstacle
+// in it), "published": {"robot" (as the cameras saw it, or null), "balls_seen",
 // "waypoints_m"}, "removed_by_hand": [ball ids]}. And events as they happen: {"kind": "event",
 // "time_s", "what"} (the service started or resumed, a camera failed). A restarted service resumes
 // the court from this record.

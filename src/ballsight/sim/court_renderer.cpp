@@ -65,14 +65,23 @@ CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_s
   boxes.push_back(floor_box_pixel_box(camera_, robot, size));
   for (const FloorBottle& b : scene.bottles)
     boxes.push_back(floor_box_pixel_box(camera_, b.bounds(), size));
+  const int first_obstacle = static_cast<int>(boxes.size());
+  for (const CourtObstacle& b : scene.obstacles)
+    boxes.push_back(floor_box_pixel_box(camera_, b.bounds(), size));
   out.coverage.assign(boxes.size(), {});
 
   const Vec3& o = center_in_field_;
-  // Object i: a sphere, the robot, or a bottle (in the order of `boxes`).
+  const auto bottle = [&](int i) -> const FloorBottle& {
+    return scene.bottles[static_cast<size_t>(i - robot_index - 1)];
+  };
+  const auto obstacle = [&](int i) -> const CourtObstacle& {
+    return scene.obstacles[static_cast<size_t>(i - first_obstacle)];
+  };
+  // Object i: a sphere, the robot, a bottle or an obstacle (in the order of `boxes`).
   const auto hit = [&](int i, const Vec3& d) -> std::optional<BoxHit> {
     if (i == robot_index) return intersect_floor_box(o, d, robot);
-    if (i > robot_index)
-      return scene.bottles[static_cast<size_t>(i - robot_index - 1)].intersect(o, d);
+    if (i >= first_obstacle) return obstacle(i).intersect(o, d);
+    if (i > robot_index) return bottle(i).intersect(o, d);
     const SceneSphere& s = spheres[static_cast<size_t>(i)];
     const std::optional<double> t = intersect_sphere(o, d, s.center_in_field, s.radius_m);
     if (!t) return std::nullopt;
@@ -80,7 +89,8 @@ CourtRender CourtRenderer::render(const CourtScene& scene, std::uint64_t noise_s
   };
   const auto albedo = [&](int i) -> const cv::Vec3b& {
     if (i == robot_index) return scene.robot.bgr;
-    if (i > robot_index) return scene.bottles[static_cast<size_t>(i - robot_index - 1)].bgr;
+    if (i >= first_obstacle) return obstacle(i).bgr;
+    if (i > robot_index) return bottle(i).bgr;
     return spheres[static_cast<size_t>(i)].bgr;
   };
 

@@ -37,7 +37,7 @@ struct CourtRender {
   cv::Mat bgr;         // CV_8UC3, after the scene's image effects
   cv::Mat object_ids;  // CV_32S: object seen at each pixel centre, -1 for the background
   /// Per object: scene.spheres() in order, then the robot box (index spheres().size()), then
-  /// scene.bottles in order.
+  /// scene.bottles in order, then scene.obstacles in order.
   std::vector<ObjectCoverage> coverage;
 };
 

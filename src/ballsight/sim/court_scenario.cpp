@@ -200,6 +200,7 @@ void CourtScenarioOptions::validate() const {
   effects.jpeg_quality = jpeg_quality;
   effects.motion_blur_px = motion_blur_px;
   effects.validate();
+  obstacles.validate();
 }
 
 std::vector<Vec3> reference_ball_positions(const TennisCourtSpec& court) {
@@ -332,6 +333,7 @@ CourtScene make_court_scene(const TennisCourtSpec& court, const CourtScenarioOpt
     scene.effects.motion_blur_px = options.motion_blur_px;
     scene.effects.motion_blur_deg = uniform(rng, 0.0, 180.0);
   }
+  add_obstacles(scene, court, options.obstacles, seed);
   scene.validate();
   return scene;
 }

@@ -3,13 +3,15 @@
 // tight clusters of touching balls and some right next to the robot (so that the robot hides them
 // from some cameras), reference balls at line intersections, a random robot pose, a random sun,
 // a shadow band across the court (sun, hard shadow or overcast light; indoor light when asked),
-// worn balls, a brightness change, fallen leaves, a water bottle and sensor noise.
+// worn balls, a brightness change, fallen leaves, a water bottle, people and bags, and sensor
+// noise.
 
 #include <cstdint>
 #include <optional>
 #include <string_view>
 #include <vector>
 
+#include "ballsight/sim/court_obstacles.hpp"
 #include "ballsight/sim/court_scene.hpp"
 #include "ballsight/sim/tennis_court.hpp"
 
@@ -46,6 +48,9 @@ struct CourtScenarioOptions {
   /// Every frame smeared by this many pixels (ImageEffects::motion_blur_px), in a direction
   /// drawn per scene; 0: none. Drawn last, so that the scenes of a seed stay as they were.
   double motion_blur_px = 0.0;
+  /// People and bags on the court (court_obstacles.hpp), drawn from a stream of their own: the
+  /// rest of a seed's scene stays as it was. None by default.
+  ObstacleOptions obstacles;
 
   static constexpr int kMaxBalls = 200;
   /// Throws InputError naming the first invalid field.

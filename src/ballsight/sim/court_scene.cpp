@@ -107,8 +107,13 @@ bool FloorLeaf::covers(const Vec2& p_in_field) const {
   return u * u + v * v <= 1.0;
 }
 
-std::optional<BoxHit> FloorBottle::intersect(const Vec3& origin, const Vec3& direction) const {
-  const Vec3 o = origin - Vec3(center_in_field.x(), center_in_field.y(), 0.0);
+namespace {
+
+/// First hit of a ray with an upright cylinder standing on the floor at `center`, from outside.
+std::optional<BoxHit> intersect_floor_cylinder(const Vec3& origin, const Vec3& direction,
+                                               const Vec2& center, double radius_m,
+                                               double height_m) {
+  const Vec3 o = origin - Vec3(center.x(), center.y(), 0.0);
   std::optional<BoxHit> best;
   // The side: |o_xy + t d_xy| = radius, with z in [0, height].
   const double a = direction.head<2>().squaredNorm();
@@ -128,6 +133,12 @@ std::optional<BoxHit> FloorBottle::intersect(const Vec3& origin, const Vec3& dir
       best = BoxHit{t, Vec3::UnitZ()};
   }
   return best;
+}
+
+}  // namespace
+
+std::optional<BoxHit> FloorBottle::intersect(const Vec3& origin, const Vec3& direction) const {
+  return intersect_floor_cylinder(origin, direction, center_in_field, radius_m, height_m);
 }
 
 FloorBox FloorBottle::bounds() const {
@@ -162,9 +173,44 @@ void CourtScene::validate() const {
                 bottle.height_m < 2.0,
             where, "radius must be in (0, 1) m and height in (0, 2) m");
   }
+  for (size_t i = 0; i < obstacles.size(); ++i) {
+    const CourtObstacle& o = obstacles[i];
+    const std::string where = "obstacles[" + std::to_string(i) + "]";
+    require(o.pose.position.allFinite() && std::isfinite(o.pose.heading_rad), where + ".pose",
+            "must be finite");
+    require(positive(o.half_size.x()) && positive(o.half_size.y()) && o.half_size.maxCoeff() < 2.0,
+            where + ".half_size", "must be in (0, 2) m");
+    require(positive(o.height_m) && o.height_m < 2.5, where + ".height_m", "must be in (0, 2.5) m");
+    require(!o.walk_to || o.walk_to->allFinite(), where + ".walk_to", "must be finite");
+    require(std::isfinite(o.walk_mps) && o.walk_mps >= 0.0 && o.walk_mps <= 2.0,
+            where + ".walk_mps", "must be in [0, 2] m/s");
+  }
   robot.validate();
   lighting.validate();
   effects.validate();
+}
+
+std::string_view obstacle_kind_name(ObstacleKind kind) {
+  return kind == ObstacleKind::person ? "person" : "bag";
+}
+
+std::optional<BoxHit> CourtObstacle::intersect(const Vec3& origin, const Vec3& direction) const {
+  if (kind == ObstacleKind::person)
+    return intersect_floor_cylinder(origin, direction, pose.position, half_size.x(), height_m);
+  return intersect_floor_box(origin, direction, bounds());
+}
+
+FloorBox CourtObstacle::bounds() const {
+  if (kind == ObstacleKind::person)
+    return {Pose2D{pose.position, 0.0}, Vec2::Constant(half_size.x()), height_m};
+  return {pose, half_size, height_m};
+}
+
+double CourtObstacle::floor_distance(const Vec2& p) const {
+  if (kind == ObstacleKind::person)
+    return std::max(0.0, (p - pose.position).norm() - half_size.x());
+  const Vec2 local = pose.field_from_robot().inverse() * p;
+  return (local.cwiseAbs() - half_size).cwiseMax(0.0).norm();
 }
 
 std::vector<SceneSphere> CourtScene::spheres() const {

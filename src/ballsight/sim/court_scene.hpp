@@ -115,10 +115,38 @@ struct FloorBottle {
   FloorBox bounds() const;
 };
 
+/// Something standing on the court that the robot must go round and the cameras see: a person
+/// (an upright cylinder: legs, body and arms as one) or a bag (a box on the floor). A walking
+/// person goes at `walk_mps` towards `walk_to` and back to where it began, again and again, and
+/// stops while the robot is near (sim/court_world.hpp).
+enum class ObstacleKind { person, bag };
+
+/// "person", "bag".
+std::string_view obstacle_kind_name(ObstacleKind kind);
+
+struct CourtObstacle {
+  ObstacleKind kind = ObstacleKind::person;
+  Pose2D pose;                        // the footprint's centre; a bag's heading
+  Vec2 half_size = Vec2(0.22, 0.22);  // a person: x is the radius; a bag: half length, width
+  double height_m = 1.75;
+  cv::Vec3b bgr{40, 40, 150};   // clothes or the bag's cloth
+  std::optional<Vec2> walk_to;  // a walking person's turning point
+  double walk_mps = 0.3;
+
+  /// First hit of the ray `origin + t * direction` (unit direction) from outside; nullopt when
+  /// it misses.
+  std::optional<BoxHit> intersect(const Vec3& origin, const Vec3& direction) const;
+  /// The box that holds it (for the pixel box of its image).
+  FloorBox bounds() const;
+  /// The distance on the floor from `p` to its footprint, 0 inside.
+  double floor_distance(const Vec2& p) const;
+};
+
 struct CourtScene {
   std::vector<SceneSphere> balls;    // tennis balls and reference balls
   std::vector<FloorLeaf> leaves;     // distractors flat on the floor
   std::vector<FloorBottle> bottles;  // distractors standing on it
+  std::vector<CourtObstacle> obstacles;
   RobotBox robot;
   Lighting lighting;
   ImageEffects effects;  // brightness gain (exposure), blur and sensor noise

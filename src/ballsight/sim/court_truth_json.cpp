@@ -68,6 +68,21 @@ Json bottles_json(const std::vector<FloorBottle>& bottles) {
   return out;
 }
 
+Json obstacles_json(const std::vector<CourtObstacle>& obstacles) {
+  Json out = Json::array();
+  for (const CourtObstacle& o : obstacles) {
+    Json j = {{"kind", obstacle_kind_name(o.kind)},
+              {"position_m", json_vec2(o.pose.position)},
+              {"heading_rad", o.pose.heading_rad},
+              {"half_size_m", json_vec2(o.half_size)},
+              {"height_m", o.height_m},
+              {"bgr", {o.bgr[0], o.bgr[1], o.bgr[2]}}};
+    if (o.walk_to) j["walk_to_m"] = json_vec2(*o.walk_to);
+    out.push_back(j);
+  }
+  return out;
+}
+
 Json robot_json(const RobotBox& r) {
   return {{"position_m", json_vec2(r.pose.position)},
           {"heading_rad", r.pose.heading_rad},
@@ -139,6 +154,7 @@ Json court_scene_json(const CourtRig& rig, const CourtScene& scene,
           {"lighting", lighting_json(scene.lighting, scene.effects)},
           {"leaves", leaves_json(scene.leaves)},
           {"bottles", bottles_json(scene.bottles)},
+          {"obstacles", obstacles_json(scene.obstacles)},
           {"robot", robot_json(scene.robot)},
           {"objects", objects}};
 }

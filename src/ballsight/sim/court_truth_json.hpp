@@ -16,7 +16,8 @@
 
 namespace ballsight::sim {
 
-inline constexpr int kCourtTruthVersion = 3;  // 2: the net; 3: light, leaves, bottles, colours
+inline constexpr int kCourtTruthVersion =
+    4;  // 2: the net; 3: light, leaves, bottles, colours; 4: obstacles
 
 /// {"rvec", "tvec", "rotation"} of a rigid transform (OpenCV's rvec; rotation row by row).
 Json rigid3_json(const Rigid3& transform);

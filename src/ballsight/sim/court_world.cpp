@@ -18,6 +18,24 @@ CourtWorld::CourtWorld(CourtScene scene, const TennisCourtSpec& court, const Dri
   limits_.validate();
   imperfections_.validate();
   motion_.pose = scene_.robot.pose;
+  for (const CourtObstacle& o : scene_.obstacles) walk_from_.push_back(o.pose.position);
+  walking_out_.assign(scene_.obstacles.size(), true);
+}
+
+void CourtWorld::walk_step() {
+  for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
+    CourtObstacle& o = scene_.obstacles[i];
+    if (!o.walk_to || (o.pose.position - motion_.pose.position).norm() < kWalkerWaitM) continue;
+    const Vec2 target = walking_out_[i] ? *o.walk_to : walk_from_[i];
+    const Vec2 to = target - o.pose.position;
+    const double step = o.walk_mps * kStepS;
+    if (to.norm() <= step) {
+      o.pose.position = target;
+      walking_out_[i] = !walking_out_[i];
+    } else {
+      o.pose.position += step * to.normalized();
+    }
+  }
 }
 
 int CourtWorld::balls_left() const {
@@ -75,13 +93,19 @@ const WorldTick& CourtWorld::advance(const DriveCommand& command, double seconds
       slip_.speed = keep * slip_.speed + kick * normal(rng_);
       slip_.turn = keep * slip_.turn + kick * normal(rng_);
     }
+    walk_step();
     const Pose2D before = motion_.pose;
-    const DriveStep step = drive_step(motion_, acting_, kStepS, limits_, footprint_, court_, slip_);
+    const DriveStep step =
+        drive_step(motion_, acting_, kStepS, limits_, footprint_, court_, scene_.obstacles, slip_);
     // The wheels turned at the step's mean speeds (a blocked robot's wheels as its motion says).
     odometry_ = along_arc(odometry_, 0.5 * (motion_.speed_mps + step.motion.speed_mps),
                           0.5 * (motion_.turn_rate_rps + step.motion.turn_rate_rps), kStepS);
     motion_ = step.motion;
     tick.blocked = tick.blocked || step.blocked;
+    const double clearance =
+        footprint_clearance(footprint_, motion_.pose, court_, scene_.obstacles);
+    tick.clearance_m =
+        std::isnan(tick.clearance_m) ? clearance : std::min(tick.clearance_m, clearance);
     const std::size_t room = basket_.capacity > 0
                                  ? static_cast<std::size_t>(std::max(0, basket_.capacity - held_))
                                  : static_cast<std::size_t>(-1);

@@ -2,6 +2,7 @@
 // The simulated court in time: the scene, the collector driving in it (robot_motion.hpp), the
 // simulated clock and the record of what really happened, so that a run can be scored afterwards.
 
+#include <cmath>
 #include <cstdint>
 #include <deque>
 #include <random>
@@ -18,12 +19,15 @@ struct WorldTick {
   Pose2D robot;
   std::vector<int> collected;  // tennis ball ids collected during this advance
   int balls_left = 0;
-  bool blocked = false;  // the net or the fence stopped the robot during it
+  bool blocked = false;  // the net, the fence or an obstacle stopped the robot during it
   /// The wheels' odometry at its end: the pose the wheels' turns add up to, slip not seen, in
   /// the odometry's own frame (the robot's pose when the world began, or resumed).
   Pose2D odometry;
   int held = 0;           // balls in the basket at its end
   bool unloaded = false;  // the basket was emptied during it
+  /// The body's nearest approach to the net, the fence or an obstacle during it (NaN: not known,
+  /// a record written before obstacles).
+  double clearance_m = NAN;
 };
 
 /// The collector's basket: it holds `capacity` balls (0: no limit), and is emptied when the
@@ -72,8 +76,13 @@ class CourtWorld {
   }
 
   static constexpr double kStepS = 0.01;
+  /// A walking person stands still while its centre is this near the robot's (and the robot's
+  /// body not yet touching it): people wait for a robot to pass.
+  static constexpr double kWalkerWaitM = 1.5;
 
  private:
+  /// One step of every walking person (CourtObstacle::walk_to).
+  void walk_step();
   /// One step's emptying: the robot still at the unload point with balls in the basket; true
   /// when the basket was emptied in it.
   bool unloading_step();
@@ -94,6 +103,8 @@ class CourtWorld {
   Slip slip_;
   std::mt19937_64 rng_;
   std::vector<WorldTick> history_;
+  std::vector<Vec2> walk_from_;    // per obstacle: where its walk began
+  std::vector<bool> walking_out_;  // per obstacle: on its way to walk_to
 };
 
 }  // namespace ballsight::sim

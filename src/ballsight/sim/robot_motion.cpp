@@ -81,6 +81,31 @@ Corners net_corners(const TennisCourtSpec& court) {
           Vec2(-half_depth, half_span)};
 }
 
+/// Whether `p` lies inside the convex quadrilateral `q` (counter-clockwise).
+bool inside(const Corners& q, const Vec2& p) {
+  for (int i = 0; i < 4; ++i) {
+    const Vec2 edge = q[(i + 1) % 4] - q[i], to = p - q[i];
+    if (edge.x() * to.y() - edge.y() * to.x() < 0.0) return false;
+  }
+  return true;
+}
+
+/// The gap between the robot's body and `obstacle`'s footprint; 0 where they overlap.
+double obstacle_gap(const Corners& body, const CourtObstacle& obstacle) {
+  if (obstacle.kind == ObstacleKind::person) {
+    const Vec2& c = obstacle.pose.position;
+    if (inside(body, c)) return 0.0;
+    double nearest = INFINITY;
+    for (int i = 0; i < 4; ++i)
+      nearest = std::min(nearest, segment_distance(c, body[i], body[(i + 1) % 4]));
+    return std::max(0.0, nearest - obstacle.half_size.x());
+  }
+  const FloorBox box = obstacle.bounds();
+  const Corners bag = footprint_corners(
+      RobotFootprint{box.half_size.x(), box.half_size.x(), box.half_size.y(), 0.0, 0.0}, box.pose);
+  return overlap(body, bag) ? 0.0 : gap(body, bag);
+}
+
 }  // namespace
 
 void DriveLimits::validate() const {
@@ -103,7 +128,7 @@ RobotFootprint RobotFootprint::of(const RobotBox& box, double collector_x_m,
 }
 
 bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
-                       const TennisCourtSpec& court) {
+                       const TennisCourtSpec& court, std::span<const CourtObstacle> obstacles) {
   const Corners corners = footprint_corners(footprint, pose);
   for (const Vec2& c : corners) {
     if (std::abs(c.x()) > court.surround_length_m / 2.0 ||
@@ -111,11 +136,13 @@ bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
       return true;
     }
   }
+  for (const CourtObstacle& o : obstacles)
+    if (obstacle_gap(corners, o) <= 0.0) return true;
   return court.net.enabled && overlap(corners, net_corners(court));
 }
 
 double footprint_clearance(const RobotFootprint& footprint, const Pose2D& pose,
-                           const TennisCourtSpec& court) {
+                           const TennisCourtSpec& court, std::span<const CourtObstacle> obstacles) {
   const Corners corners = footprint_corners(footprint, pose);
   // Inside the fence's rectangle the nearest point of the body to it is a corner (negative: one
   // beyond it, as footprint_blocked has it).
@@ -125,6 +152,7 @@ double footprint_clearance(const RobotFootprint& footprint, const Pose2D& pose,
                         court.surround_width_m / 2.0 - std::abs(c.y())});
   }
   if (nearest < 0.0) return 0.0;
+  for (const CourtObstacle& o : obstacles) nearest = std::min(nearest, obstacle_gap(corners, o));
   if (!court.net.enabled) return nearest;
   const Corners net = net_corners(court);
   return overlap(corners, net) ? 0.0 : std::min(nearest, gap(corners, net));
@@ -140,7 +168,8 @@ void RobotImperfections::validate() const {
 
 DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, double dt,
                      const DriveLimits& limits, const RobotFootprint& footprint,
-                     const TennisCourtSpec& court, const Slip& slip) {
+                     const TennisCourtSpec& court, std::span<const CourtObstacle> obstacles,
+                     const Slip& slip) {
   const double max_turn = rad_from_deg(limits.max_turn_rate_dps);
   const double v_target =
       std::clamp(command.speed_mps, -limits.max_speed_mps, limits.max_speed_mps);
@@ -153,19 +182,20 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
   const double v = 0.5 * (motion.speed_mps + next.speed_mps) * (1.0 - slip.speed);
   const double w = 0.5 * (motion.turn_rate_rps + next.turn_rate_rps) * (1.0 - slip.turn);
   next.pose = along_arc(motion.pose, v, w, dt);
-  if (!footprint_blocked(footprint, next.pose, court)) return {next, false};
+  if (!footprint_blocked(footprint, next.pose, court, obstacles)) return {next, false};
   // In contact: the part of the motion the obstacle allows (sliding straight on, or turning on
   // the spot), else none.
   RobotMotion slide = motion;
   slide.turn_rate_rps = 0.0;
   slide.speed_mps = next.speed_mps;
   slide.pose.position = along_arc(motion.pose, v, 0.0, dt).position;
-  if (std::abs(v) > 1e-9 && !footprint_blocked(footprint, slide.pose, court)) return {slide, true};
+  if (std::abs(v) > 1e-9 && !footprint_blocked(footprint, slide.pose, court, obstacles))
+    return {slide, true};
   RobotMotion turn = motion;
   turn.speed_mps = 0.0;
   turn.turn_rate_rps = next.turn_rate_rps;
   turn.pose = along_arc(motion.pose, 0.0, w, dt);
-  if (std::abs(w * dt) > 1e-12 && !footprint_blocked(footprint, turn.pose, court)) {
+  if (std::abs(w * dt) > 1e-12 && !footprint_blocked(footprint, turn.pose, court, obstacles)) {
     return {turn, true};
   }
   RobotMotion stopped = motion;
@@ -175,14 +205,14 @@ DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, dou
 }
 
 bool mouth_can_reach(const RobotFootprint& footprint, const Vec2& ball, double ball_radius_m,
-                     const TennisCourtSpec& court) {
+                     const TennisCourtSpec& court, std::span<const CourtObstacle> obstacles) {
   const double across = std::max(0.0, footprint.collector_width_m / 2.0 - ball_radius_m);
   for (int deg = 0; deg < 360; deg += 5) {
     const double heading = rad_from_deg(deg);
     const Vec2 ahead(std::cos(heading), std::sin(heading)), left(-ahead.y(), ahead.x());
     for (double s = -across; s <= across + 1e-9; s += 0.02) {
       const Pose2D pose{ball - footprint.collector_x_m * ahead - s * left, heading};
-      if (!footprint_blocked(footprint, pose, court)) return true;
+      if (!footprint_blocked(footprint, pose, court, obstacles)) return true;
     }
   }
   return false;

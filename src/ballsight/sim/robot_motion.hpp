@@ -3,6 +3,7 @@
 // within its limits, cannot pass through the net or the fence, and picks up every tennis ball
 // its collector mouth reaches (the tennis-ball report's 70 cm collector, section 7.8).
 
+#include <span>
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
@@ -60,22 +61,24 @@ struct RobotFootprint {
   static RobotFootprint of(const RobotBox& box, double collector_x_m, double collector_width_m);
 };
 
-/// Whether the robot at `pose` overlaps the net (its mesh between the posts, and the posts) or
-/// reaches beyond the fenced area.
+/// Whether the robot at `pose` overlaps the net (its mesh between the posts, and the posts), one
+/// of the `obstacles` or reaches beyond the fenced area.
 bool footprint_blocked(const RobotFootprint& footprint, const Pose2D& pose,
-                       const TennisCourtSpec& court);
+                       const TennisCourtSpec& court, std::span<const CourtObstacle> obstacles = {});
 
-/// How far the robot at `pose` is from the net and the fence (the nearest of its footprint's
-/// points to either), exactly; 0 where it overlaps one (footprint_blocked).
+/// How far the robot at `pose` is from the net, the fence and the `obstacles` (the nearest of its
+/// footprint's points to any), exactly; 0 where it overlaps one (footprint_blocked).
 double footprint_clearance(const RobotFootprint& footprint, const Pose2D& pose,
-                           const TennisCourtSpec& court);
+                           const TennisCourtSpec& court,
+                           std::span<const CourtObstacle> obstacles = {});
 
 /// Whether the collector's mouth can be put over a ball at `ball` with no part of the robot in
-/// the net or beyond the fence: some heading (every 5 degrees) and some place of the ball across
-/// the mouth (every 2 cm, the ball wholly inside it) where the footprint is clear. The court's
-/// free space is one piece (round the posts), so such a pose can be driven to.
+/// the net, an obstacle or beyond the fence: some heading (every 5 degrees) and some place of the
+/// ball across the mouth (every 2 cm, the ball wholly inside it) where the footprint is clear.
+/// The court's free space is one piece (round the posts; the scenarios keep obstacles apart
+/// from the net and the fence), so such a pose can be driven to.
 bool mouth_can_reach(const RobotFootprint& footprint, const Vec2& ball, double ball_radius_m,
-                     const TennisCourtSpec& court);
+                     const TennisCourtSpec& court, std::span<const CourtObstacle> obstacles = {});
 
 struct DriveStep {
   RobotMotion motion;
@@ -90,11 +93,12 @@ struct Slip {
 
 /// One step of `dt` seconds: speed and turn rate (the wheels') move towards the command within
 /// the limits, the pose follows the arc they describe, less the `slip`. Where that would put the
-/// footprint into the net or the fence, the robot only slides straight on, or only turns on the
-/// spot, whichever is clear, or stops: it never overlaps them.
+/// footprint into the net, the fence or an obstacle, the robot only slides straight on, or only
+/// turns on the spot, whichever is clear, or stops: it never overlaps them.
 DriveStep drive_step(const RobotMotion& motion, const DriveCommand& command, double dt,
                      const DriveLimits& limits, const RobotFootprint& footprint,
-                     const TennisCourtSpec& court, const Slip& slip = {});
+                     const TennisCourtSpec& court, std::span<const CourtObstacle> obstacles = {},
+                     const Slip& slip = {});
 
 /// Removes from `scene` the tennis balls the collector's mouth reached while the robot moved from
 /// `before` to `after` (forwards, within the mouth's width): the mouth touched the ball (its
