@@ -292,7 +292,10 @@ void run_eval_nodes(const EvalNodesArgs& args) {
                             : fs::path(args.log_dir);
   fs::create_directories(logs);
   const std::vector<std::string> cameras = [&] {
-    const SimulatedCourt court({args.seed, args.balls, 0.25});
+    SimulatedCourtOptions options;
+    options.seed = args.seed;
+    options.balls = args.balls;
+    const SimulatedCourt court(options);
     std::vector<std::string> names;
     for (const SiteCamera& camera : court.site().cameras) names.push_back(camera.name);
     return names;

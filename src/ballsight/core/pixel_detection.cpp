@@ -10,6 +10,8 @@ std::string_view object_class_name(ObjectClass object) {
       return "robot_front_marker";
     case ObjectClass::robot_back_marker:
       return "robot_back_marker";
+    case ObjectClass::obstacle:
+      return "obstacle";
   }
   return "unknown";
 }

@@ -10,10 +10,12 @@
 
 namespace ballsight {
 
-/// What a detection is of: a ball to collect or one of the robot's two colour markers.
-enum class ObjectClass : std::uint8_t { ball, robot_front_marker, robot_back_marker };
+/// What a detection is of: a ball to collect, one of the robot's two colour markers, or something
+/// else that is not the empty court (a person, a bag, the robot's body: an obstacle's view, its
+/// pixels as the patch; detect/court_foreground.hpp).
+enum class ObjectClass : std::uint8_t { ball, robot_front_marker, robot_back_marker, obstacle };
 
-/// "ball", "robot_front_marker", "robot_back_marker".
+/// "ball", "robot_front_marker", "robot_back_marker", "obstacle".
 std::string_view object_class_name(ObjectClass object);
 
 /// A detection's blob as coverage: each pixel's share covered by objects of the detection's class

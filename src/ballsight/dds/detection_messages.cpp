@@ -36,8 +36,9 @@ PixelDetectionMsg detection_message(const PixelDetection& d, const std::optional
 }
 
 PixelDetection detection_from_message(const PixelDetectionMsg& m, const std::string& where) {
-  require(m.object <= static_cast<std::uint8_t>(ObjectClass::robot_back_marker), where,
-          "object class " + std::to_string(m.object) + " is not 0 (ball), 1 or 2 (markers)");
+  require(m.object <= static_cast<std::uint8_t>(ObjectClass::obstacle), where,
+          "object class " + std::to_string(m.object) +
+              " is not 0 (ball), 1 or 2 (markers) or 3 (obstacle)");
   require(m.patch_width >= 0 && m.patch_height >= 0 &&
               std::int64_t{m.patch_width} * m.patch_height <= kMaxPatchPixels,
           where,

@@ -81,10 +81,26 @@ class BallsightPipeline final : public CourtPipeline {
       : cameras_(std::move(cameras)), options_(options) {
     options_.world.validate();
     for (const FieldCamera& camera : cameras_) detectors_.emplace_back(camera, options_.detector);
+    require(options_.empty_court.empty() || options_.empty_court.size() == cameras_.size(),
+            "empty court views",
+            "must be one per camera (" + std::to_string(cameras_.size()) + "), got " +
+                std::to_string(options_.empty_court.size()));
+    for (std::size_t c = 0; c < options_.empty_court.size(); ++c) {
+      require(frame_problem(options_.empty_court[c], cameras_[c]).empty(),
+              "empty court view " + std::to_string(c),
+              frame_problem(options_.empty_court[c], cameras_[c]));
+      foregrounds_.emplace_back(options_.empty_court[c], options_.foreground);
+    }
   }
 
   std::vector<PixelDetection> detect(std::size_t camera, const cv::Mat& frame) override {
-    return detectors_[camera].detect(frame);
+    std::vector<PixelDetection> found = detectors_[camera].detect(frame);
+    if (!foregrounds_.empty()) {
+      std::vector<PixelDetection> views = foregrounds_[camera].detect(frame);
+      found.insert(found.end(), std::make_move_iterator(views.begin()),
+                   std::make_move_iterator(views.end()));
+    }
+    return found;
   }
   WorldModel fuse(const CameraDetectionLists& detections) override {
     WorldModel world = build_world_model(cameras_, detections, options_.world);
@@ -97,7 +113,8 @@ class BallsightPipeline final : public CourtPipeline {
  private:
   std::vector<FieldCamera> cameras_;
   BallsightPipelineOptions options_;
-  std::vector<CourtDetector> detectors_;  // one per camera: each task uses its own
+  std::vector<CourtDetector> detectors_;      // one per camera: each task uses its own
+  std::vector<CourtForeground> foregrounds_;  // one per camera, or none
   HiddenBallMemory hidden_;
 };
 

@@ -14,6 +14,7 @@
 #include "ballsight/camera/field_camera.hpp"
 #include "ballsight/core/pixel_detection.hpp"
 #include "ballsight/detect/court_detector.hpp"
+#include "ballsight/detect/court_foreground.hpp"
 #include "ballsight/detect/seed_detector.hpp"
 #include "ballsight/pipeline/frame_set.hpp"
 #include "ballsight/world/court_world.hpp"
@@ -73,6 +74,11 @@ struct BallsightPipelineOptions {
   /// Frame sets in sequence (the service): balls hidden by the robot's body are remembered
   /// (world/hidden_balls.hpp). Off for independent scenes (`eval court`).
   bool remember_hidden_balls = false;
+  /// Per camera in camera order, its view of the empty court: what differs from it is reported as
+  /// obstacle views (detect/court_foreground.hpp) and put on the floor by the world model. Empty:
+  /// no obstacles are looked for.
+  std::vector<cv::Mat> empty_court;
+  ForegroundOptions foreground;
 };
 
 std::unique_ptr<CourtPipeline> make_seed_pipeline(std::vector<FieldCamera> cameras,

@@ -50,6 +50,7 @@ BallsightPipelineOptions ballsight_options_for_site(const Site& site) {
     options.world.support.net =
         NetPanel{site.court.width_m / 2.0 + site.court.net_posts_outside_m,
                  site.court.net_height_posts_m, site.court.net_height_centre_m};
+    options.world.obstacles.net = options.world.support.net;
   }
   return options;
 }

@@ -38,6 +38,16 @@ nlohmann::json world_model_json(const WorldModel& world,
                           {"diameter_m", site.diameter_m},
                           {"balls", site.balls}});
   }
+  j["obstacles"] = nlohmann::json::array();
+  for (const FloorObstacle& o : world.obstacles) {
+    nlohmann::json outline = nlohmann::json::array();
+    for (const Vec2& p : o.outline_m) outline.push_back({p.x(), p.y()});
+    j["obstacles"].push_back({{"x_m", o.center_m.x()},
+                              {"y_m", o.center_m.y()},
+                              {"radius_m", o.radius_m},
+                              {"outline_m", outline},
+                              {"cameras", names(o.cameras, camera_names)}});
+  }
   if (world.robot) {
     const RobotPoseEstimate& r = *world.robot;
     j["robot"] = {{"x_m", r.pose.position.x()},

@@ -11,7 +11,8 @@
 namespace ballsight {
 
 /// {"cameras": [...], "balls": [{"x_m", "y_m", "sigma_m", "cameras"}], "sites": [{"x_m", "y_m",
-/// "diameter_m", "balls"}], "robot": {"x_m", "y_m", "heading_deg", "position_sigma_m",
+/// "diameter_m", "balls"}], "obstacles": [{"x_m", "y_m", "radius_m", "outline_m": [[x, y], ...],
+/// "cameras"}], "robot": {"x_m", "y_m", "heading_deg", "position_sigma_m",
 /// "heading_sigma_deg", "front_cameras", "back_cameras"} or null}. `camera_names` names the
 /// camera indices.
 nlohmann::json world_model_json(const WorldModel& world,

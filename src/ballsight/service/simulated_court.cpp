@@ -4,6 +4,7 @@
 #include <string>
 
 #include "ballsight/sim/court_scenario.hpp"
+#include "ballsight/sim/image_effects.hpp"
 #include "ballsight/sim/seeding.hpp"
 
 namespace ballsight {
@@ -14,6 +15,7 @@ sim::CourtScene make_scene(const sim::CourtRig& rig, const SimulatedCourtOptions
   scenario.ball_count = options.balls;
   scenario.cluster_share = options.cluster_share;
   scenario.layout = options.layout;
+  scenario.obstacles = options.obstacles;
   sim::CourtScene scene =
       sim::make_court_scene(rig.court, scenario, sim::derive_seed(options.seed, 1));
   scene.effects.quantile_noise = true;  // 40 views a simulated second
@@ -67,6 +69,12 @@ std::vector<FieldCamera> SimulatedCourt::cameras() const {
   std::vector<FieldCamera> cameras;
   for (const sim::CourtCamera& c : rig_.cameras) cameras.push_back({c.camera, c.camera_from_field});
   return cameras;
+}
+
+cv::Mat SimulatedCourt::empty_court(std::size_t camera) const {
+  cv::Mat view = lit_[camera].clone();
+  sim::apply_image_effects(view, scene_.effects, sim::derive_seed(seed_, camera + 100));
+  return view;
 }
 
 cv::Mat SimulatedCourt::render(std::size_t camera, const sim::CourtScene& scene,

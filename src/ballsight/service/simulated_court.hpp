@@ -28,6 +28,7 @@ struct SimulatedCourtOptions {
   std::optional<int> balls;     // tennis balls on the court; nullopt: the scenario's 20-60
   double cluster_share = 0.25;  // of them, in clusters of 2-4 touching balls
   sim::BallLayout layout = sim::BallLayout::scattered;  // where the others lie
+  sim::ObstacleOptions obstacles;                       // people and bags (none by default)
 };
 
 class SimulatedCourt {
@@ -40,6 +41,10 @@ class SimulatedCourt {
   const sim::CourtScene& scene() const { return scene_; }
   /// Every camera as the pipeline uses it (the simulator's calibration), in site order.
   std::vector<FieldCamera> cameras() const;
+  /// Camera `camera`'s view of the court with nothing on it, under the scene's light and exposure
+  /// (its own sensor noise): the view an installation takes once when it is set up, against which
+  /// the pipeline finds obstacles (detect/court_foreground.hpp).
+  cv::Mat empty_court(std::size_t camera) const;
   /// Camera `camera`'s frame of `scene` (this court's scene as it is now) at vision tick `tick`.
   cv::Mat render(std::size_t camera, const sim::CourtScene& scene, std::uint64_t tick) const;
 

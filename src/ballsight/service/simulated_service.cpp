@@ -93,8 +93,8 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   options.validate();
   Impl& s = *impl_;
   s.options = options;
-  s.court = std::make_unique<SimulatedCourt>(
-      SimulatedCourtOptions{options.seed, options.balls, options.cluster_share, options.layout});
+  s.court = std::make_unique<SimulatedCourt>(SimulatedCourtOptions{
+      options.seed, options.balls, options.cluster_share, options.layout, options.obstacles});
   s.site = s.court->site();
   if (options.capacity) s.site.robot.capacity = *options.capacity;
   const Site& site = s.site;
@@ -143,11 +143,13 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   s.start = s.world->motion().pose;
   s.robot = s.world->motion().pose;
   std::vector<FieldCamera> cameras = s.court->cameras();
+  BallsightPipelineOptions pipeline = service_pipeline_options(site);
+  for (std::size_t c = 0; c < cameras.size(); ++c)
+    pipeline.empty_court.push_back(s.court->empty_court(c));
   s.publisher = std::make_unique<UpdatePublisher>(
       site,
-      options.report_pipeline
-          ? make_seed_pipeline(std::move(cameras), seed_options_for_site(site))
-          : make_ballsight_pipeline(std::move(cameras), service_pipeline_options(site)),
+      options.report_pipeline ? make_seed_pipeline(std::move(cameras), seed_options_for_site(site))
+                              : make_ballsight_pipeline(std::move(cameras), pipeline),
       options.planner);
 }
 

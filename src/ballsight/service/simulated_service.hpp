@@ -54,8 +54,9 @@ struct SimulatedServiceOptions {
   std::vector<CameraOutage> camera_outages;  // a camera may fail and come back, several times
   bool report_pipeline = false;              // the report's court pipeline instead of ballsight's
   PlannerOptions planner;
-  sim::RobotImperfections robot;  // the simulated collector's latency and slip (its seed: seed's)
-  std::optional<int> capacity;    // the basket's balls (site.yml's robot.capacity), if not 60
+  sim::RobotImperfections robot;   // the simulated collector's latency and slip (its seed: seed's)
+  std::optional<int> capacity;     // the basket's balls (site.yml's robot.capacity), if not 60
+  sim::ObstacleOptions obstacles;  // people and bags on the court (none by default)
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -19,6 +19,7 @@ void CourtWorldOptions::validate() const {
   clusters.validate();
   pixel_fit.validate();
   support.validate();
+  obstacles.validate();
   require(std::isfinite(collector_width_m) && collector_width_m > 0.0, "world collector_width_m",
           "must be positive");
   require(area.valid(), "world area", "must have a positive size");
@@ -59,6 +60,7 @@ void account_for_robot(const std::vector<cv::Point2f>& outline, PixelDetection& 
 }  // namespace
 
 double object_center_height_m(ObjectClass object, const CourtWorldOptions& options) {
+  if (object == ObjectClass::obstacle) return 0.0;  // where it stands
   return object == ObjectClass::ball ? options.ball_radius_m : options.robot.marker_height_m;
 }
 
@@ -135,6 +137,9 @@ WorldModel build_world_model(
   std::vector<Vec2> positions;
   for (const FusedBall& ball : model.balls) positions.push_back(ball.position_m);
   model.sites = collection_sites(positions, options.collector_width_m);
+  model.obstacles = locate_floor_obstacles(
+      cameras, detections, model.robot ? std::optional<Pose2D>(model.robot->pose) : std::nullopt,
+      options.robot, model.balls, options.area, options.obstacles);
   return model;
 }
 

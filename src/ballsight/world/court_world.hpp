@@ -4,7 +4,8 @@
 // detections the robot's body may cut into made less certain, then the balls fused across cameras
 // by their expected errors, groups of touching balls refitted to their observations and then to
 // their blobs' pixels (pixel_cluster_fit.hpp), checked against the cameras that missed them
-// (ball_support.hpp) and grouped into collection sites.
+// (ball_support.hpp) and grouped into collection sites; and what else stands on the floor, from
+// the cameras' views of what is not the empty court (floor_obstacles.hpp).
 
 #include <optional>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "ballsight/world/ball_support.hpp"
 #include "ballsight/world/cluster_refinement.hpp"
 #include "ballsight/world/field_observation.hpp"
+#include "ballsight/world/floor_obstacles.hpp"
 #include "ballsight/world/observation_fusion.hpp"
 #include "ballsight/world/pixel_cluster_fit.hpp"
 #include "ballsight/world/robot_pose.hpp"
@@ -30,6 +32,7 @@ struct CourtWorldOptions {
   ClusterOptions clusters;
   PixelFitOptions pixel_fit;
   BallSupportOptions support;
+  FloorObstacleOptions obstacles;
   double collector_width_m = 0.70;               // the report's collector (section 7.8)
   FieldRect area{{-19.5, -10.5}, {19.5, 10.5}};  // observations elsewhere are dropped
 
@@ -37,7 +40,8 @@ struct CourtWorldOptions {
   void validate() const;
 };
 
-/// How high an object's centre is above the floor: a ball's radius, the robot markers' height.
+/// How high an object's centre is above the floor: a ball's radius, the robot markers' height, 0
+/// for an obstacle's view (where it stands).
 double object_center_height_m(ObjectClass object, const CourtWorldOptions& options);
 
 /// Detections of one frame set: `detections[i]` from `cameras[i]`, nullopt for a camera whose

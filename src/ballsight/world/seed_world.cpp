@@ -60,7 +60,7 @@ WorldModel build_seed_world_model(
       if (d.object == ObjectClass::ball) {
         const std::optional<Vec3> p = cameras[c].point_at_height(d.center_px, options.z_const_m);
         if (p) aggregate(balls, p->head<2>(), camera, options.merge_distance_m);
-      } else {
+      } else if (d.object != ObjectClass::obstacle) {  // the report looks for no obstacles
         const PixelDetection*& largest =
             d.object == ObjectClass::robot_front_marker ? largest_front : largest_back;
         if (!largest || d.area_px > largest->area_px) largest = &d;

@@ -1,7 +1,7 @@
 #pragma once
 // What the court cameras see at one moment, in the field frame: the balls (each fused over the
-// cameras that saw it), the collection sites they form, the robot's pose and which cameras
-// contributed. The value `court run` prints and the navigation service will publish.
+// cameras that saw it), the collection sites they form, the obstacles, the robot's pose and which
+// cameras contributed. The value `court run` prints and the navigation service will publish.
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -21,8 +21,18 @@ struct FusedBall {
   std::vector<int> cameras;                                 // cameras that saw it, ascending
 };
 
+/// Something standing on the court that is not a ball, the robot or the net (a person, a bag), as
+/// two or more cameras see it (world/floor_obstacles.hpp).
+struct FloorObstacle {
+  Vec2 center_m = Vec2::Zero();  // the footprint's centre
+  double radius_m = 0.0;         // the smallest circle about the centre that holds the footprint
+  std::vector<Vec2> outline_m;   // the footprint's convex outline, counter-clockwise
+  std::vector<int> cameras;      // cameras that saw it, ascending
+};
+
 struct WorldModel {
   std::vector<FusedBall> balls;
+  std::vector<FloorObstacle> obstacles;
   std::vector<CollectionSite> sites;  // indices into balls
   std::optional<RobotPoseEstimate> robot;
   std::vector<int> cameras;  // cameras whose frames went into this model, ascending

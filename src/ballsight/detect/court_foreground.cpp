@@ -1,0 +1,81 @@
+#include "ballsight/detect/court_foreground.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "ballsight/core/error.hpp"
+
+namespace ballsight {
+
+void ForegroundOptions::validate() const {
+  require(threshold >= 1 && threshold <= 765, "foreground threshold", "must be in [1, 765]");
+  require(std::isfinite(min_area_px) && min_area_px >= 0.0, "foreground min_area_px",
+          "must be at least 0");
+}
+
+CourtForeground::CourtForeground(const cv::Mat& empty_court, const ForegroundOptions& options)
+    : options_(options), size_(empty_court.size()) {
+  options_.validate();
+  require(empty_court.type() == CV_8UC3 && !empty_court.empty(), "empty court view",
+          "must be an 8-bit BGR image");
+  background_ = half(empty_court);
+}
+
+cv::Mat CourtForeground::half(const cv::Mat& bgr) const {
+  cv::Mat small;
+  cv::resize(bgr, small, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
+  return small;
+}
+
+std::vector<PixelDetection> CourtForeground::detect(const cv::Mat& frame) const {
+  require(frame.size() == size_ && frame.type() == CV_8UC3, "foreground frame",
+          "must be the empty court view's size, 8-bit BGR");
+  cv::Mat diff;
+  cv::absdiff(half(frame), background_, diff);
+  // The colour distance per pixel (the sum of the channels' differences: in shade, where every
+  // colour is dark, a change shows in all three channels at once).
+  cv::Mat1b mask(diff.rows, diff.cols);
+  for (int y = 0; y < diff.rows; ++y) {
+    const auto* in = diff.ptr<cv::Vec3b>(y);
+    auto* out = mask.ptr<uchar>(y);
+    for (int x = 0; x < diff.cols; ++x)
+      out[x] = in[x][0] + in[x][1] + in[x][2] > options_.threshold ? 255 : 0;
+  }
+  cv::morphologyEx(mask, mask, cv::MORPH_OPEN, cv::Mat1b::ones(3, 3));  // specks of noise off
+  cv::Mat labels, stats, centroids;
+  const int count = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
+  std::vector<PixelDetection> out;
+  for (int label = 1; label < count; ++label) {
+    const double area = 4.0 * stats.at<int>(label, cv::CC_STAT_AREA);  // full resolution
+    if (area < options_.min_area_px) continue;
+    const int left = stats.at<int>(label, cv::CC_STAT_LEFT),
+              top = stats.at<int>(label, cv::CC_STAT_TOP);
+    const int width = stats.at<int>(label, cv::CC_STAT_WIDTH),
+              height = stats.at<int>(label, cv::CC_STAT_HEIGHT);
+    PixelDetection d;
+    d.object = ObjectClass::obstacle;
+    d.center_px = 2.0 * Vec2(centroids.at<double>(label, 0), centroids.at<double>(label, 1)) +
+                  Vec2::Constant(0.5);
+    d.area_px = area;
+    d.radius_px = std::sqrt(area / M_PI);
+    d.patch.x = 2 * left;
+    d.patch.y = 2 * top;
+    d.patch.width = std::min(2 * width, size_.width - d.patch.x);
+    d.patch.height = std::min(2 * height, size_.height - d.patch.y);
+    d.patch.blob = label - 1;
+    d.patch.coverage.resize(static_cast<std::size_t>(d.patch.width) * d.patch.height);
+    for (int py = 0; py < d.patch.height; ++py) {
+      const int* row = labels.ptr<int>(top + py / 2);
+      for (int px = 0; px < d.patch.width; ++px)
+        d.patch.coverage[static_cast<std::size_t>(py) * d.patch.width + px] =
+            row[left + px / 2] == label ? 1.0f : 0.0f;
+    }
+    out.push_back(std::move(d));
+  }
+  std::sort(out.begin(), out.end(),
+            [](const PixelDetection& a, const PixelDetection& b) { return a.area_px > b.area_px; });
+  return out;
+}
+
+}  // namespace ballsight
