@@ -19,6 +19,7 @@ struct EvalLoopArgs {
   eval::LoopEvalOptions options;
   std::string systems;
   std::string layouts;
+  std::string obstacles;
   double command_latency_ms = 0.0;
   std::optional<double> steer_ahead_ms;
   bool json = false;
@@ -42,15 +43,17 @@ void run_eval_loop(const EvalLoopArgs& args) {
       options.layouts.emplace_back(item.text);
     }
   }
+  if (!args.obstacles.empty())
+    options.obstacles = sim::parse_obstacles(args.obstacles, "--obstacles");
   const std::vector<eval::LoopRun> runs =
       eval::run_loop_eval(options, connect_over_loopback, [](const eval::LoopRun& r) {
         std::fprintf(stderr,
-                     "eval loop: %-9s seed %llu, %s: %d of %d balls (%d reachable) in %.1f s, "
+                     "eval loop: %-9s seed %llu, %s, %s: %d of %d balls (%d reachable) in %.1f s, "
                      "%.1f m, %d stalls, %d ticks in contact, nearest %.3f m, %d frame sets dead "
                      "reckoned, %d commands guarded, %d unloads, %d given up%s\n",
                      r.system.c_str(), static_cast<unsigned long long>(r.seed), r.layout.c_str(),
-                     r.collected, r.balls, r.reachable, r.time_s, r.distance_m, r.stalls,
-                     r.contacts, r.min_clearance_m, r.dead_reckoned, r.guarded, r.unloads,
+                     r.obstacles.c_str(), r.collected, r.balls, r.reachable, r.time_s, r.distance_m,
+                     r.stalls, r.contacts, r.min_clearance_m, r.dead_reckoned, r.guarded, r.unloads,
                      r.unreachable, r.never_overlapped ? "" : " (overlapped the net or fence!)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
@@ -91,6 +94,10 @@ void add_eval_loop_command(CLI::App& eval) {
   cmd->add_option("--layouts", args->layouts,
                   "Comma-separated layouts taken in turn instead of all five (uniform, clustered, "
                   "along_net, along_fence, net_posts)");
+  cmd->add_option("--obstacles", args->obstacles,
+                  "Obstacles on every scene: none, or a comma-separated list of person, bag and "
+                  "walker (default: the mix, scene k: none, person and bag, walker for k modulo "
+                  "3)");
   cmd->add_option("--record-dir", args->options.record_dir,
                   "Write each run's record of the court here (<system>-<seed>.jsonl)");
   cmd->add_option("--min-balls", args->options.min_balls, "Balls in the first scene")
@@ -122,7 +129,7 @@ void add_eval_loop_command(CLI::App& eval) {
   cmd->add_flag("--json", args->json,
                 "JSON: {\"systems\": {\"<name>\": {\"collected_fraction\", \"time_s_mean\", "
                 "\"distance_m_mean\", \"time_ratio_to_ballsight\", \"runs\"}}, \"scenes\": "
-                "[{\"seed\", \"layout\", \"balls\", \"reachable\", \"systems\"}], "
+                "[{\"seed\", \"layout\", \"obstacles\", \"balls\", \"reachable\", \"systems\"}], "
                 "\"wall_clock\": {}} (simulated time only: the same every run of a seed)");
   cmd->callback([args] { run_eval_loop(*args); });
 }

@@ -29,6 +29,7 @@ struct ServeArgs {
   int balls = -1;                        // simulated court: tennis balls (-1: the scenario's)
   double duration_s = 0.0;               // 0: until SIGINT or SIGTERM
   std::vector<std::string> fail_camera;  // K@T or K@T-U, each
+  std::string obstacles = "none";
   SimulatedServiceOptions service;
 };
 
@@ -67,6 +68,7 @@ void run_serve(const ServeArgs& args) {
     SimulatedServiceOptions options = args.service;
     options.planner.kind = *kind;
     if (args.balls >= 0) options.balls = args.balls;
+    options.obstacles = sim::parse_obstacles(args.obstacles, "--obstacles");
     for (const std::string& text : args.fail_camera) {
       options.camera_outages.push_back(parse_camera_outage(text));
     }
@@ -112,6 +114,10 @@ void add_serve_command(CLI::App& app) {
   cmd->add_option("--capacity", args->service.capacity,
                   "Simulated court: balls the collector's basket holds (default 60)")
       ->check(CLI::Range(1, 1000));
+  cmd->add_option("--obstacles", args->obstacles,
+                  "Simulated court: people and bags on it, a comma-separated list of person, "
+                  "bag and walker (a person walking across and back), or none")
+      ->capture_default_str();
   cmd->add_option("--cluster-share", args->service.cluster_share,
                   "Simulated court: of the balls, the share in clusters of 2-4 touching balls")
       ->capture_default_str();

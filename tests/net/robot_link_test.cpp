@@ -132,5 +132,30 @@ TEST(RobotLink, OptionsFromAUrlAndBadUpdatesAreNamed) {
   }
 }
 
+TEST(RobotLink, AnUpdateCarriesTheObstacles) {
+  const nlohmann::json update = {
+      {"seq", 3u},
+      {"service_id", "s"},
+      {"capture_time_ns", 1},
+      {"published_ns", 2},
+      {"world",
+       {{"balls", nlohmann::json::array()},
+        {"obstacles", {{{"x_m", 4.0}, {"y_m", -1.0}, {"radius_m", 0.3}, {"outline_m", {}}}}}}},
+      {"route", {{"waypoints_m", nlohmann::json::array()}, {"visits_m", nlohmann::json::array()}}}};
+  const LinkUpdate u = parse_link_update(update);
+  ASSERT_EQ(u.obstacles.size(), 1u);
+  EXPECT_EQ(u.obstacles[0].center_m, Vec2(4.0, -1.0));
+  EXPECT_EQ(u.obstacles[0].radius_m, 0.3);
+  nlohmann::json bad = update;
+  bad["world"]["obstacles"][0]["radius_m"] = -1;
+  try {
+    parse_link_update(bad);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("update.world.obstacles[0].radius_m"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace ballsight

@@ -16,16 +16,16 @@ const double kLane = 0.45;                      // half the lane's width
 
 TEST(DrivableCourt, StraightWhereTheNetIsNotInTheWay) {
   const DrivablePath p = shortest_path(kCourt, Vec2(-5, 2), Vec2(-1, -3));
-  EXPECT_EQ(p.via_count, 0);
+  EXPECT_EQ(p.via.size(), 0u);
   EXPECT_NEAR(p.length_m, (Vec2(-5, 2) - Vec2(-1, -3)).norm(), 1e-12);
   // Past the posts, straight over the net line.
-  EXPECT_EQ(shortest_path(kCourt, Vec2(-3, 8), Vec2(3, 8)).via_count, 0);
+  EXPECT_EQ(shortest_path(kCourt, Vec2(-3, 8), Vec2(3, 8)).via.size(), 0u);
 }
 
 TEST(DrivableCourt, AcrossTheNetGoesRoundTheNearerPost) {
   const Vec2 a(-4, 5), b(4, 5);
   const DrivablePath p = shortest_path(kCourt, a, b);
-  ASSERT_EQ(p.via_count, 2);
+  ASSERT_EQ(p.via.size(), 2u);
   EXPECT_NEAR(p.via[0].y(), kEnd, 1e-12);
   EXPECT_NEAR(p.via[0].x(), -kLane, 1e-12);
   EXPECT_NEAR(p.via[1].x(), kLane, 1e-12);
@@ -39,7 +39,7 @@ TEST(DrivableCourt, AcrossTheNetGoesRoundTheNearerPost) {
 TEST(DrivableCourt, BetweenTheStripsBeyondBothPostsAlongTheNet) {
   // Both ends level with the net, beyond opposite posts: the way runs down one side of the net.
   const DrivablePath p = shortest_path(kCourt, Vec2(0, 8), Vec2(0, -8));
-  ASSERT_EQ(p.via_count, 2);
+  ASSERT_EQ(p.via.size(), 2u);
   EXPECT_NEAR(p.length_m, 2.0 * std::hypot(kLane, 8.0 - kEnd) + 2.0 * kEnd, 1e-9);
   EXPECT_NEAR(std::abs(p.via[0].x()), kLane, 1e-12);
   EXPECT_EQ(p.via[0].x(), p.via[1].x());
@@ -62,10 +62,10 @@ TEST(DrivableCourt, PathsAreSymmetricAndNeverShorterThanTheStraightLine) {
     EXPECT_GE(ab.length_m, (b - a).norm() - 1e-9);
     // Every piece of the path is clear of the net and inside the fence.
     Vec2 from = a;
-    for (int i = 0; i < ab.via_count; ++i) {
-      EXPECT_FALSE(kCourt.blocked(from, ab.via[static_cast<std::size_t>(i)]));
-      EXPECT_TRUE(kCourt.in_area(ab.via[static_cast<std::size_t>(i)]));
-      from = ab.via[static_cast<std::size_t>(i)];
+    for (const Vec2& via : ab.via) {
+      EXPECT_FALSE(kCourt.blocked(from, via));
+      EXPECT_TRUE(kCourt.in_area(via));
+      from = via;
     }
     EXPECT_FALSE(kCourt.blocked(from, b));
   }
@@ -76,7 +76,7 @@ TEST(DrivableCourt, AlongTheNetTheRouteKeepsToTheLaneAndReachesInStraight) {
   const Vec2 a(0.1, 1.0), b(0.1, 3.0);
   EXPECT_TRUE(kCourt.blocked(a, b));
   const DrivablePath p = shortest_path(kCourt, a, b);
-  ASSERT_EQ(p.via_count, 2);
+  ASSERT_EQ(p.via.size(), 2u);
   EXPECT_EQ(p.via[0], Vec2(kLane, 1.0));
   EXPECT_EQ(p.via[1], Vec2(kLane, 3.0));
   EXPECT_NEAR(p.length_m, 2.0 + 2 * (kLane - 0.1), 1e-12);
@@ -85,7 +85,7 @@ TEST(DrivableCourt, AlongTheNetTheRouteKeepsToTheLaneAndReachesInStraight) {
   EXPECT_TRUE(kCourt.blocked(a, Vec2(-0.1, 1.0)));
   // To a ball away from the net: straight out first, then the shortest way.
   const DrivablePath out = shortest_path(kCourt, a, Vec2(4.0, 3.0));
-  ASSERT_EQ(out.via_count, 1);
+  ASSERT_EQ(out.via.size(), 1u);
   EXPECT_EQ(out.via[0], Vec2(kLane, 1.0));
 }
 
@@ -103,12 +103,12 @@ TEST(DrivableCourt, AlongTheFenceTheRouteEntersAndLeavesSquareToIt) {
   EXPECT_FALSE(kCourt.in_fence_lane(Vec2(5.0, -8.2)));
   EXPECT_EQ(kCourt.fence_exit(a), Vec2(5.0, -8.3));
   const DrivablePath p = shortest_path(kCourt, a, b);
-  ASSERT_EQ(p.via_count, 2);
+  ASSERT_EQ(p.via.size(), 2u);
   EXPECT_EQ(p.via[0], Vec2(5.0, -8.3));
   EXPECT_EQ(p.via[1], Vec2(7.0, -8.3));
   EXPECT_NEAR(p.length_m, 0.6 + 2.0 + 0.5, 1e-12);
   const DrivablePath back = shortest_path(kCourt, b, a);  // the same bends, reversed
-  ASSERT_EQ(back.via_count, 2);
+  ASSERT_EQ(back.via.size(), 2u);
   EXPECT_EQ(back.via[0], p.via[1]);
   EXPECT_NEAR(back.length_m, p.length_m, 1e-12);
   // In a corner: out square to the nearer side.
@@ -116,20 +116,20 @@ TEST(DrivableCourt, AlongTheFenceTheRouteEntersAndLeavesSquareToIt) {
   EXPECT_EQ(kCourt.fence_exit(Vec2(17.9, -8.3)), Vec2(17.3, -8.3));
   // Driven within 10 degrees of square to the fence: straight.
   EXPECT_FALSE(kCourt.in_fence_lane(Vec2(5.0, -8.6)));
-  EXPECT_EQ(shortest_path(kCourt, Vec2(5.0, -7.0), a).via_count, 0);
-  EXPECT_EQ(shortest_path(kCourt, Vec2(5.1, -8.0), a).via_count, 0);
-  EXPECT_EQ(shortest_path(kCourt, Vec2(6.0, -8.5), a).via_count, 1);   // 0.5 m out: no lane
-  EXPECT_EQ(shortest_path(kCourt, Vec2(5.15, -8.7), a).via_count, 0);  // the mouth before it
-  EXPECT_EQ(shortest_path(kCourt, Vec2(5.3, -8.8), a).via_count, 2);   // beside it
+  EXPECT_EQ(shortest_path(kCourt, Vec2(5.0, -7.0), a).via.size(), 0u);
+  EXPECT_EQ(shortest_path(kCourt, Vec2(5.1, -8.0), a).via.size(), 0u);
+  EXPECT_EQ(shortest_path(kCourt, Vec2(6.0, -8.5), a).via.size(), 1u);   // 0.5 m out: no lane
+  EXPECT_EQ(shortest_path(kCourt, Vec2(5.15, -8.7), a).via.size(), 0u);  // the mouth before it
+  EXPECT_EQ(shortest_path(kCourt, Vec2(5.3, -8.8), a).via.size(), 2u);   // beside it
   // Out of the fence's lane and round the net: the exits first and last.
   const DrivablePath round = shortest_path(kCourt, Vec2(-2.0, -8.9), Vec2(2.0, 8.9));
-  ASSERT_GE(round.via_count, 2);
+  ASSERT_GE(round.via.size(), 2u);
   EXPECT_EQ(round.via[0], Vec2(-2.0, -8.3));
-  EXPECT_EQ(round.via[static_cast<std::size_t>(round.via_count - 1)], Vec2(2.0, 8.3));
+  EXPECT_EQ(round.via.back(), Vec2(2.0, 8.3));
   // No lane: the straight line.
   DrivableCourt open = kCourt;
   open.fence_lane_m = 0.0;
-  EXPECT_EQ(shortest_path(open, a, b).via_count, 0);
+  EXPECT_EQ(shortest_path(open, a, b).via.size(), 0u);
 }
 
 TEST(DrivableCourt, BallInACornerIsApproachedSquareToTheNearerSide) {

@@ -35,6 +35,21 @@ const std::vector<LoopLayout>& loop_layouts() {
   return kLayouts;
 }
 
+sim::ObstacleOptions loop_obstacles(int k) {
+  sim::ObstacleOptions o;
+  if (k % 3 == 1) o.people = o.bags = 1;
+  if (k % 3 == 2) o.walkers = 1;
+  return o;
+}
+
+std::string obstacles_name(const sim::ObstacleOptions& o) {
+  std::string name;
+  for (const auto& [n, what] :
+       {std::pair{o.people, "person"}, {o.bags, "bag"}, {o.walkers, "walker"}})
+    for (int i = 0; i < n; ++i) name += (name.empty() ? "" : "+") + std::string(what);
+  return name.empty() ? "none" : name;
+}
+
 LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
                  const RobotConnector& connect, const std::filesystem::path& record,
                  const LoopRobot& robot) {
@@ -44,6 +59,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   options.balls = scene.balls;
   options.cluster_share = scene.layout.clustered ? 0.75 : 0.0;
   options.layout = scene.layout.others;
+  options.obstacles = scene.obstacles;
   options.report_pipeline = system.report_pipeline;
   options.planner.kind = system.planner;
   options.lockstep = true;
@@ -84,11 +100,16 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   run.system = system.name;
   run.seed = scene.seed;
   run.layout = scene.layout.name();
+  run.obstacles = obstacles_name(scene.obstacles);
   run.balls = score.balls;
   const sim::TennisCourtSpec spec;  // the referee's court, as score_loop's
+  std::vector<sim::CourtObstacle> standing = service.scene_obstacles();
+  std::erase_if(standing, [](const sim::CourtObstacle& o) { return o.walk_to.has_value(); });
   for (const SceneBall& b : service.scene_balls()) {
     run.reachable +=
-        sim::mouth_can_reach(footprint, b.position_m, service.site().ball_radius_m, spec) ? 1 : 0;
+        sim::mouth_can_reach(footprint, b.position_m, service.site().ball_radius_m, spec, standing)
+            ? 1
+            : 0;
   }
   run.collected = score.collected;
   run.unreachable = driven.unreachable;
@@ -154,7 +175,8 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
         continue;
       }
       const LoopScene scene{options.seed + static_cast<std::uint64_t>(k), balls,
-                            layouts[static_cast<std::size_t>(k) % layouts.size()]};
+                            layouts[static_cast<std::size_t>(k) % layouts.size()],
+                            options.obstacles ? *options.obstacles : loop_obstacles(k)};
       const std::filesystem::path record =
           options.record_dir.empty()
               ? std::filesystem::path()
@@ -216,6 +238,7 @@ nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs) {
     if (scenes.empty() || scenes.back()["seed"] != r.seed) {
       scenes.push_back({{"seed", r.seed},
                         {"layout", r.layout},
+                        {"obstacles", r.obstacles},
                         {"balls", r.balls},
                         {"reachable", r.reachable},
                         {"systems", nlohmann::json::object()}});

@@ -44,16 +44,24 @@ struct LoopLayout {
 /// clustered, along the net, along the fence, around the net posts.
 const std::vector<LoopLayout>& loop_layouts();
 
+/// The obstacles scene k of an evaluation has in the default mix (k modulo 3): none, a person
+/// standing and a bag, a person walking across.
+sim::ObstacleOptions loop_obstacles(int k);
+/// "none", or the obstacles joined by '+': "person+bag", "walker".
+std::string obstacles_name(const sim::ObstacleOptions& obstacles);
+
 struct LoopScene {
   std::uint64_t seed = 1;
   int balls = 10;
   LoopLayout layout;
+  sim::ObstacleOptions obstacles;
 };
 
 struct LoopRun {
   std::string system;
   std::uint64_t seed = 0;
-  std::string layout;  // LoopLayout::name()
+  std::string layout;     // LoopLayout::name()
+  std::string obstacles;  // obstacles_name()
   int balls = 0;
   int reachable = 0;  // balls the mouth can be put over with the body clear (from the truth)
   int collected = 0;
@@ -70,7 +78,8 @@ struct LoopRun {
   int dead_reckoned = 0;  // frame sets the cameras did not see the robot and it drove on its own
                           // estimate (robot/pose_tracker.hpp)
   int guarded = 0;        // commands the robot's local planner slowed, replaced or stopped
-  double min_clearance_m = 0.0;  // the body's nearest approach to the net or the fence (truth)
+  double min_clearance_m = 0.0;  // the body's nearest approach to the net, the fence or an
+                                 // obstacle (truth)
   int unloads = 0;               // times the basket was emptied at the unload point (truth)
 };
 
@@ -102,6 +111,8 @@ struct LoopEvalOptions {
   double max_time_s = 400.0;         // simulated, per run
   std::vector<std::string> systems;  // empty: all three
   std::vector<std::string> layouts;  // LoopLayout::name()s taken in turn; empty: all
+  /// The obstacles of every scene; nullopt: the mix (loop_obstacles).
+  std::optional<sim::ObstacleOptions> obstacles;
   std::filesystem::path record_dir;  // each run's record as <system>-<seed>.jsonl (empty: none)
   LoopRobot robot;                   // a perfect robot by default
 
@@ -114,7 +125,7 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
                                    const std::function<void(const LoopRun&)>& progress = {});
 
 /// {"systems": {"<name>": {"collected_fraction", "time_s_mean", "distance_m_mean",
-///  "time_ratio_to_ballsight", "runs": [...]}}, "scenes": [{"seed", "layout", "balls",
+///  "time_ratio_to_ballsight", "runs": [...]}}, "scenes": [{"seed", "layout", "obstacles", "balls",
 ///  "reachable", "systems": {"<name>": {"collected", "unreachable", "time_s", "timed_out",
 ///  "contacts", "stalls", "recoveries", "min_clearance_m", "unloads"}}}]} (scenes in the order run)
 nlohmann::json loop_eval_json(const std::vector<LoopRun>& runs);

@@ -51,6 +51,16 @@ LinkUpdate parse_link_update(const json& u) {
     out.robot = Pose2D{points(json::array({r}), "update.world.robot")[0],
                        rad_from_deg(r["heading_deg"].get<double>())};
   }
+  if (const auto obstacles = world.find("obstacles"); obstacles != world.end()) {
+    const std::vector<Vec2> centers = points(*obstacles, "update.world.obstacles");
+    for (std::size_t i = 0; i < centers.size(); ++i) {
+      const json& radius = (*obstacles)[i].value("radius_m", json());
+      require(radius.is_number() && radius.get<double>() >= 0.0,
+              "update.world.obstacles[" + std::to_string(i) + "].radius_m",
+              "expected a non-negative number");
+      out.obstacles.push_back({centers[i], radius.get<double>()});
+    }
+  }
   const json& route = field("route");
   require(route.is_object() && route.contains("waypoints_m") && route.contains("visits_m"),
           "update.route", "expected waypoints_m and visits_m");

@@ -1,5 +1,6 @@
 #include "ballsight/pipeline/planning_input.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -20,6 +21,19 @@ namespace {
 constexpr double kBeyondFenceM = 0.25;
 
 }  // namespace
+
+std::vector<ObstacleDisc> obstacle_discs(const WorldModel& world) {
+  std::vector<ObstacleDisc> discs;
+  for (const FloorObstacle& o : world.obstacles) discs.push_back({o.center_m, o.radius_m});
+  return discs;
+}
+
+double obstacle_keep_m(const SiteRobot& robot) {
+  constexpr double kBoxHalfLengthM = 0.30, kBoxHalfWidthM = 0.225, kRoomM = 0.10;
+  return std::hypot(std::max(kBoxHalfLengthM, robot.collector_x_m),
+                    std::max(kBoxHalfWidthM, robot.collector_width_m / 2.0)) +
+         kRoomM;
+}
 
 PlanningProblem site_planning_problem(const Site& site, const Pose2D& robot,
                                       std::vector<Vec2> balls) {

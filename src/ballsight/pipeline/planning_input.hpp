@@ -9,10 +9,18 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/plan/obstacle_detours.hpp"
 #include "ballsight/plan/planning_problem.hpp"
 #include "ballsight/world/site.hpp"
+#include "ballsight/world/world_model.hpp"
 
 namespace ballsight {
+
+/// The world model's obstacles as the planner sees them: the circle round each footprint.
+std::vector<ObstacleDisc> obstacle_discs(const WorldModel& world);
+/// How far the robot's reference point keeps from an obstacle's circle: half the diagonal of its
+/// body with the site's collector (the box of 0.60 x 0.45 m), and 10 cm.
+double obstacle_keep_m(const SiteRobot& robot);
 
 /// A problem on the site: its court, the robot's limits and collector; `robot` is the pose of the
 /// robot's reference point (the collector mouth is `robot.collector_x_m` ahead of it). A ball

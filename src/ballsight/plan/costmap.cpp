@@ -34,6 +34,7 @@ Costmap::Costmap(const DrivableCourt& court, double resolution_m) : resolution_m
   court.validate();
   require(std::isfinite(resolution_m) && resolution_m >= 0.005 && resolution_m <= 0.5,
           "costmap resolution", "must be in [0.005, 0.5] m");
+  if (court.obstacles) discs_ = court.obstacles->discs();
   origin_ = court.area_min_m - Vec2::Constant(kMarginM);
   const Vec2 size = court.area_max_m - court.area_min_m + Vec2::Constant(2.0 * kMarginM);
   cols_ = static_cast<int>(std::ceil(size.x() / resolution_m)) + 1;
@@ -64,8 +65,11 @@ double Costmap::clearance(const Vec2& p) const {
   const int col = std::min(static_cast<int>(g.x()), cols_ - 2);
   const int row = std::min(static_cast<int>(g.y()), rows_ - 2);
   const double u = g.x() - col, v = g.y() - row;
-  return (1.0 - v) * ((1.0 - u) * cell(col, row) + u * cell(col + 1, row)) +
-         v * ((1.0 - u) * cell(col, row + 1) + u * cell(col + 1, row + 1));
+  double nearest = (1.0 - v) * ((1.0 - u) * cell(col, row) + u * cell(col + 1, row)) +
+                   v * ((1.0 - u) * cell(col, row + 1) + u * cell(col + 1, row + 1));
+  for (const ObstacleDisc& d : discs_)
+    nearest = std::min(nearest, (p - d.center_m).norm() - d.radius_m);
+  return nearest;
 }
 
 }  // namespace ballsight

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/plan/obstacle_detours.hpp"
 
 namespace ballsight {
 namespace {
@@ -64,10 +65,7 @@ Vec2 lane_exit(const DrivableCourt& court, const Vec2& p) {
 /// to b.
 DrivablePath canonical_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {
   DrivablePath best;
-  const auto add = [&best](const Vec2& p) {
-    assert(best.via_count < static_cast<int>(best.via.size()));  // four exits, two corners
-    best.via[static_cast<std::size_t>(best.via_count++)] = p;
-  };
+  const auto add = [&best](const Vec2& p) { best.via.push_back(p); };
   best.length_m = (b - a).norm();
   if (!court.blocked(a, b)) return best;
   const double c = court.net->travel_clearance_m;
@@ -231,11 +229,15 @@ bool DrivableCourt::blocked(const Vec2& a, const Vec2& b) const {
 }
 
 DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {
+  return court.obstacles ? court.obstacles->route(court, a, b) : net_path(court, a, b);
+}
+
+DrivablePath net_path(const DrivableCourt& court, const Vec2& a, const Vec2& b) {
   // Round the net, in the canonical order.
   const auto round_net = [&court](const Vec2& from, const Vec2& to) {
     if (!lexicographic_less(to, from)) return canonical_path(court, from, to);
     DrivablePath path = canonical_path(court, to, from);
-    std::reverse(path.via.begin(), path.via.begin() + path.via_count);
+    std::reverse(path.via.begin(), path.via.end());
     return path;
   };
   const Vec2 a_out = court.fence_exit(a), b_out = court.fence_exit(b);
@@ -245,14 +247,10 @@ DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2
   // Out of the fence's lane square to it, round the net, and into the lane square to it (in a
   // corner the exit leaves one side's lane only: the approach point leaves the body room there).
   DrivablePath path;
-  const auto add = [&path](const Vec2& p) {
-    assert(path.via_count < static_cast<int>(path.via.size()));  // four exits, two corners
-    path.via[static_cast<std::size_t>(path.via_count++)] = p;
-  };
-  if (a_out != a) add(a_out);
+  if (a_out != a) path.via.push_back(a_out);
   const DrivablePath inner = round_net(a_out, b_out);
-  for (int i = 0; i < inner.via_count; ++i) add(inner.via[static_cast<std::size_t>(i)]);
-  if (b_out != b) add(b_out);
+  path.via.insert(path.via.end(), inner.via.begin(), inner.via.end());
+  if (b_out != b) path.via.push_back(b_out);
   path.length_m = (a_out - a).norm() + inner.length_m + (b - b_out).norm();
   return path;
 }

@@ -10,8 +10,9 @@
 // the fence with its mouth and backs off before it turns. Field frame: origin at the court centre
 // on the net line, x along the length.
 
-#include <array>
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "ballsight/core/field_rect.hpp"
 #include "ballsight/core/geometry.hpp"
@@ -40,6 +41,8 @@ struct CourtNet {
   }
 };
 
+class ObstacleDetours;
+
 struct DrivableCourt {
   Vec2 area_min_m = Vec2(-18.0, -9.0);  // the fence, an axis-aligned rectangle
   Vec2 area_max_m = Vec2(18.0, 9.0);
@@ -54,6 +57,9 @@ struct DrivableCourt {
   /// the fence from the ball by at most `corner_shift_m` (the ball still inside the mouth).
   double corner_room_m = 0.51;
   double corner_shift_m = 0.30;
+  /// What stands on the court (people, bags) and the ways round it (plan/obstacle_detours.hpp);
+  /// null: nothing.
+  std::shared_ptr<const ObstacleDetours> obstacles;
 
   /// A standard court: 36 x 18 m fence centred on the court, the net of a doubles court.
   static DrivableCourt standard() { return {}; }
@@ -94,14 +100,16 @@ struct DrivableCourt {
 /// from and to a or b).
 struct DrivablePath {
   double length_m = 0.0;
-  std::array<Vec2, 6> via{};
-  int via_count = 0;
+  std::vector<Vec2> via;
 };
 
 /// The fenced area (centred on the court) and the net of a site's court.
 DrivableCourt drivable_court(const SiteCourt& court);
 
-/// Shortest path between two points of the area outside the net's reach keep-out.
+/// Shortest path between two points of the area outside the net's reach keep-out, round the
+/// court's obstacles (ObstacleDetours::route).
 DrivablePath shortest_path(const DrivableCourt& court, const Vec2& a, const Vec2& b);
+/// The same with the obstacles not counted: round the net, and along the fence.
+DrivablePath net_path(const DrivableCourt& court, const Vec2& a, const Vec2& b);
 
 }  // namespace ballsight

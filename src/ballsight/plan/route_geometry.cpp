@@ -39,7 +39,7 @@ Drive drive(const PlanningProblem& problem, const Pose2D& from, const Vec2& to) 
   Drive d;
   if (problem.court) {
     const DrivablePath path = shortest_path(*problem.court, from.position, to);
-    d.points_m.assign(path.via.begin(), path.via.begin() + path.via_count);
+    d.points_m = path.via;
   }
   d.points_m.push_back(to);
   double heading = from.heading_rad;

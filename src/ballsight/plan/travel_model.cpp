@@ -49,13 +49,13 @@ TravelModel::TravelModel(std::vector<Vec2> nodes, double start_heading_rad,
       if (court) {
         const DrivablePath path = shortest_path(*court, pa, pb);
         ab.length_m = path.length_m;
-        if (path.via_count > 0) {
-          first = path.via[0];
-          last = path.via[static_cast<std::size_t>(path.via_count - 1)];
+        if (!path.via.empty()) {
+          first = path.via.front();
+          last = path.via.back();
           double heading = direction_rad(pa, first);
-          for (int k = 1; k <= path.via_count; ++k) {
-            const Vec2& from = path.via[static_cast<std::size_t>(k - 1)];
-            const Vec2& to = k < path.via_count ? path.via[static_cast<std::size_t>(k)] : pb;
+          for (std::size_t k = 1; k <= path.via.size(); ++k) {
+            const Vec2& from = path.via[k - 1];
+            const Vec2& to = k < path.via.size() ? path.via[k] : pb;
             const double next = direction_rad(from, to);
             ab.bend_rad += turn_angle_rad(heading, next);
             heading = next;

@@ -16,6 +16,8 @@ namespace {
 constexpr double kUpdatePeriodS = 0.1;  // the cameras' 10 Hz, until the court's clock tells
 
 constexpr double kSameBallM = 0.3;  // a ball seen this near a mark is the ball marked
+// An obstacle seen centred this near the robot is its own body (the cameras missed its markers).
+constexpr double kOwnBodyM = 0.35;
 
 /// The stalls on the way to one ball, with no ball collected between them: after `give_up_after`
 /// of them it is unreachable.
@@ -146,6 +148,12 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
       follower.set_path(planned);
     }
     if (pose) {
+      // The cameras' obstacles, less one where the robot stands (its own body, seen when its
+      // markers were not).
+      std::vector<ObstacleDisc> obstacles;
+      for (const ObstacleDisc& d : u->obstacles)
+        if ((d.center_m - pose->position).norm() > kOwnBodyM) obstacles.push_back(d);
+      local.set_obstacles(std::move(obstacles));
       const double now_s =
           sim_clock
               ? result.sim_time_s

@@ -59,6 +59,8 @@ struct GuardedCommand {
 class LocalPlanner {
  public:
   LocalPlanner(Costmap costmap, const LocalPlannerOptions& options);
+  /// What stands on the court from now on (Costmap::set_obstacles).
+  void set_obstacles(std::vector<ObstacleDisc> discs) { costmap_.set_obstacles(std::move(discs)); }
 
   /// The command to send for `wanted` at `pose`, with the mouth `mouth_ahead_m` ahead and
   /// steering for `carrot`.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ballsight/core/geometry.hpp"
+#include "ballsight/plan/obstacle_detours.hpp"
 
 namespace ballsight {
 
@@ -28,6 +29,7 @@ struct LinkUpdate {
   std::vector<Vec2> waypoints_m;  // the path to drive
   /// Where the route empties the basket before its next ball (none: it does not).
   std::optional<Vec2> unload_first_m;
+  std::vector<ObstacleDisc> obstacles;  // what stands on the court, as the cameras saw it
 };
 
 struct LinkStatus {

@@ -300,6 +300,10 @@ Pose2D SimulatedCourtService::robot_start() const {
   return impl_->start;
 }
 
+const std::vector<sim::CourtObstacle>& SimulatedCourtService::scene_obstacles() const {
+  return impl_->court->scene().obstacles;
+}
+
 const std::vector<SceneBall>& SimulatedCourtService::scene_balls() const {
   return impl_->scene_balls;
 }

@@ -87,6 +87,8 @@ class SimulatedCourtService : public CourtService {
   Pose2D robot_start() const;
   /// The tennis balls as the scene began (loop_truth.hpp's scene record).
   const std::vector<SceneBall>& scene_balls() const;
+  /// The people and bags on the court as it began (a walker where it started).
+  const std::vector<sim::CourtObstacle>& scene_obstacles() const;
   /// What really happened, one tick per vision period; read it once run() has returned.
   const std::vector<sim::WorldTick>& history() const;
 

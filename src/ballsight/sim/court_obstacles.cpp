@@ -63,6 +63,32 @@ void ObstacleOptions::validate() const {
           "must be in [0, 2] m");
 }
 
+ObstacleOptions parse_obstacles(std::string_view list, const std::string& option) {
+  ObstacleOptions o;
+  if (list == "none") return o;
+  while (!list.empty()) {
+    const std::size_t comma = list.find(',');
+    const std::string_view item = list.substr(0, comma);
+    if (item == "person") {
+      ++o.people;
+    } else if (item == "bag") {
+      ++o.bags;
+    } else if (item == "walker") {
+      ++o.walkers;
+    } else {
+      throw InputError(option + ": unknown obstacle '" + std::string(item) +
+                       "' (person, bag, walker, or none)");
+    }
+    list = comma == std::string_view::npos ? std::string_view() : list.substr(comma + 1);
+  }
+  try {
+    o.validate();
+  } catch (const InputError& e) {
+    throw InputError(option + ": " + e.what());
+  }
+  return o;
+}
+
 void add_obstacles(CourtScene& scene, const TennisCourtSpec& court, const ObstacleOptions& options,
                    std::uint64_t seed) {
   options.validate();

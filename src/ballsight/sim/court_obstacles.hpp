@@ -5,6 +5,8 @@
 // reachable round them.
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 
 #include "ballsight/sim/court_scene.hpp"
 #include "ballsight/sim/tennis_court.hpp"
@@ -23,6 +25,10 @@ struct ObstacleOptions {
   /// Throws InputError naming the first invalid field.
   void validate() const;
 };
+
+/// "none", or a comma-separated list of person, bag and walker (each as often as wanted: up to
+/// four of each); throws InputError naming `option` and what is wrong.
+ObstacleOptions parse_obstacles(std::string_view list, const std::string& option);
 
 /// Adds `options`' obstacles to `scene` (after its balls and robot are placed); deterministic for
 /// a seed, and independent of the scene's other draws.

@@ -7,6 +7,7 @@
 
 #include "ballsight/core/angle.hpp"
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/segment_distance.hpp"
 
 namespace ballsight::sim {
 namespace {
@@ -48,13 +49,6 @@ bool overlap(const Corners& a, const Corners& b) {
     }
   }
   return true;
-}
-
-/// Distance from `p` to the segment a-b.
-double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
-  return (p - (a + t * d)).norm();
 }
 
 /// Distance between two convex quadrilaterals that do not overlap: the nearest pair of a corner
