@@ -234,7 +234,7 @@ void BM_WholeChain(benchmark::State& state, bool at_10_hz) {
 }
 // The service's chain alone: what `serve --site` does with frames its cameras deliver.
 void BM_WholeChainReplayed(benchmark::State& state) {
-  const SimulatedCourt court(SimulatedCourtOptions{1, 40, 0.25, {}, {}});
+  const SimulatedCourt court(SimulatedCourtOptions{1, 40, 0.25, {}, {}, {}});
   constexpr std::uint64_t kSets = 10;
   std::vector<std::vector<cv::Mat>> sets(kSets);
   for (std::uint64_t tick = 0; tick < kSets; ++tick)

@@ -43,7 +43,8 @@ struct NodeArgs : DdsArgs {
   }
   SimulatedCourtOptions court_options() const {
     const SimulatedServiceOptions options = service_options();
-    return {options.seed, options.balls, options.cluster_share, options.layout, options.obstacles};
+    return {options.seed,   options.balls,     options.cluster_share,
+            options.layout, options.obstacles, options.arrange};
   }
 };
 

@@ -114,7 +114,7 @@ struct DistributedCourt {
 void expect_one_process_makes_the_same(DistributedCourt& court) {
   SCOPED_TRACE(court.domain.ns);
   const ReceivedSet& last = court.received.back();
-  const SimulatedCourt simulated({court.seed, 12, 0.25, {}, {}});
+  const SimulatedCourt simulated({court.seed, 12, 0.25, {}, {}, {}});
   const BallsightPipelineOptions options = service_pipeline_options(simulated.site());
   const auto detector = make_ballsight_pipeline(simulated.cameras(), options);
   UpdatePublisher publisher(simulated.site(), make_ballsight_pipeline(simulated.cameras(), options),
@@ -205,7 +205,7 @@ TEST(DdsNodes, ACourtNodeAloneOnTheSimulatedCourtWritesEveryTopic) {
   dds::Reader<dds::PathMsg> route(participant, "route", {true, 1});
   dds::Reader<dds::PoseArrayMsg> balls(participant, "balls", {true, 1});
   dds::Reader<dds::DiagnosticArrayMsg> diagnostics(participant, "diagnostics");
-  const std::string camera = SimulatedCourt({3, 12, 0.25, {}, {}}).site().cameras[3].name;
+  const std::string camera = SimulatedCourt({3, 12, 0.25, {}, {}, {}}).site().cameras[3].name;
   dds::Reader<dds::CameraDetectionsMsg> detections(participant, dds::detections_topic(camera));
   ChildProcess court(BALLSIGHT_CLI, node_args("court-node", domain, 3, {}), dir / "court.log");
   std::map<std::string, int> got;

@@ -60,6 +60,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   options.cluster_share = scene.layout.clustered ? 0.75 : 0.0;
   options.layout = scene.layout.others;
   options.obstacles = scene.obstacles;
+  options.arrange = scene.arrange;
   options.report_pipeline = system.report_pipeline;
   options.planner.kind = system.planner;
   options.lockstep = true;
@@ -174,9 +175,11 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
                                                 system.name) == options.systems.end()) {
         continue;
       }
-      const LoopScene scene{options.seed + static_cast<std::uint64_t>(k), balls,
+      const LoopScene scene{options.seed + static_cast<std::uint64_t>(k),
+                            balls,
                             layouts[static_cast<std::size_t>(k) % layouts.size()],
-                            options.obstacles ? *options.obstacles : loop_obstacles(k)};
+                            options.obstacles ? *options.obstacles : loop_obstacles(k),
+                            {}};
       const std::filesystem::path record =
           options.record_dir.empty()
               ? std::filesystem::path()

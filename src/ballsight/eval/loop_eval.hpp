@@ -55,6 +55,7 @@ struct LoopScene {
   int balls = 10;
   LoopLayout layout;
   sim::ObstacleOptions obstacles;
+  std::function<void(sim::CourtScene&)> arrange;  // SimulatedCourtOptions::arrange
 };
 
 struct LoopRun {

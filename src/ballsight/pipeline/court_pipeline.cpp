@@ -5,6 +5,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/pipeline/camera_workers.hpp"
 #include "ballsight/world/hidden_balls.hpp"
+#include "ballsight/world/hidden_obstacles.hpp"
 
 namespace ballsight {
 
@@ -104,7 +105,10 @@ class BallsightPipeline final : public CourtPipeline {
   }
   WorldModel fuse(const CameraDetectionLists& detections) override {
     WorldModel world = build_world_model(cameras_, detections, options_.world);
-    if (options_.remember_hidden_balls) hidden_.apply(world);
+    if (options_.remember_hidden_balls) {
+      hidden_.apply(world);
+      hidden_obstacles_.apply(world);
+    }
     return world;
   }
   CourtMethod method() const override { return CourtMethod::ballsight; }
@@ -116,6 +120,7 @@ class BallsightPipeline final : public CourtPipeline {
   std::vector<CourtDetector> detectors_;      // one per camera: each task uses its own
   std::vector<CourtForeground> foregrounds_;  // one per camera, or none
   HiddenBallMemory hidden_;
+  HiddenObstacleMemory hidden_obstacles_;
 };
 
 }  // namespace

@@ -71,8 +71,9 @@ struct SeedPipelineOptions {
 struct BallsightPipelineOptions {
   CourtDetectorOptions detector;
   CourtWorldOptions world;
-  /// Frame sets in sequence (the service): balls hidden by the robot's body are remembered
-  /// (world/hidden_balls.hpp). Off for independent scenes (`eval court`).
+  /// Frame sets in sequence (the service): balls hidden by the robot's body and obstacles beside
+  /// it are remembered (world/hidden_balls.hpp, world/hidden_obstacles.hpp). Off for independent
+  /// scenes (`eval court`).
   bool remember_hidden_balls = false;
   /// Per camera in camera order, its view of the empty court: what differs from it is reported as
   /// obstacle views (detect/court_foreground.hpp) and put on the floor by the world model. Empty:

@@ -19,6 +19,10 @@ sim::CourtScene make_scene(const sim::CourtRig& rig, const SimulatedCourtOptions
   sim::CourtScene scene =
       sim::make_court_scene(rig.court, scenario, sim::derive_seed(options.seed, 1));
   scene.effects.quantile_noise = true;  // 40 views a simulated second
+  if (options.arrange) {
+    options.arrange(scene);
+    scene.validate();
+  }
   return scene;
 }
 

@@ -6,6 +6,7 @@
 // one process would.
 
 #include <cstdint>
+#include <functional>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <vector>
@@ -29,6 +30,9 @@ struct SimulatedCourtOptions {
   double cluster_share = 0.25;  // of them, in clusters of 2-4 touching balls
   sim::BallLayout layout = sim::BallLayout::scattered;  // where the others lie
   sim::ObstacleOptions obstacles;                       // people and bags (none by default)
+  /// Changes the drawn scene before the court begins (a test's or an experiment's own layout);
+  /// the scene must stay valid.
+  std::function<void(sim::CourtScene&)> arrange;
 };
 
 class SimulatedCourt {

@@ -93,8 +93,9 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   options.validate();
   Impl& s = *impl_;
   s.options = options;
-  s.court = std::make_unique<SimulatedCourt>(SimulatedCourtOptions{
-      options.seed, options.balls, options.cluster_share, options.layout, options.obstacles});
+  s.court = std::make_unique<SimulatedCourt>(
+      SimulatedCourtOptions{options.seed, options.balls, options.cluster_share, options.layout,
+                            options.obstacles, options.arrange});
   s.site = s.court->site();
   if (options.capacity) s.site.robot.capacity = *options.capacity;
   const Site& site = s.site;

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -57,6 +58,7 @@ struct SimulatedServiceOptions {
   sim::RobotImperfections robot;   // the simulated collector's latency and slip (its seed: seed's)
   std::optional<int> capacity;     // the basket's balls (site.yml's robot.capacity), if not 60
   sim::ObstacleOptions obstacles;  // people and bags on the court (none by default)
+  std::function<void(sim::CourtScene&)> arrange;  // SimulatedCourtOptions::arrange
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
