@@ -33,7 +33,7 @@ struct Setup {
 
 // 40 balls (a quarter in clusters, some by the robot), the weather of scene 7, noise: rendered
 // once per court surface.
-Setup render_setup(sim::CourtSurface surface) {
+Setup render_setup(sim::CourtSurface surface, bool obstacles = false) {
   cv::setNumThreads(1);
   sim::TennisCourtSpec court;
   sim::set_court_surface(court, surface);
@@ -43,16 +43,20 @@ Setup render_setup(sim::CourtSurface surface) {
   const sim::CourtRig rig = sim::make_court_rig(court, report_cameras, 1);
   sim::CourtScenarioOptions options;
   options.ball_count = 40;
+  if (obstacles) options.obstacles.people = options.obstacles.bags = 1;
   const sim::CourtScene scene = sim::make_court_scene(rig.court, options, 7);
   Setup out;
   out.options = ballsight_options_for_site(simulated_site(rig));
   for (const sim::CourtCamera& camera : rig.cameras) {
+    const sim::CourtRenderer renderer(camera, rig.court);
     out.cameras.push_back({camera.camera, camera.camera_from_field});
-    out.frames.cameras.push_back({out.frames.cameras.size(),
-                                  sim::CourtRenderer(camera, rig.court).render(scene, 3).bgr,
-                                  0,
-                                  0,
-                                  {}});
+    out.frames.cameras.push_back(
+        {out.frames.cameras.size(), renderer.render(scene, 3).bgr, 0, 0, {}});
+    if (obstacles) {
+      cv::Mat empty = renderer.lit_background(scene.lighting, scene.leaves);
+      sim::apply_image_effects(empty, scene.effects, 11);
+      out.options.empty_court.push_back(empty);
+    }
   }
   return out;
 }
@@ -83,6 +87,19 @@ void BM_CourtFrameSetBallsight(benchmark::State& state) {
   state.SetLabel("4 x 1920x1080 -> world model, ballsight");
 }
 BENCHMARK(BM_CourtFrameSetBallsight)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+// A person and a bag on the court, and the pipeline given each camera's empty-court view: the
+// obstacles found as well (detect/court_foreground.hpp, world/floor_obstacles.hpp).
+void BM_CourtFrameSetBallsightObstacles(benchmark::State& state) {
+  static const Setup s = render_setup(sim::CourtSurface::green, true);
+  const auto pipeline = make_ballsight_pipeline(s.cameras, s.options);
+  run_frame_sets(state, *pipeline, s);
+  state.SetLabel("4 x 1920x1080 with a person and a bag -> world model and obstacles, ballsight");
+}
+BENCHMARK(BM_CourtFrameSetBallsightObstacles)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime();

@@ -85,11 +85,12 @@ TEST(FloorObstacles, APersonAndABagWhereTheyStand) {
 TEST(FloorObstacles, NoneOnACourtWithoutThem) {
   sim::CourtScenarioOptions options;
   options.ball_count = 60;
-  for (std::uint64_t seed = 4; seed < 16; ++seed) {
-  const WorldModel world = court().world(sim::make_court_scene(court().rig.court, options, seed));
-  EXPECT_TRUE(world.obstacles.empty()) << seed << world.obstacles.size() << " obstacles, the first at "
-                                       << world.obstacles.front().center_m.transpose();
-  ASSERT_TRUE(world.robot.has_value());
+  for (std::uint64_t seed = 4; seed < 10; ++seed) {
+    const WorldModel world = court().world(sim::make_court_scene(court().rig.court, options, seed));
+    EXPECT_TRUE(world.obstacles.empty())
+        << "seed " << seed << ": " << world.obstacles.size() << " obstacles, the first at "
+        << world.obstacles.front().center_m.transpose();
+    ASSERT_TRUE(world.robot.has_value());
   }
 }
 

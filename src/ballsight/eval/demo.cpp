@@ -287,7 +287,8 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
       " s. Systems: the report's pipeline and priority rule (report), ballsight's pipeline with "
       "the priority rule (priority), ballsight; then ballsight with faults (a camera dies, the "
       "service and "
-      "the robot are killed and started again). Scored on the court's record; " +
+      "the robot are killed and started again). Scored on the court's record (contacts: ticks of "
+      "0.1 s in which the net or the fence stopped the robot); " +
       fixed(seconds_since(loop_start), 1) + " s wall (docs/robot-link.md):" + loop_results;
   const std::string title = "ballsight demo (seed " + std::to_string(options.seed) + ")";
 

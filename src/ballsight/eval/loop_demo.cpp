@@ -17,16 +17,17 @@ void LoopDemoOptions::validate() const {
 
 std::string loop_demo_table(const std::vector<LoopDemoRun>& runs) {
   std::string text =
-      "system               collected  time to all (s)  distance (m)  unloads  given up  "
+      "system               collected  time to all (s)  distance (m)  contacts  unloads  given up  "
       "latency p50/p99/max (ms)  missed updates  wall (s)\n";
   for (const LoopDemoRun& r : runs) {
     char line[256];
     std::snprintf(
         line, sizeof line,
-        "%-20s %4d / %-3d %16s %13.1f %8d %9d %10.1f / %.1f / %.1f %14llu %9.1f\n", r.name.c_str(),
-        r.score.collected, r.score.balls,
+        "%-20s %4d / %-3d %16s %13.1f %9d %8d %9d %10.1f / %.1f / %.1f %14llu %9.1f\n",
+        r.name.c_str(), r.score.collected, r.score.balls,
         r.score.all ? fixed(r.score.time_s, 1).c_str() : "not all", r.score.distance_m,
-        r.score.unloads, r.unreachable, quantile(r.latency_ms, 0.5), quantile(r.latency_ms, 0.99),
+        r.score.blocked_ticks, r.score.unloads, r.unreachable, quantile(r.latency_ms, 0.5),
+        quantile(r.latency_ms, 0.99),
         r.latency_ms.empty() ? 0.0 : *std::max_element(r.latency_ms.begin(), r.latency_ms.end()),
         static_cast<unsigned long long>(r.gaps), r.wall_s);
     text += line;

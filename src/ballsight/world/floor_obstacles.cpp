@@ -46,10 +46,12 @@ bool covered(const std::vector<PixelDetection>& views, const Vec2& pixel, int ri
 
 /// Where each column of a view meets the floor: its lowest covered pixel's bottom edge, on the
 /// floor.
-std::vector<Vec2> feet(const FieldCamera& camera, const PixelDetection& view, int step_px) {
+std::vector<Vec2> feet(const FieldCamera& camera, const PixelDetection& view, int min_step_px,
+                       int max_feet) {
   std::vector<Vec2> out;
   const CoveragePatch& p = view.patch;
-  for (int x = p.x; x < p.x + p.width; x += step_px) {
+  const int step = std::max(min_step_px, (p.width + max_feet - 1) / max_feet);
+  for (int x = p.x; x < p.x + p.width; x += step) {
     for (int y = p.y + p.height - 1; y >= p.y; --y) {
       if (p.at(x, y) < 0.5f) continue;
       if (const std::optional<Vec3> floor = camera.point_at_height(Vec2(x + 0.5, y + 1.0), 0.0))
@@ -101,6 +103,8 @@ void FloorObstacleOptions::validate() const {
   require(in(robot_margin_m, 0.0, 2.0), "obstacles.robot_margin_m", "must be in [0, 2] m");
   require(in(ball_margin_m, 0.0, 1.0), "obstacles.ball_margin_m", "must be in [0, 1] m");
   require(column_step_px >= 1, "obstacles.column_step_px", "must be at least 1");
+  require(max_feet_per_view >= 1, "obstacles.max_feet_per_view", "must be at least 1");
+  require(in(ball_feet_m, 0.0, 1.0), "obstacles.ball_feet_m", "must be in [0, 1] m");
   if (net) net->validate();
 }
 
@@ -167,8 +171,15 @@ std::vector<FloorObstacle> locate_floor_obstacles(const std::vector<FieldCamera>
   const int reach = static_cast<int>(std::ceil(options.search_m / options.cell_m));
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     for (const PixelDetection& view : views[c]) {
-      for (const Vec2& foot : feet(cameras[c], view, options.column_step_px)) {
-        if (!area.contains(foot)) continue;
+      for (const Vec2& foot :
+           feet(cameras[c], view, options.column_step_px, options.max_feet_per_view)) {
+        // The feet of the robot's and the balls' own views are not looked round.
+        if (!area.contains(foot) || (body && in_box(*body, foot)) ||
+            std::any_of(balls.begin(), balls.end(), [&](const FusedBall& b) {
+              return (b.position_m - foot).norm() < options.ball_feet_m;
+            })) {
+          continue;
+        }
         const int col0 = static_cast<int>((foot.x() - area.min_m.x()) / options.cell_m);
         const int row0 = static_cast<int>((foot.y() - area.min_m.y()) / options.cell_m);
         for (int row = std::max(0, row0 - reach); row <= std::min(grid.rows - 1, row0 + reach);

@@ -29,7 +29,9 @@ struct FloorObstacleOptions {
   int min_cells = 4;            // smaller groups are not obstacles (a ball cluster's corner)
   double robot_margin_m = 0.4;  // around the robot's body, nothing is an obstacle
   double ball_margin_m = 0.12;  // around a ball's centre, nothing is an obstacle
-  int column_step_px = 2;       // feet are taken every this many columns of a view
+  int column_step_px = 2;       // feet are taken every this many columns of a view at least,
+  int max_feet_per_view = 16;   // and this many at most
+  double ball_feet_m = 0.3;     // a foot this near a ball is the ball's own view's
   int foot_rise_px = 2;         // a floor point counts as covered this far below a view
   /// The court's net: a camera that looks at a floor point through it does not see what stands
   /// there (the net, part of the empty court, is in front of its foot).
