@@ -84,7 +84,7 @@ const nlohmann::json& openapi_document() {
               "responses": {"200": {"description": "driving"}, "400": {"description": "bad body"}, "401": {"description": "no token"}, "404": {"description": "not a simulated court"}}}
     },
     "/api/v1/world": {
-      "get": {"summary": "The latest world model: balls, collection sites, robot, cameras; its seq, service id, capture and publish times",
+      "get": {"summary": "The latest world model: balls, collection sites, obstacles, robot, cameras; its seq, service id, capture and publish times",
               "responses": {"200": {"description": "world model"}, "503": {"description": "no update yet"}}}
     },
     "/api/v1/route": {
