@@ -54,7 +54,8 @@ void run_eval_loop(const EvalLoopArgs& args) {
                      r.system.c_str(), static_cast<unsigned long long>(r.seed), r.layout.c_str(),
                      r.obstacles.c_str(), r.collected, r.balls, r.reachable, r.time_s, r.distance_m,
                      r.stalls, r.contacts, r.min_clearance_m, r.dead_reckoned, r.guarded, r.unloads,
-                     r.unreachable, r.never_overlapped ? "" : " (overlapped the net or fence!)");
+                     r.unreachable,
+                     r.never_overlapped ? "" : " (touched the net, the fence or an obstacle)");
       });
   const nlohmann::json j = eval::loop_eval_json(runs);
   if (args.json) {

@@ -58,7 +58,7 @@ TEST(LoopEndToEnd, ABallAgainstTheNetOneInACornerAndOneBehindAPersonAllCollected
   EXPECT_EQ(run.reachable, 3);
   EXPECT_FALSE(run.timed_out);
   EXPECT_LT(run.time_s, 60.0);
-  EXPECT_EQ(run.obstacles, "none") << "the scene's own person, not the mix's";
+  EXPECT_EQ(run.obstacles, "person") << "the scene's own person";
 
   // The body's distance to the person alone (a court with no net and a far fence), every tick.
   const LoopTruth truth = read_loop_truth(temp / "truth.jsonl");

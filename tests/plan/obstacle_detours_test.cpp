@@ -57,12 +57,18 @@ TEST(ObstacleDetours, RoundAnObstacleInTheWayAtTheKeepDistance) {
 }
 
 TEST(ObstacleDetours, RoundTwoObstaclesAndTheNet) {
+  // Across the net round its east post, a person on each side in the way of that path.
+  const Vec2 a(-8, 6), b(8, 6);
+  const DrivablePath bare = shortest_path(DrivableCourt::standard(), a, b);
+  ASSERT_EQ(bare.via.size(), 2u);
+  const Vec2 left = 0.5 * (a + bare.via[0]), right = 0.5 * (bare.via[1] + b);
   const DrivableCourt court =
-      with_obstacles(DrivableCourt::standard(), {{Vec2(-4, 0), 0.3}, {Vec2(4, 0.5), 0.4}}, kKeep);
-  const Vec2 a(-8, 0), b(8, 0);
+      with_obstacles(DrivableCourt::standard(), {{left, 0.3}, {right, 0.4}}, kKeep);
   const DrivablePath p = shortest_path(court, a, b);
-  EXPECT_GE(nearest(a, p, b, Vec2(-4, 0)), 0.8 - 1e-6);
-  EXPECT_GE(nearest(a, p, b, Vec2(4, 0.5)), 0.9 - 1e-6);
+  EXPECT_NE(p.via, bare.via);
+  EXPECT_GT(p.length_m, bare.length_m);
+  EXPECT_GE(nearest(a, p, b, left), 0.8 - 1e-6);
+  EXPECT_GE(nearest(a, p, b, right), 0.9 - 1e-6);
   Vec2 from = a;
   for (const Vec2& via : p.via) {
     EXPECT_FALSE(court.blocked(from, via)) << via.transpose();
@@ -70,6 +76,19 @@ TEST(ObstacleDetours, RoundTwoObstaclesAndTheNet) {
   }
   EXPECT_FALSE(court.blocked(from, b));
   EXPECT_NEAR(p.length_m, polyline_length(a, p, b), 1e-9);
+}
+
+TEST(ObstacleDetours, OutOfTwoOverlappingKeepOutsAndOnlyTheRobotsBody) {
+  const DrivableCourt court =
+      with_obstacles(DrivableCourt::standard(), {{Vec2(6, 2), 0.3}, {Vec2(6, 3.2), 0.3}}, kKeep);
+  const Vec2 between(6.6, 2.6);  // within both keep-outs
+  const DrivablePath p = shortest_path(court, between, Vec2(2, 2.6));
+  ASSERT_FALSE(p.via.empty());
+  EXPECT_GE((p.via.front() - Vec2(6, 2)).norm(), 0.8 - 1e-6);
+  EXPECT_GE((p.via.front() - Vec2(6, 3.2)).norm(), 0.8 - 1e-6);
+  const Pose2D robot{Vec2(1, 1), kPi / 2.0};
+  EXPECT_TRUE(on_robot_body(robot, Vec2(1.3, 1.2)));
+  EXPECT_FALSE(on_robot_body(robot, Vec2(1.6, 1.0)));
 }
 
 TEST(ObstacleDetours, APointBesideAnObstacleIsLeftStraightAway) {

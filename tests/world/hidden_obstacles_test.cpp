@@ -1,10 +1,11 @@
 // Obstacles beside the robot (world/hidden_obstacles.hpp): one that drops out of the world model
 // while the robot stands near it is kept until it is seen again, the robot leaves, or time is up;
 // one that drops out far from the robot is gone.
-#include "ballsight/core/error.hpp"
 #include "ballsight/world/hidden_obstacles.hpp"
 
 #include <gtest/gtest.h>
+
+#include "ballsight/core/error.hpp"
 
 namespace ballsight {
 namespace {
@@ -50,7 +51,14 @@ TEST(HiddenObstacles, KeptBesideTheRobotUntilSeenAgainOrLeft) {
   HiddenObstacleMemory left;
   WorldModel v = world_with(Vec2(0, 0), {person(Vec2(1, 0))});
   left.apply(v);
-  v = world_with(Vec2(5, 0), {});  // the robot drove away
+  v = world_with(Vec2(0.2, 0), {});  // remembered,
+  left.apply(v);
+  EXPECT_EQ(v.obstacles.size(), 1u);
+  v = world_with(Vec2(0.2, 0), {});  // also while the robot itself is not seen,
+  v.robot.reset();
+  left.apply(v);
+  EXPECT_EQ(v.obstacles.size(), 1u);
+  v = world_with(Vec2(5, 0), {});  // until the robot drove away
   left.apply(v);
   EXPECT_TRUE(v.obstacles.empty());
   EXPECT_THROW(HiddenObstacleMemory(HiddenObstacleOptions{-1.0, 3, 0.5}), InputError);

@@ -23,8 +23,12 @@ CourtForeground::CourtForeground(const cv::Mat& empty_court, const ForegroundOpt
 }
 
 cv::Mat CourtForeground::half(const cv::Mat& bgr) const {
-  cv::Mat small;
-  cv::resize(bgr, small, cv::Size(bgr.cols / 2, bgr.rows / 2), 0.0, 0.0, cv::INTER_NEAREST);
+  cv::Mat small(bgr.rows / 2, bgr.cols / 2, CV_8UC3);
+  for (int y = 0; y < small.rows; ++y) {
+    const auto* in = bgr.ptr<cv::Vec3b>(2 * y);
+    auto* out = small.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < small.cols; ++x) out[x] = in[2 * x];
+  }
   return small;
 }
 

@@ -42,11 +42,12 @@ sim::ObstacleOptions loop_obstacles(int k) {
   return o;
 }
 
-std::string obstacles_name(const sim::ObstacleOptions& o) {
+std::string obstacles_name(const std::vector<sim::CourtObstacle>& obstacles) {
   std::string name;
-  for (const auto& [n, what] :
-       {std::pair{o.people, "person"}, {o.bags, "bag"}, {o.walkers, "walker"}})
-    for (int i = 0; i < n; ++i) name += (name.empty() ? "" : "+") + std::string(what);
+  for (const sim::CourtObstacle& o : obstacles) {
+    name += name.empty() ? "" : "+";
+    name += o.walk_to ? "walker" : std::string(sim::obstacle_kind_name(o.kind));
+  }
   return name.empty() ? "none" : name;
 }
 
@@ -101,7 +102,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   run.system = system.name;
   run.seed = scene.seed;
   run.layout = scene.layout.name();
-  run.obstacles = obstacles_name(scene.obstacles);
+  run.obstacles = obstacles_name(service.scene_obstacles());
   run.balls = score.balls;
   const sim::TennisCourtSpec spec;  // the referee's court, as score_loop's
   std::vector<sim::CourtObstacle> standing = service.scene_obstacles();

@@ -47,8 +47,8 @@ const std::vector<LoopLayout>& loop_layouts();
 /// The obstacles scene k of an evaluation has in the default mix (k modulo 3): none, a person
 /// standing and a bag, a person walking across.
 sim::ObstacleOptions loop_obstacles(int k);
-/// "none", or the obstacles joined by '+': "person+bag", "walker".
-std::string obstacles_name(const sim::ObstacleOptions& obstacles);
+/// "none", or a scene's obstacles joined by '+': "person+bag", "walker".
+std::string obstacles_name(const std::vector<sim::CourtObstacle>& obstacles);
 
 struct LoopScene {
   std::uint64_t seed = 1;

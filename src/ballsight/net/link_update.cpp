@@ -54,7 +54,8 @@ LinkUpdate parse_link_update(const json& u) {
   if (const auto obstacles = world.find("obstacles"); obstacles != world.end()) {
     const std::vector<Vec2> centers = points(*obstacles, "update.world.obstacles");
     for (std::size_t i = 0; i < centers.size(); ++i) {
-      const json& radius = (*obstacles)[i].value("radius_m", json());
+      const json& o = (*obstacles)[i];
+      const json radius = o.is_object() ? o.value("radius_m", json()) : json();
       require(radius.is_number() && radius.get<double>() >= 0.0,
               "update.world.obstacles[" + std::to_string(i) + "].radius_m",
               "expected a non-negative number");

@@ -19,12 +19,23 @@ namespace {
 // The cameras place a ball far from all of them a few cm off (a ball against the fence near a
 // mast is seen from 35 m and more): one seen this little beyond the fence lies against it.
 constexpr double kBeyondFenceM = 0.25;
+// The planner goes round the 16 obstacles nearest the robot (ObstacleDetours' limit), each at
+// most 5 m across.
+constexpr std::size_t kMaxObstacles = 16;
+constexpr double kMaxObstacleRadiusM = 5.0;
 
 }  // namespace
 
-std::vector<ObstacleDisc> obstacle_discs(const WorldModel& world) {
+std::vector<ObstacleDisc> obstacle_discs(const WorldModel& world, const Pose2D& robot) {
   std::vector<ObstacleDisc> discs;
-  for (const FloorObstacle& o : world.obstacles) discs.push_back({o.center_m, o.radius_m});
+  for (const FloorObstacle& o : world.obstacles) {
+    if (on_robot_body(robot, o.center_m)) continue;
+    discs.push_back({o.center_m, std::min(o.radius_m, kMaxObstacleRadiusM)});
+  }
+  std::sort(discs.begin(), discs.end(), [&](const ObstacleDisc& a, const ObstacleDisc& b) {
+    return (a.center_m - robot.position).norm() < (b.center_m - robot.position).norm();
+  });
+  if (discs.size() > kMaxObstacles) discs.resize(kMaxObstacles);
   return discs;
 }
 

@@ -16,8 +16,10 @@
 
 namespace ballsight {
 
-/// The world model's obstacles as the planner sees them: the circle round each footprint.
-std::vector<ObstacleDisc> obstacle_discs(const WorldModel& world);
+/// The world model's obstacles as the planner sees them from `robot`: the circle round each
+/// footprint, the 16 nearest the robot, less one centred on its body (its own, when the cameras
+/// missed its markers).
+std::vector<ObstacleDisc> obstacle_discs(const WorldModel& world, const Pose2D& robot);
 /// How far the robot's reference point keeps from an obstacle's circle: half the diagonal of its
 /// body with the site's collector (the box of 0.60 x 0.45 m), and 10 cm.
 double obstacle_keep_m(const SiteRobot& robot);

@@ -76,14 +76,22 @@ ObstacleDetours::ObstacleDetours(const DrivableCourt& court, std::vector<Obstacl
 }
 
 Vec2 ObstacleDetours::exit_of(const Vec2& p) const {
-  for (const ObstacleDisc& d : discs_) {
-    const Vec2 out = p - d.center_m;
-    const double keep = d.radius_m + keep_m_;
-    if (out.norm() >= keep - kTouchM) continue;
-    const Vec2 away = out.norm() > 1e-9 ? Vec2(out.normalized()) : Vec2::UnitX();
-    return d.center_m + keep * away;
+  // Out of each keep-out in turn (out of one may be into another where two overlap): a few
+  // rounds, then where it got.
+  Vec2 at = p;
+  for (int round = 0; round < 4; ++round) {
+    bool moved = false;
+    for (const ObstacleDisc& d : discs_) {
+      const Vec2 out = at - d.center_m;
+      const double keep = d.radius_m + keep_m_;
+      if (out.norm() >= keep - kTouchM) continue;
+      const Vec2 away = out.norm() > 1e-9 ? Vec2(out.normalized()) : Vec2::UnitX();
+      at = d.center_m + keep * away;
+      moved = true;
+    }
+    if (!moved) break;
   }
-  return p;
+  return at;
 }
 
 bool ObstacleDetours::clear(const Vec2& a, const DrivablePath& path, const Vec2& b) const {
@@ -147,6 +155,12 @@ DrivablePath ObstacleDetours::route(const DrivableCourt& court, const Vec2& a,
   if (b_out != b) path.via.push_back(b_out);
   path.length_m = (a_out - a).norm() + inner.length_m + (b - b_out).norm();
   return path;
+}
+
+bool on_robot_body(const Pose2D& pose, const Vec2& p) {
+  constexpr double kHalfLengthM = 0.40, kHalfWidthM = 0.45;
+  const Vec2 local = pose.field_from_robot().inverse() * p;
+  return std::abs(local.x()) <= kHalfLengthM && std::abs(local.y()) <= kHalfWidthM;
 }
 
 DrivableCourt with_obstacles(DrivableCourt court, std::vector<ObstacleDisc> discs, double keep_m) {

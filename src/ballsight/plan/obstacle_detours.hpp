@@ -51,6 +51,11 @@ class ObstacleDetours {
   std::vector<DrivablePath> legs_;  // corners x corners: the direct leg, when clear
 };
 
+/// Whether `p` lies on the collector's body at `pose` (0.30 m ahead and behind, 0.35 m either
+/// side) or within 10 cm of it: an obstacle centred there is the robot itself, seen when the
+/// cameras missed its markers.
+bool on_robot_body(const Pose2D& pose, const Vec2& p);
+
 /// `court` with `discs` on it (none: as it was).
 DrivableCourt with_obstacles(DrivableCourt court, std::vector<ObstacleDisc> discs,
                              double keep_m = 0.5);

@@ -16,8 +16,6 @@ namespace {
 constexpr double kUpdatePeriodS = 0.1;  // the cameras' 10 Hz, until the court's clock tells
 
 constexpr double kSameBallM = 0.3;  // a ball seen this near a mark is the ball marked
-// An obstacle seen centred this near the robot is its own body (the cameras missed its markers).
-constexpr double kOwnBodyM = 0.35;
 
 /// The stalls on the way to one ball, with no ball collected between them: after `give_up_after`
 /// of them it is unreachable.
@@ -152,7 +150,7 @@ CollectorResult run_collector(RobotLink& link, const CollectorOptions& options,
       // markers were not).
       std::vector<ObstacleDisc> obstacles;
       for (const ObstacleDisc& d : u->obstacles)
-        if ((d.center_m - pose->position).norm() > kOwnBodyM) obstacles.push_back(d);
+        if (!on_robot_body(*pose, d.center_m)) obstacles.push_back(d);
       local.set_obstacles(std::move(obstacles));
       const double now_s =
           sim_clock

@@ -53,7 +53,7 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
   PlanningProblem problem = site_planning_problem(site, *robot, std::move(left));
   // Round what stands on the court.
   problem.court =
-      with_obstacles(*problem.court, obstacle_discs(world), obstacle_keep_m(site.robot));
+      with_obstacles(*problem.court, obstacle_discs(world, *robot), obstacle_keep_m(site.robot));
   // The basket matters when the balls left outnumber its room: then the route plans its unload
   // trips, the last one left open (the collection ends at the last ball).
   const int capacity = site.robot.capacity;

@@ -25,7 +25,14 @@ CourtWorld::CourtWorld(CourtScene scene, const TennisCourtSpec& court, const Dri
 void CourtWorld::walk_step() {
   for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
     CourtObstacle& o = scene_.obstacles[i];
-    if (!o.walk_to || (o.pose.position - motion_.pose.position).norm() < kWalkerWaitM) continue;
+    if (!o.walk_to) continue;
+    // It waits for the robot, but not standing on a ball (it steps over balls as it walks).
+    const bool on_ball =
+        std::any_of(scene_.balls.begin(), scene_.balls.end(), [&](const SceneSphere& b) {
+          return (b.center_in_field.head<2>() - o.pose.position).norm() <
+                 o.half_size.x() + b.radius_m;
+        });
+    if (!on_ball && (o.pose.position - motion_.pose.position).norm() < kWalkerWaitM) continue;
     const Vec2 target = walking_out_[i] ? *o.walk_to : walk_from_[i];
     const Vec2 to = target - o.pose.position;
     const double step = o.walk_mps * kStepS;

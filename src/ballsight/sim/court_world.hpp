@@ -77,7 +77,7 @@ class CourtWorld {
 
   static constexpr double kStepS = 0.01;
   /// A walking person stands still while its centre is this near the robot's (and the robot's
-  /// body not yet touching it): people wait for a robot to pass.
+  /// body not yet touching it), though not on a ball: people wait for a robot to pass.
   static constexpr double kWalkerWaitM = 1.5;
 
  private:

@@ -202,7 +202,7 @@ std::vector<FloorObstacle> locate_floor_obstacles(const std::vector<FieldCamera>
       if (!occupied(col, row)) continue;
       std::vector<std::pair<int, int>> cells, firm;
       std::vector<int> cameras_seen;
-      std::deque<std::pair<int, int>> open{{col, row}};
+      std::deque<std::pair<int, int>> open;
       const auto take = [&](int c, int r) {
         if (state[grid.index(c, r)] == kFirm) firm.emplace_back(c, r);
         state[grid.index(c, r)] = kLooked;

@@ -25,17 +25,20 @@ void HiddenObstacleMemory::apply(WorldModel& world) {
       return (w.center_m - o.center_m).norm() < options_.match_m;
     });
   };
-  const auto near_robot = [&](const FloorObstacle& o) {
-    return world.robot &&
-           (world.robot->pose.position - o.center_m).norm() - o.radius_m <= options_.near_robot_m;
+  // With the robot not seen (a person beside it may hide its markers), what is remembered stays
+  // for its time; nothing new is taken up.
+  const auto near_robot = [&](const FloorObstacle& o, bool unseen_robot) {
+    if (!world.robot) return unseen_robot;
+    return (world.robot->pose.position - o.center_m).norm() - o.radius_m <= options_.near_robot_m;
   };
   std::vector<Remembered> kept;
   for (Remembered& r : remembered_) {
-    if (!seen(r.obstacle) && near_robot(r.obstacle) && ++r.frame_sets <= options_.max_frame_sets)
+    if (!seen(r.obstacle) && near_robot(r.obstacle, true) &&
+        ++r.frame_sets <= options_.max_frame_sets)
       kept.push_back(r);
   }
   for (const FloorObstacle& o : last_seen_) {
-    if (!seen(o) && near_robot(o) && options_.max_frame_sets > 0) {
+    if (!seen(o) && near_robot(o, false) && options_.max_frame_sets > 0) {
       FloorObstacle hidden = o;
       hidden.cameras.clear();
       kept.push_back({hidden, 1});

@@ -3,7 +3,7 @@
 // (its own views are there: world/floor_obstacles.hpp), so a person the robot comes near drops out
 // of the world model just when it matters. Over a sequence of frame sets, an obstacle that
 // vanishes while the robot is near it is remembered until it is seen again, the robot has moved
-// away from it, or for a while at most.
+// away from it, or for a while at most (also while the robot itself is not seen).
 
 #include <vector>
 
