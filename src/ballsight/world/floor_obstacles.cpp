@@ -31,12 +31,12 @@ struct CellGrid {
 
 /// Whether one of a camera's obstacle `views` covers `pixel` or the pixel `rise_px` above it: a
 /// floor point under an object far away lies within a pixel or two of its foot in the image.
-bool covered(const std::vector<PixelDetection>& views, const Vec2& pixel, int rise_px) {
+bool covered(const std::vector<const PixelDetection*>& views, const Vec2& pixel, int rise_px) {
   const int x = static_cast<int>(std::floor(pixel.x()));
   const int y0 = static_cast<int>(std::floor(pixel.y()));
   for (const int y : {y0, y0 - rise_px}) {
-    for (const PixelDetection& d : views) {
-      const CoveragePatch& p = d.patch;
+    for (const PixelDetection* d : views) {
+      const CoveragePatch& p = d->patch;
       if (x >= p.x && y >= p.y && x < p.x + p.width && y < p.y + p.height && p.at(x, y) >= 0.5f)
         return true;
     }
@@ -117,12 +117,12 @@ std::vector<FloorObstacle> locate_floor_obstacles(const std::vector<FieldCamera>
                                                   const FloorObstacleOptions& options) {
   options.validate();
   require_list_per_camera(cameras.size(), detections.size(), "floor obstacles");
-  std::vector<std::vector<PixelDetection>> views(cameras.size());
+  std::vector<std::vector<const PixelDetection*>> views(cameras.size());  // not copied: patches
   bool any = false;
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     if (!detections[c]) continue;
     for (const PixelDetection& d : *detections[c])
-      if (d.object == ObjectClass::obstacle && d.patch.width > 0) views[c].push_back(d);
+      if (d.object == ObjectClass::obstacle && d.patch.width > 0) views[c].push_back(&d);
     any = any || !views[c].empty();
   }
   if (!any) return {};
@@ -170,9 +170,9 @@ std::vector<FloorObstacle> locate_floor_obstacles(const std::vector<FieldCamera>
   };
   const int reach = static_cast<int>(std::ceil(options.search_m / options.cell_m));
   for (std::size_t c = 0; c < cameras.size(); ++c) {
-    for (const PixelDetection& view : views[c]) {
+    for (const PixelDetection* view : views[c]) {
       for (const Vec2& foot :
-           feet(cameras[c], view, options.column_step_px, options.max_feet_per_view)) {
+           feet(cameras[c], *view, options.column_step_px, options.max_feet_per_view)) {
         // The feet of the robot's and the balls' own views are not looked round.
         if (!area.contains(foot) || (body && in_box(*body, foot)) ||
             std::any_of(balls.begin(), balls.end(), [&](const FusedBall& b) {
