@@ -14,6 +14,8 @@ void add_sim_omni_command(CLI::App& sim);
 void add_omni_inspect_command(CLI::App& omni);
 /// `sim court` on the `sim` subcommand (sim_court_command.cpp).
 void add_sim_court_command(CLI::App& sim);
+/// `sim rings`: the ring image of calibration from one spin (sim_rings_command.cpp).
+void add_sim_rings_command(CLI::App& sim);
 
 /// `demo`: the main job on built-in simulated data (demo_command.cpp).
 void add_demo_command(CLI::App& app);

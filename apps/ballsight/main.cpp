@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   sim->require_subcommand(1);
   ballsight::app::add_sim_omni_command(*sim);
   ballsight::app::add_sim_court_command(*sim);
+  ballsight::app::add_sim_rings_command(*sim);
 
   CLI::App* omni = app.add_subcommand(
       "omni", "Omnidirectional camera: calibration, lookup tables, ball localisation");

@@ -101,7 +101,7 @@ void run_rings(RingsArgs& args) {
   const Vec2 center = args.center ? parse_pixel_pair(*args.center, "--center")
                                   : Vec2(0.5 * (grey.cols - 1), 0.5 * (grey.rows - 1));
   if (args.line_toward_deg) return run_line(args, grey, center);
-  args.search.rings = distances_cm.size();
+  args.search.distances_m = args.distances_m;
   RingSearch search;
   try {
     search = find_omni_rings(grey, center, args.search);
@@ -113,10 +113,19 @@ void run_rings(RingsArgs& args) {
   if (args.plot) write_png_atomic(*args.plot, plot_omni_rings(grey, center, search));
   std::cout << samples.size() << " samples from " << search.directions.size() << " directions x "
             << distances_cm.size() << " rings (" << search.hidden << " hidden, " << search.ambiguous
-            << " ambiguous) -> " << args.out << "\n";
+            << " ambiguous) -> " << args.out << "\n  the rings' centre "
+            << fixed(search.decentring_px.x(), 0) << ", " << fixed(search.decentring_px.y(), 0)
+            << " px from the given one\n";
   for (std::size_t k = 0; k < distances_cm.size(); ++k) {
+    const RingCurve& ring = search.rings[k];
     std::cout << "  ring " << k + 1 << " at " << fixed(distances_cm[k], 0) << " cm: median radius "
-              << fixed(search.ring_radius_px[k], 2) << " px\n";
+              << fixed(ring.median_radius_px, 2) << " px, found in "
+              << fixed(100.0 * ring.found_fraction, 0) << " % of the directions, "
+              << fixed(ring.residual_px, 2) << " px from its curve (median)\n";
+  }
+  for (const BlockedSpan& span : search.blocked) {
+    std::cout << "  no ring from " << fixed(span.from_deg, 1) << " to " << fixed(span.to_deg, 1)
+              << " deg (" << span.directions << " directions: a strut or the robot)\n";
   }
 }
 
@@ -148,6 +157,9 @@ void add_omni_rings_command(CLI::App& omni) {
       ->capture_default_str();
   cmd->add_option("--min-contrast", args->search.min_contrast,
                   "Grey levels a ring (or the line) stands above its background")
+      ->capture_default_str();
+  cmd->add_option("--max-width-px", args->search.max_width_px,
+                  "The widest ring's (or the line's) image across a direction, px")
       ->capture_default_str();
   cmd->add_option("--tolerance-px", args->search.tolerance_px,
                   "How far a ring's (or the line's) peak may lie from where it runs")

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -40,6 +42,10 @@ TEST(OmniRingsCli, WritesOneSamplePerRingAndDirection) {
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_NE(r.stdout_text.find("540 samples from 180 directions x 3 rings"), std::string::npos)
       << r.stdout_text;
+  EXPECT_NE(r.stdout_text.find("ring 3 at 300 cm: median radius 94.9"), std::string::npos)
+      << r.stdout_text;
+  EXPECT_NE(r.stdout_text.find("found in 100 % of the directions"), std::string::npos)
+      << r.stdout_text;
   const std::vector<PolarSample> samples = read_polar_samples_csv(out);
   ASSERT_EQ(samples.size(), 540u);
   for (const PolarSample& s : samples) {
@@ -51,6 +57,49 @@ TEST(OmniRingsCli, WritesOneSamplePerRingAndDirection) {
                            "--center", "160,120", "--image-size", "320x240"})
                 .exit_code,
             0);
+}
+
+// `sim rings` draws a tilted rig's ring image with struts and its truth; `omni rings` at the
+// centre it prints finds every ring where the truth has it unhidden, within 0.5 px (median).
+TEST(OmniRingsCli, TheSimulatorsRingImageAgainstItsTruth) {
+  const test::TempDir dir;
+  const std::string image = (dir / "rings.png").string(), truth = (dir / "truth.csv").string();
+  const test::CliResult drawn = test::run_cli(
+      {"sim", "rings", "--out", image, "--truth", truth, "--distances-m", "0.5,1,1.5,2,3",
+       "--line-widths-m", "0.1,0.08,0.05,0.05,0.05", "--tilt-deg", "2", "--center-offset-px",
+       "3,-2", "--struts-deg", "45,165,285", "--carpet-texture", "20"});
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.stderr_text;
+  const std::string center = "242.50,237.50";  // the image centre and the offset
+  ASSERT_NE(drawn.stdout_text.find("5 rings around " + center), std::string::npos)
+      << drawn.stdout_text;
+  const std::string out = (dir / "samples.csv").string();
+  const test::CliResult found =
+      test::run_cli({"omni", "rings", "--image", image, "--distances-m", "0.5,1,1.5,2,3",
+                     "--center", "242.5,237.5", "--directions", "360", "--out", out});
+  ASSERT_EQ(found.exit_code, 0) << found.stderr_text;
+  EXPECT_NE(found.stdout_text.find("no ring from"), std::string::npos) << found.stdout_text;
+  std::map<std::pair<long, long>, double> found_at;  // (tenths of a degree, cm) -> radius
+  for (const PolarSample& s : read_polar_samples_csv(out))
+    found_at[{std::lround(10.0 * s.theta_deg), std::lround(s.distance_cm)}] = s.radius_px;
+  std::istringstream rows(read_file(truth));
+  std::string row;
+  std::getline(rows, row);
+  ASSERT_EQ(row, "theta_deg,distance_cm,radius_px,hidden");
+  std::vector<double> errors;
+  std::size_t unhidden = 0;
+  for (; std::getline(rows, row);) {
+    double theta = 0.0, cm = 0.0, radius = 0.0;
+    int hidden = 0;
+    ASSERT_EQ(std::sscanf(row.c_str(), "%lf,%lf,%lf,%d", &theta, &cm, &radius, &hidden), 4) << row;
+    if (hidden) continue;
+    ++unhidden;
+    const auto at = found_at.find({std::lround(10.0 * theta), std::lround(cm)});
+    if (at != found_at.end()) errors.push_back(std::abs(at->second - radius));
+  }
+  ASSERT_GT(unhidden, 1500u);
+  EXPECT_GE(errors.size(), 95 * unhidden / 100);
+  std::sort(errors.begin(), errors.end());
+  EXPECT_LT(errors[errors.size() / 2], 0.5);
 }
 
 TEST(OmniRingsCli, BadInputIsOneLineAndLeavesTheOutput) {

@@ -62,13 +62,13 @@ double true_radius(double theta_deg, double radius) {
 
 RingSearchOptions four_rings() {
   RingSearchOptions options;
-  options.rings = kRadii.size();
+  options.distances_m = {1.0, 2.0, 3.0, 4.0};
   return options;
 }
 
 TEST(OmniRings, FindsEveryRingAtItsTrueRadius) {
   const RingSearch search = find_omni_rings(ring_image(), kConfiguredCenter, four_rings());
-  ASSERT_EQ(search.ring_radius_px.size(), kRadii.size());
+  ASSERT_EQ(search.rings.size(), kRadii.size());
   std::vector<double> errors;
   for (const RingDirection& d : search.directions) {
     for (std::size_t k = 0; k < kRadii.size(); ++k) {
@@ -100,7 +100,7 @@ TEST(OmniRings, RejectsTheDirectionsTheStrutsHide) {
 
 TEST(OmniRings, TooManyRingsAskedIsAnError) {
   RingSearchOptions options = four_rings();
-  options.rings = 6;
+  options.distances_m = {1.0, 2.0, 3.0, 4.0, 5.0, 6.0};
   try {
     find_omni_rings(ring_image(), kConfiguredCenter, options);
     FAIL() << "no error";
@@ -110,9 +110,13 @@ TEST(OmniRings, TooManyRingsAskedIsAnError) {
 }
 
 // The cnc-msl team's own line detector on its ring image (clearedLP, one row per direction:
-// the team's angle and the ring radii, cut at the first ring it missed). Where it found all
-// five certain rings (1 to 3 m), ballsight's radii along the same directions agree within 1 px
-// (median). The team's point at angle a, radius r is at row 230 + r cos a, column 230 + r sin a.
+// the team's angle and the ring radii, cut at the first ring it missed). In the directions where
+// it found one of the five certain rings (1 to 3 m), ballsight finds that ring in at least 90 %
+// of them, within 1 px of the team's radius (median over all rings; issue 44's target). Ring by
+// ring the median is within 1.1 px: the team's radii of the thin far rings lie about 1 px outside
+// the rings' brightness peaks (docs/RESULTS.md, "Calibration from one spin"), where ballsight's
+// lie on the simulator's rings within 0.2 px (OmniRingImages). The team's point at angle a,
+// radius r is at row 230 + r cos a, column 230 + r sin a.
 TEST(OmniRings, AgreesWithTheCncMslLineDetector) {
   const auto dir = test::shared_data_dir() / "real/omni/cnc-msl-nase-2016-03";
   if (!std::filesystem::exists(dir / "clearedLP_nase_2016-03-30.txt")) {
@@ -127,37 +131,41 @@ TEST(OmniRings, AgreesWithTheCncMslLineDetector) {
     std::vector<double> radii;
     fields >> a;
     for (double r; fields >> r;) radii.push_back(r);
-    if (radii.size() < 5) continue;
     const double row = std::cos(a), column = std::sin(a);
     thetas.push_back(
         image_polar_from_pixel(kConfiguredCenter + Vec2(column, row), kConfiguredCenter).theta_deg);
     team.push_back(radii);
   }
-  ASSERT_GE(thetas.size(), 60u);
+  ASSERT_GE(thetas.size(), 80u);
   cv::Mat1b grey =
       cv::imread((dir / "CarpetCalibImage_nase_2016-03-30.png").string(), cv::IMREAD_GRAYSCALE);
   ASSERT_FALSE(grey.empty());
   RingSearchOptions options;
-  options.rings = 5;
+  options.distances_m = {1.0, 1.5, 2.0, 2.5, 3.0};
   const RingSearch search = find_omni_rings(grey, {230.0, 230.0}, options, thetas);
-  std::vector<double> differences;
-  std::size_t rejected = 0;
-  for (std::size_t d = 0; d < thetas.size(); ++d) {
-    for (std::size_t k = 0; k < 5; ++k) {
+  std::vector<double> all;
+  for (std::size_t k = 0; k < 5; ++k) {
+    std::vector<double> differences;
+    std::size_t theirs = 0;
+    for (std::size_t d = 0; d < thetas.size(); ++d) {
+      if (team[d].size() <= k) continue;
+      ++theirs;
       const auto& ours = search.directions[d].radius_px[k];
-      if (!ours) {
-        ++rejected;
-        continue;
-      }
-      differences.push_back(std::abs(*ours - team[d][k]));
+      if (ours) differences.push_back(std::abs(*ours - team[d][k]));
     }
+    const Summary e = summarize(differences);
+    const double found = static_cast<double>(e.count) / static_cast<double>(theirs);
+    std::cout << "cnc-msl ring " << k + 1 << ": the team's " << theirs << " directions, ours in "
+              << e.count << " (" << std::lround(100.0 * found) << " %); |ballsight - team| median "
+              << e.median << " px, p95 " << e.p95 << " px, max " << e.max << " px\n";
+    EXPECT_GE(found, 0.9) << "ring " << k + 1;
+    EXPECT_LE(e.median, 1.1) << "ring " << k + 1;
+    all.insert(all.end(), differences.begin(), differences.end());
   }
-  const Summary e = summarize(differences);
-  std::cout << "cnc-msl rings: " << e.count << " compared, " << rejected
-            << " rejected; |ballsight - team| median " << e.median << " px, p95 " << e.p95
-            << " px, max " << e.max << " px\n";
+  const Summary e = summarize(all);
+  std::cout << "cnc-msl rings: " << e.count << " compared; |ballsight - team| median " << e.median
+            << " px, p95 " << e.p95 << " px\n";
   EXPECT_LE(e.median, 1.0);
-  EXPECT_GE(e.count, 9 * 5 * thetas.size() / 10);
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 // Calibration from one straight floor line at a known distance (MinhoTeam's set-up: the robot
 // stands before a field line, its omni image shows the line as a curve). The line's point
 // nearest the robot lies along the line's normal; a point seen `a` degrees off the normal is at
-// distance d / cos(a). Along every image direction the line is a brightness peak (the white
-// top-hat of detect/ray_peaks.hpp); it is followed from its nearest point both ways, and the
+// distance d / cos(a). Along every image direction the line is a bright bar, however wide
+// (detect/ray_peaks.hpp); it is followed from its nearest point both ways, and the
 // normal is the vertex of a parabola fitted to the radii around the nearest point (for a
 // rotationally symmetric mirror the curve is symmetric about it). A point much fainter than its
 // neighbours, or one beside a stretch where the line is hidden, is the line partly hidden (at a

@@ -23,18 +23,71 @@ double bilinear(const cv::Mat1b& grey, const Vec2& p) {
   return (1.0 - fy) * top + fy * bottom;
 }
 
-// Sliding minimum (or maximum) over +-half samples.
-std::vector<double> sliding(const std::vector<double>& v, int half, bool minimum) {
-  std::vector<double> out(v.size());
-  const int n = static_cast<int>(v.size());
-  for (int i = 0; i < n; ++i) {
-    double m = v[i];
-    for (int j = std::max(0, i - half); j <= std::min(n - 1, i + half); ++j) {
-      m = minimum ? std::min(m, v[j]) : std::max(m, v[j]);
-    }
-    out[i] = m;
+// The bar widths tried, px: from 1 px, each about a third wider, up to `max_width_px`.
+std::vector<double> bar_widths(double max_width_px) {
+  std::vector<double> widths;
+  for (double w = 1.0; w <= max_width_px; w = std::max(w + 0.5, 1.3 * w)) widths.push_back(w);
+  return widths;
+}
+
+// A profile's means over index ranges, from its prefix sums.
+class RangeMeans {
+ public:
+  explicit RangeMeans(const std::vector<double>& v) : sum_(v.size() + 1, 0.0) {
+    for (std::size_t i = 0; i < v.size(); ++i) sum_[i + 1] = sum_[i] + v[i];
   }
-  return out;
+  int size() const { return static_cast<int>(sum_.size()) - 1; }
+  // The mean of samples a..b (inclusive, inside the profile).
+  double mean(int a, int b) const { return (sum_[b + 1] - sum_[a]) / (b - a + 1); }
+
+ private:
+  std::vector<double> sum_;
+};
+
+// The best bar centred at each sample: its contrast (0 where none fits), half-width and the
+// background level of its sides.
+struct Bar {
+  double contrast = 0.0;
+  int half = 0;                    // samples either side of the centre
+  double left = 0.0, right = 0.0;  // the sides' means
+  int side = 0;                    // samples in each side
+};
+
+std::vector<Bar> best_bars(const RangeMeans& means, double max_width_px) {
+  const int n = means.size();
+  std::vector<Bar> bars(static_cast<std::size_t>(n));
+  for (const double w : bar_widths(max_width_px)) {
+    const int half = static_cast<int>(std::lround(0.5 * w / kStepPx));
+    const int side = static_cast<int>(std::lround(std::clamp(0.5 * w, 2.0, 6.0) / kStepPx));
+    for (int i = half + side; i + half + side < n; ++i) {
+      const double inside = means.mean(i - half, i + half);
+      const double left = means.mean(i - half - side, i - half - 1);
+      const double right = means.mean(i + half + 1, i + half + side);
+      const double contrast = inside - std::max(left, right);
+      Bar& best = bars[static_cast<std::size_t>(i)];
+      if (contrast > best.contrast) best = {contrast, half, left, right, side};
+    }
+  }
+  return bars;
+}
+
+// The bar's centre: the centroid of the grey levels above the line between its sides' means,
+// over the bar and one pixel either side.
+double bar_centre(const std::vector<double>& profile, int i, const Bar& bar, double r0) {
+  const int margin = static_cast<int>(std::lround(1.0 / kStepPx));
+  const int a = std::max(0, i - bar.half - margin);
+  const int b = std::min(static_cast<int>(profile.size()) - 1, i + bar.half + margin);
+  const double span = 2.0 * bar.half + bar.side + 1.0;  // between the sides' centres
+  double weight = 0.0, moment = 0.0;
+  for (int j = a; j <= b; ++j) {
+    const double t = (j - (i - bar.half - 0.5 * (bar.side + 1))) / span;
+    const double excess =
+        profile[static_cast<std::size_t>(j)] - ((1.0 - t) * bar.left + t * bar.right);
+    if (excess <= 0.0) continue;
+    weight += excess;
+    moment += excess * (r0 + j * kStepPx);
+  }
+  return weight > 0.0 ? moment / weight : r0 + i * kStepPx;
 }
 
 }  // namespace
@@ -42,8 +95,8 @@ std::vector<double> sliding(const std::vector<double>& v, int half, bool minimum
 void RayPeakOptions::validate() const {
   require(std::isfinite(min_contrast) && min_contrast > 0.0, "min_contrast",
           "expected a positive number");
-  require(std::isfinite(background_px) && background_px >= 1.0 && background_px <= 50.0,
-          "background_px", "expected 1 to 50");
+  require(std::isfinite(max_width_px) && max_width_px >= 1.0 && max_width_px <= 200.0,
+          "max_width_px", "expected 1 to 200");
 }
 
 void validate_ray_radii(double min_radius_px, std::optional<double> max_radius_px) {
@@ -75,25 +128,20 @@ std::vector<RayPeak> ray_peaks(const cv::Mat1b& grey, const Vec2& center, double
     const double r = r0 + static_cast<double>(i) * kStepPx;
     profile.push_back(bilinear(grey, pixel_from_image_polar({theta_deg, r}, center)));
   }
-  const int half = static_cast<int>(std::lround(options.background_px / kStepPx));
-  const std::vector<double> opening = sliding(sliding(profile, half, true), half, false);
-  std::vector<double> t(profile.size());
-  for (std::size_t i = 0; i < t.size(); ++i) t[i] = profile[i] - opening[i];
+  const std::vector<Bar> bars = best_bars(RangeMeans(profile), options.max_width_px);
   std::vector<RayPeak> peaks;
-  const int n = static_cast<int>(t.size());
-  for (int i = 1; i + 1 < n; ++i) {
-    if (t[i] < options.min_contrast || t[i] < t[i - 1] || t[i] <= t[i + 1]) continue;
-    const double level = 0.5 * t[i];
-    int a = i, b = i;
-    while (a > 0 && t[a - 1] >= level) --a;
-    while (b + 1 < n && t[b + 1] >= level) ++b;
-    double weight = 0.0, moment = 0.0;
-    for (int j = a; j <= b; ++j) {
-      weight += t[j] - level;
-      moment += (t[j] - level) * (r0 + j * kStepPx);
+  const int n = static_cast<int>(bars.size());
+  for (int i = 0; i < n; ++i) {
+    const Bar& bar = bars[static_cast<std::size_t>(i)];
+    if (bar.contrast < options.min_contrast) continue;
+    // The highest within half its width (the first of equals): one line, not its edges.
+    bool highest = true;
+    for (int j = std::max(0, i - bar.half); j <= std::min(n - 1, i + bar.half) && highest; ++j) {
+      const double other = bars[static_cast<std::size_t>(j)].contrast;
+      highest = j < i ? other < bar.contrast : other <= bar.contrast;
     }
-    if (weight > 0.0) peaks.push_back({moment / weight, t[i]});
-    i = b;
+    if (!highest) continue;
+    peaks.push_back({bar_centre(profile, i, bar, r0), bar.contrast, 2.0 * bar.half * kStepPx});
   }
   return peaks;
 }
