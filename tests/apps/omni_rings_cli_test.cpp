@@ -97,7 +97,7 @@ TEST(OmniRingsCli, TheSimulatorsRingImageAgainstItsTruth) {
     if (at != found_at.end()) errors.push_back(std::abs(at->second - radius));
   }
   ASSERT_GT(unhidden, 1500u);
-  EXPECT_GE(errors.size(), 95 * unhidden / 100);
+  ASSERT_GE(errors.size(), 95 * unhidden / 100);
   std::sort(errors.begin(), errors.end());
   EXPECT_LT(errors[errors.size() / 2], 0.5);
 }

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "ballsight/camera/mirror_tracer.hpp"
+#include "ballsight/core/angle.hpp"
 #include "ballsight/detect/omni_rings.hpp"
 #include "ballsight/sim/omni_ring_image.hpp"
 
@@ -116,8 +117,10 @@ TEST(OmniRingImages, EveryRingFoundInNineTenthsOfItsDirectionsWithinAPixel) {
   }
 }
 
+// One strut at 0 deg: its span runs across the first and the last direction.
 TEST(OmniRingImages, TheStrutsAreReportedAsBlockedSpans) {
-  const sim::RingImageSpec spec = cases()[4].spec;  // the struts
+  sim::RingImageSpec spec = cases()[4].spec;  // the struts
+  spec.strut_deg = {0.0, 120.0, 240.0};
   const sim::RingImage image(spec);
   RingSearchOptions options;
   options.distances_m = spec.distances_m;
@@ -128,13 +131,13 @@ TEST(OmniRingImages, TheStrutsAreReportedAsBlockedSpans) {
     const BlockedSpan& span = search.blocked[i];
     const double middle =
         span.from_deg + 0.5 * std::fmod(span.to_deg - span.from_deg + 360.0, 360.0);
-    EXPECT_NEAR(std::fmod(middle, 360.0), spec.strut_deg[i], 1.5)
+    EXPECT_NEAR(wrap_deg_180(middle - spec.strut_deg[i]), 0.0, 1.5)
         << span.from_deg << " " << span.to_deg;
   }
 }
 
-// The failure of a line's two edges taken for two rings: a near line 40 cm wide on the floor is
-// one ring, and the next distance's ring is the next line, not its far edge.
+// A near line 30 cm wide on the floor (27 px in the image) is one ring, and the next distance's
+// ring is the next line, not its far edge (a top-hat narrower than the line sees only its edges).
 TEST(OmniRingImages, AWideLineIsOneRing) {
   sim::RingImageSpec spec;
   spec.rig.width = 480;

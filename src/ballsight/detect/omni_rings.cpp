@@ -65,7 +65,8 @@ Vec2 decentring(const std::vector<std::vector<RayPeak>>& peaks, const std::vecto
       double sharpness = 0.0;
       for (const double s : support(peaks, units, shift, r0, bins, options.tolerance_px))
         sharpness += s * s;
-      if (sharpness > sharpest) {
+      // Ties go to the smaller shift (none, where nothing tells the shifts apart).
+      if (sharpness > sharpest || (sharpness == sharpest && shift.norm() < best.norm())) {
         sharpest = sharpness;
         best = shift;
       }
@@ -92,7 +93,9 @@ std::vector<Mode> modes(const std::vector<std::vector<RayPeak>>& peaks,
     const bool mode =
         s[i] >= needed && (b == 0 || s[i] >= s[i - 1]) && (b + 1 == bins || s[i] > s[i + 1]);
     if (!mode) continue;
-    const double radius = r0 + b;
+    int top = b;  // the flat top's first bin: the mode is its middle
+    while (top > 0 && s[static_cast<std::size_t>(top - 1)] == s[i]) --top;
+    const double radius = r0 + 0.5 * (top + b);
     if (!out.empty() && radius - out.back().radius_px <= options.tolerance_px) {
       if (s[i] > out.back().support) out.back() = {radius, s[i]};
       continue;
@@ -212,7 +215,7 @@ Match match(const std::vector<RayPeak>& peaks, double expected, double tolerance
   Match m;
   for (const RayPeak& p : peaks) {
     if (std::abs(p.radius_px - expected) > tolerance) continue;
-    m.ambiguous = m.peak.has_value();
+    m.ambiguous |= m.peak.has_value();
     if (!m.peak || std::abs(p.radius_px - expected) < std::abs(m.peak->radius_px - expected))
       m.peak = p;
   }
@@ -274,8 +277,16 @@ std::vector<BlockedSpan> blocked_spans(const std::vector<RingDirection>& directi
     spans.push_back({wrap_deg_360(directions[order[i]].theta_deg),
                      wrap_deg_360(directions[order[end]].theta_deg), end - i + 1});
   }
-  // A span across 0 deg: the last one runs on into the first.
-  if (spans.size() > 1 && blocked(0) && blocked(n - 1)) {
+  // A span across 0 deg: the last one runs on into the first, where the directions go round the
+  // circle (the gap across 0 deg no wider than 1.5 times their median spacing).
+  std::vector<double> gaps;
+  for (std::size_t i = 1; i < n; ++i)
+    gaps.push_back(wrap_deg_360(directions[order[i]].theta_deg) -
+                   wrap_deg_360(directions[order[i - 1]].theta_deg));
+  const bool round = n > 1 && 360.0 + wrap_deg_360(directions[order[0]].theta_deg) -
+                                      wrap_deg_360(directions[order[n - 1]].theta_deg) <=
+                                  1.5 * median(gaps);
+  if (round && spans.size() > 1 && blocked(0) && blocked(n - 1)) {
     spans.front().from_deg = spans.back().from_deg;
     spans.front().directions += spans.back().directions;
     spans.pop_back();
@@ -312,6 +323,10 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
                            std::span<const double> directions_deg) {
   options.validate();
   const auto [r0, r1] = ray_span(grey, center, options.min_radius_px, options.max_radius_px);
+  require(directions_deg.size() <= 3600, "directions", "expected at most 3600");
+  require(std::all_of(directions_deg.begin(), directions_deg.end(),
+                      [](double theta) { return std::isfinite(theta); }),
+          "directions", "expected finite image angles");
   std::vector<double> thetas(directions_deg.begin(), directions_deg.end());
   if (thetas.empty()) {
     for (int i = 0; i < options.directions; ++i) thetas.push_back(360.0 * i / options.directions);
@@ -349,21 +364,23 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
     const std::array<double, 5> curve = follow(peaks, thetas, course, options.tolerance_px);
     // The lines near the curve, each direction's course the curve moved by its neighbours'
     // departures from it (a ring is not quite the curve: the mirror's own shape).
+    std::vector<double> on_curve(thetas.size());
     std::vector<std::optional<RayPeak>> near(thetas.size());
-    for (std::size_t d = 0; d < thetas.size(); ++d)
-      near[d] = match(peaks[d], curve_at(curve, thetas[d]), 0.5 * options.tolerance_px).peak;
+    for (std::size_t d = 0; d < thetas.size(); ++d) {
+      on_curve[d] = curve_at(curve, thetas[d]);
+      near[d] = match(peaks[d], on_curve[d], 0.5 * options.tolerance_px).peak;
+    }
     RingCurve ring;
     std::vector<double> found_t, found_r;
     for (std::size_t d = 0; d < thetas.size(); ++d) {
       std::vector<double> departures, heights;
       for (std::size_t e = 0; e < thetas.size(); ++e) {
         if (near[e] && angular_gap_deg(thetas[d], thetas[e]) <= kFollowWindowDeg) {
-          departures.push_back(near[e]->radius_px - curve_at(curve, thetas[e]));
+          departures.push_back(near[e]->radius_px - on_curve[e]);
           heights.push_back(near[e]->height);
         }
       }
-      const double local =
-          curve_at(curve, thetas[d]) + (departures.size() >= 3 ? median(departures) : 0.0);
+      const double local = on_curve[d] + (departures.size() >= 3 ? median(departures) : 0.0);
       const Match m = match(peaks[d], local, 0.5 * options.tolerance_px);
       RingMiss miss = m.ambiguous ? RingMiss::kAmbiguous
                       : m.peak    ? RingMiss::kNone

@@ -6,12 +6,13 @@
 // all directions gather, with the rings' centre off the given one found first (a mirror off the
 // image centre, a tilted camera), and chosen in the given distances' order: of the radii where
 // lines gather, the set with the most support whose spacing a mirror can give (the radius grows
-// with the distance, no faster per metre than between the two rings before). Each ring is then
-// followed around the image as a smooth closed curve (a short Fourier series in the image angle,
-// refitted to what it finds, with the neighbours' departures from it): in a direction a ring is its
-// one line near the curve, or missing there (hidden: a strut, or a line much fainter than its
-// neighbours', a ring partly hidden at a strut's edge; ambiguous: two lines), never the next ring's
-// line. Directions where every ring is missing are reported as blocked spans (the robot's struts).
+// with the distance, per metre no faster than 1.25 times its growth between the two rings
+// before). Each ring is then followed around the image as a smooth closed curve (a short Fourier
+// series in the image angle, refitted to what it finds, with the neighbours' departures from it):
+// in a direction a ring is its one line near the curve, or missing there (hidden: a strut, or a
+// line much fainter than its neighbours', a ring partly hidden at a strut's edge; ambiguous: two
+// lines), never the next ring's line. Directions where every ring is missing are reported as
+// blocked spans (the robot's struts).
 
 #include <array>
 #include <opencv2/core.hpp>
@@ -78,9 +79,10 @@ struct RingSearch {
   std::size_t ambiguous = 0;
 };
 
-/// Finds the rings in a grey image around `center` along `directions_deg` (image angles), or
-/// along `options.directions` evenly spread ones when empty. Throws InputError naming the image
-/// when fewer rings than distances are seen in enough directions with a spacing a mirror gives.
+/// Finds the rings in a grey image around `center` along `directions_deg` (image angles, finite,
+/// at most 3600), or along `options.directions` evenly spread ones when empty. Throws InputError
+/// naming the image when fewer rings than distances are seen in enough directions with a spacing
+/// a mirror gives.
 RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
                            const RingSearchOptions& options,
                            std::span<const double> directions_deg = {});

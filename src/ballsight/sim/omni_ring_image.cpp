@@ -41,6 +41,8 @@ double value_noise(const Vec2& p, std::uint64_t seed) {
 
 void RingImageSpec::validate() const {
   rig.validate();
+  require(std::isfinite(robot_body_radius_m) && robot_body_radius_m >= 0.0, "robot_body_radius_m",
+          "expected a number >= 0");
   require(!distances_m.empty(), "distances_m", "expected at least one line");
   require(line_widths_m.size() == 1 || line_widths_m.size() == distances_m.size(), "line_widths_m",
           "expected one width, or one per line");
@@ -51,10 +53,11 @@ void RingImageSpec::validate() const {
                 (k == 0 || distances_m[k] > distances_m[k - 1]),
             "distances_m", "expected increasing distances, each line beyond the robot's body");
   }
-  require(std::isfinite(robot_body_radius_m) && robot_body_radius_m >= 0.0, "robot_body_radius_m",
-          "expected a number >= 0");
-  require(std::isfinite(strut_width_px) && strut_width_px > 0.0, "strut_width_px",
-          "expected a positive number");
+  require(std::all_of(strut_deg.begin(), strut_deg.end(),
+                      [](double theta) { return std::isfinite(theta); }),
+          "strut_deg", "expected finite image angles");
+  require(std::isfinite(strut_width_px) && strut_width_px >= 1.0 && strut_width_px <= 100.0,
+          "strut_width_px", "expected 1 to 100");
   require(carpet_grey >= 0.0 && carpet_grey <= 255.0 && line_grey >= 0.0 && line_grey <= 255.0,
           "carpet_grey, line_grey", "expected 0 to 255");
   require(std::isfinite(carpet_texture) && carpet_texture >= 0.0, "carpet_texture",

@@ -23,7 +23,7 @@ struct RingImageSpec {
   std::vector<double> line_widths_m{0.05};                   // per line, or one for all
   double robot_body_radius_m = 0.26;  // floor within it: the robot's dark body
   std::vector<double> strut_deg;      // image angles of the struts from the centre
-  double strut_width_px = 6.0;
+  double strut_width_px = 6.0;        // 1 to 100
   double carpet_grey = 70.0;
   double line_grey = 215.0;
   // The carpet's texture: smooth blotches of two sizes (value noise at carpet_scale_m and a
@@ -48,7 +48,8 @@ class RingImage {
   /// Where line k's centre (its distance) crosses the direction of image angle theta from
   /// center(); nullopt where the direction does not reach it inside the mirror.
   std::optional<double> true_radius_px(double theta_deg, std::size_t k) const;
-  /// Whether a strut covers the direction at the radius.
+  /// Whether a strut covers the direction at the radius, or comes within 1.5 px of it (a line
+  /// there is partly hidden).
   bool strut_hides(double theta_deg, double radius_px) const;
 
  private:
