@@ -222,11 +222,6 @@ Match match(const std::vector<RayPeak>& peaks, double expected, double tolerance
   return m;
 }
 
-double angular_gap_deg(double a, double b) {
-  const double d = std::fmod(std::abs(a - b), 360.0);
-  return std::min(d, 360.0 - d);
-}
-
 // One ring followed around the image from its course `course` (per direction): lines matched
 // within the tolerance and the curve refitted, kFollowRounds times, leaving out lines far from
 // the last curve.
@@ -263,6 +258,8 @@ std::vector<BlockedSpan> blocked_spans(const std::vector<RingDirection>& directi
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return wrap_deg_360(directions[a].theta_deg) < wrap_deg_360(directions[b].theta_deg);
   });
+  std::vector<double> angle;  // in that order, in [0, 360)
+  for (const std::size_t i : order) angle.push_back(wrap_deg_360(directions[i].theta_deg));
   const auto blocked = [&](std::size_t i) {
     const RingDirection& d = directions[order[i]];
     return std::none_of(d.radius_px.begin(), d.radius_px.end(),
@@ -274,18 +271,13 @@ std::vector<BlockedSpan> blocked_spans(const std::vector<RingDirection>& directi
     if (!blocked(i) || (i > 0 && blocked(i - 1))) continue;
     std::size_t end = i;
     while (end + 1 < n && blocked(end + 1)) ++end;
-    spans.push_back({wrap_deg_360(directions[order[i]].theta_deg),
-                     wrap_deg_360(directions[order[end]].theta_deg), end - i + 1});
+    spans.push_back({angle[i], angle[end], end - i + 1});
   }
   // A span across 0 deg: the last one runs on into the first, where the directions go round the
   // circle (the gap across 0 deg no wider than 1.5 times their median spacing).
   std::vector<double> gaps;
-  for (std::size_t i = 1; i < n; ++i)
-    gaps.push_back(wrap_deg_360(directions[order[i]].theta_deg) -
-                   wrap_deg_360(directions[order[i - 1]].theta_deg));
-  const bool round = n > 1 && 360.0 + wrap_deg_360(directions[order[0]].theta_deg) -
-                                      wrap_deg_360(directions[order[n - 1]].theta_deg) <=
-                                  1.5 * median(gaps);
+  for (std::size_t i = 1; i < n; ++i) gaps.push_back(angle[i] - angle[i - 1]);
+  const bool round = n > 1 && 360.0 + angle[0] - angle[n - 1] <= 1.5 * median(gaps);
   if (round && spans.size() > 1 && blocked(0) && blocked(n - 1)) {
     spans.front().from_deg = spans.back().from_deg;
     spans.front().directions += spans.back().directions;
@@ -375,7 +367,7 @@ RingSearch find_omni_rings(const cv::Mat1b& grey, const Vec2& center,
     for (std::size_t d = 0; d < thetas.size(); ++d) {
       std::vector<double> departures, heights;
       for (std::size_t e = 0; e < thetas.size(); ++e) {
-        if (near[e] && angular_gap_deg(thetas[d], thetas[e]) <= kFollowWindowDeg) {
+        if (near[e] && std::abs(wrap_deg_180(thetas[d] - thetas[e])) <= kFollowWindowDeg) {
           departures.push_back(near[e]->radius_px - on_curve[e]);
           heights.push_back(near[e]->height);
         }

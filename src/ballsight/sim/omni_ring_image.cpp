@@ -47,7 +47,7 @@ void RingImageSpec::validate() const {
   require(line_widths_m.size() == 1 || line_widths_m.size() == distances_m.size(), "line_widths_m",
           "expected one width, or one per line");
   for (std::size_t k = 0; k < distances_m.size(); ++k) {
-    const double w = line_widths_m[std::min(k, line_widths_m.size() - 1)];
+    const double w = line_width_m(k);
     require(std::isfinite(w) && w > 0.0, "line_widths_m", "expected positive widths");
     require(std::isfinite(distances_m[k]) && distances_m[k] - 0.5 * w > robot_body_radius_m &&
                 (k == 0 || distances_m[k] > distances_m[k - 1]),
@@ -73,8 +73,7 @@ RingImage::RingImage(const RingImageSpec& spec) : spec_(spec), rig_((spec.valida
     const double d = p.norm();
     if (d < spec_.robot_body_radius_m) return kBodyGrey;
     for (std::size_t k = 0; k < spec_.distances_m.size(); ++k) {
-      const double w = spec_.line_widths_m[std::min(k, spec_.line_widths_m.size() - 1)];
-      if (std::abs(d - spec_.distances_m[k]) <= 0.5 * w) return spec_.line_grey;
+      if (std::abs(d - spec_.distances_m[k]) <= 0.5 * spec_.line_width_m(k)) return spec_.line_grey;
     }
     const Vec2 q = p / spec_.carpet_scale_m;
     return spec_.carpet_grey + spec_.carpet_texture * (0.65 * value_noise(q, spec_.seed) +

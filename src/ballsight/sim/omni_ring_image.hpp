@@ -7,6 +7,7 @@
 // middle and its struts as dark bars from the centre out. Each pixel is the mean of 4 x 4
 // samples of the floor, so a band's edges are anti-aliased as a camera's are.
 
+#include <algorithm>
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <optional>
@@ -32,6 +33,11 @@ struct RingImageSpec {
   double carpet_scale_m = 0.12;
   double noise_sigma = 3.0;  // sensor noise, grey levels
   std::uint64_t seed = 1;
+
+  /// Line k's width: its own, or the one for all.
+  double line_width_m(std::size_t k) const {
+    return line_widths_m[std::min(k, line_widths_m.size() - 1)];
+  }
 
   /// Throws InputError naming the first invalid field.
   void validate() const;
