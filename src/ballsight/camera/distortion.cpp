@@ -37,10 +37,25 @@ double Distortion::radial_factor(double r2) const {
 }
 
 Vec2 Distortion::distort(const Vec2& m) const {
+  return distort(m, nullptr);
+}
+
+Vec2 Distortion::distort(const Vec2& m, Eigen::Matrix2d* jacobian) const {
+  const auto& [k1, k2, p1, p2, k3, k4, k5, k6] = c_;
   const double x = m.x(), y = m.y();
   const double r2 = x * x + y * y;
-  const double radial = radial_factor(r2);
-  const double p1 = c_[2], p2 = c_[3];
+  const double numerator = 1.0 + r2 * (k1 + r2 * (k2 + r2 * k3));
+  const double denominator = 1.0 + r2 * (k4 + r2 * (k5 + r2 * k6));
+  const double radial = numerator / denominator;
+  if (jacobian) {
+    // d radial / d r2, then the chain through r2 = x^2 + y^2 and the tangential terms.
+    const double slope = ((k1 + r2 * (2.0 * k2 + 3.0 * r2 * k3)) * denominator -
+                          numerator * (k4 + r2 * (2.0 * k5 + 3.0 * r2 * k6))) /
+                         (denominator * denominator);
+    const double cross = 2.0 * x * y * slope + 2.0 * p1 * x + 2.0 * p2 * y;
+    *jacobian << radial + 2.0 * x * x * slope + 2.0 * p1 * y + 6.0 * p2 * x, cross, cross,
+        radial + 2.0 * y * y * slope + 6.0 * p1 * y + 2.0 * p2 * x;
+  }
   return {x * radial + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
           y * radial + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y};
 }
@@ -48,14 +63,11 @@ Vec2 Distortion::distort(const Vec2& m) const {
 std::optional<Vec2> Distortion::undistort(const Vec2& md) const {
   if (is_zero()) return md;
   Vec2 m = md;
-  // Newton with a numerical Jacobian; converges in a handful of steps inside the valid region.
-  constexpr double kH = 1e-7;
+  // Newton with the model's own Jacobian; converges in a handful of steps inside the valid region.
+  Eigen::Matrix2d jacobian;
   for (int iteration = 0; iteration < 50; ++iteration) {
-    const Vec2 residual = distort(m) - md;
+    const Vec2 residual = distort(m, &jacobian) - md;
     if (residual.squaredNorm() < 1e-26) break;
-    Eigen::Matrix2d jacobian;
-    jacobian.col(0) = (distort(m + Vec2(kH, 0.0)) - distort(m - Vec2(kH, 0.0))) / (2.0 * kH);
-    jacobian.col(1) = (distort(m + Vec2(0.0, kH)) - distort(m - Vec2(0.0, kH))) / (2.0 * kH);
     m -= jacobian.inverse() * residual;
     if (!m.allFinite()) return std::nullopt;
   }

@@ -30,6 +30,8 @@ class Distortion {
 
  private:
   double radial_factor(double r2) const;
+  // distort() and, if `jacobian` is given, its derivative by m there.
+  Vec2 distort(const Vec2& m, Eigen::Matrix2d* jacobian) const;
 
   Coefficients c_{};
   double max_radius_ = kMaxRadiusCap;
