@@ -16,6 +16,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/core/file_io.hpp"
 #include "ballsight/core/text_format.hpp"
+#include "ballsight/eval/omni_data_floor.hpp"
 
 namespace ballsight {
 
@@ -144,8 +145,12 @@ OmniRealResult run_omni_real(const OmniRealOptions& options) {
     out.directions = sample_directions(sets[i].samples).size();
     out.distances_cm = sample_distances(sets[i].samples);
     for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
-      if (held_out_folds(sets[i].samples, split).empty()) continue;
+      const std::vector<HeldOutFold> folds =
+          spread_folds(held_out_folds(sets[i].samples, split), options.max_distance_folds);
+      if (folds.empty()) continue;
       for (const std::string& method : options.methods) tasks.push_back({i, split, method, {}});
+      HeldOutScore& floor = out.floors.emplace_back(HeldOutScore{"floor", split, {}, 0, 0.0});
+      floor.distance_cm = neighbour_floor(folds, split, floor.unmapped);
     }
   }
   std::atomic<std::size_t> next = 0;
@@ -183,7 +188,53 @@ OmniRealResult run_omni_real(const OmniRealOptions& options) {
   return result;
 }
 
+std::optional<OmniRealTarget> omni_real_target(const RealOmniSetResult& set, HeldOutSplit split) {
+  const HeldOutScore* ours = set.find("ballsight", split);
+  const HeldOutScore* poly = set.find("poly", split);
+  const HeldOutScore* mlp = set.find("paper-mlp", split);
+  const auto floor = std::find_if(set.floors.begin(), set.floors.end(),
+                                  [&](const HeldOutScore& f) { return f.split == split; });
+  if (!ours || !poly || !mlp || floor == set.floors.end()) return std::nullopt;
+  OmniRealTarget target;
+  target.better_baseline_cm = std::min(poly->distance_cm.median, mlp->distance_cm.median);
+  target.floor_cm = floor->distance_cm.median;
+  target.ballsight_cm = ours->distance_cm.median;
+  target.below_floor_rule = target.floor_cm < 0.7 * target.better_baseline_cm;
+  target.limit_cm =
+      std::min(target.better_baseline_cm,
+               target.below_floor_rule ? 0.7 * target.better_baseline_cm : 1.1 * target.floor_cm);
+  return target;
+}
+
 namespace {
+
+// The JSON row of one score.
+nlohmann::json score_json(const HeldOutScore& s) {
+  return {{"method", s.method},
+          {"split", held_out_split_name(s.split)},
+          {"median_cm", s.distance_cm.median},
+          {"mean_cm", s.distance_cm.mean},
+          {"p95_cm", s.distance_cm.p95},
+          {"max_cm", s.distance_cm.max},
+          {"count", s.distance_cm.count},
+          {"unmapped", s.unmapped},
+          {"fit_seconds", s.fit_seconds}};
+}
+
+// The table row of one score.
+std::string score_row(const std::string& set, const HeldOutScore& s) {
+  char line[200];
+  std::snprintf(line, sizeof line, "%-22s %-11s %-10s %7.2f %7.2f %7.2f %9zu %7.2f s\n",
+                set.c_str(), std::string(held_out_split_name(s.split)).c_str(), s.method.c_str(),
+                s.distance_cm.median, s.distance_cm.p95, s.distance_cm.max, s.unmapped,
+                s.fit_seconds);
+  return line;
+}
+
+// The target's rule in words.
+std::string rule_name(const OmniRealTarget& t) {
+  return t.below_floor_rule ? "0.7x the better baseline" : "1.1x the floor";
+}
 
 // ballsight's median over the better of poly's and paper-mlp's, when all three ran.
 std::optional<double> ratio_to_best_baseline(const RealOmniSetResult& set, HeldOutSplit split) {
@@ -199,22 +250,20 @@ std::optional<double> ratio_to_best_baseline(const RealOmniSetResult& set, HeldO
 nlohmann::json omni_real_json(const OmniRealResult& result) {
   nlohmann::json sets = nlohmann::json::array();
   for (const RealOmniSetResult& set : result.sets) {
-    nlohmann::json scores = nlohmann::json::array();
-    for (const HeldOutScore& s : set.scores) {
-      scores.push_back({{"method", s.method},
-                        {"split", held_out_split_name(s.split)},
-                        {"median_cm", s.distance_cm.median},
-                        {"mean_cm", s.distance_cm.mean},
-                        {"p95_cm", s.distance_cm.p95},
-                        {"max_cm", s.distance_cm.max},
-                        {"count", s.distance_cm.count},
-                        {"unmapped", s.unmapped},
-                        {"fit_seconds", s.fit_seconds}});
-    }
-    nlohmann::json ratios = nlohmann::json::object();
+    nlohmann::json scores = nlohmann::json::array(), floors = nlohmann::json::array();
+    for (const HeldOutScore& s : set.scores) scores.push_back(score_json(s));
+    for (const HeldOutScore& s : set.floors) floors.push_back(score_json(s));
+    nlohmann::json ratios = nlohmann::json::object(), targets = nlohmann::json::object();
     for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
-      if (const auto r = ratio_to_best_baseline(set, split)) {
-        ratios[std::string(held_out_split_name(split))] = *r;
+      const std::string name(held_out_split_name(split));
+      if (const auto r = ratio_to_best_baseline(set, split)) ratios[name] = *r;
+      if (const auto t = omni_real_target(set, split)) {
+        targets[name] = {{"better_baseline_cm", t->better_baseline_cm},
+                         {"floor_cm", t->floor_cm},
+                         {"ballsight_cm", t->ballsight_cm},
+                         {"limit_cm", t->limit_cm},
+                         {"rule", rule_name(*t)},
+                         {"met", t->met()}};
       }
     }
     sets.push_back({{"name", set.name},
@@ -222,7 +271,9 @@ nlohmann::json omni_real_json(const OmniRealResult& result) {
                     {"directions", set.directions},
                     {"distances_cm", set.distances_cm},
                     {"scores", scores},
-                    {"ballsight_over_best_baseline", ratios}});
+                    {"floor", floors},
+                    {"ballsight_over_best_baseline", ratios},
+                    {"targets", targets}});
   }
   return {{"sets", sets}, {"missing", result.missing}};
 }
@@ -230,20 +281,16 @@ nlohmann::json omni_real_json(const OmniRealResult& result) {
 std::string omni_real_table(const OmniRealResult& result) {
   std::string out =
       "set                    split       method      median    p95    max (cm)  unmapped  fit\n";
-  char line[200];
   for (const RealOmniSetResult& set : result.sets) {
-    for (const HeldOutScore& s : set.scores) {
-      std::snprintf(line, sizeof line, "%-22s %-11s %-10s %7.2f %7.2f %7.2f %9zu %7.2f s\n",
-                    set.name.c_str(), std::string(held_out_split_name(s.split)).c_str(),
-                    s.method.c_str(), s.distance_cm.median, s.distance_cm.p95, s.distance_cm.max,
-                    s.unmapped, s.fit_seconds);
-      out += line;
-    }
+    for (const HeldOutScore& s : set.scores) out += score_row(set.name, s);
+    for (const HeldOutScore& s : set.floors) out += score_row(set.name, s);
     for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
-      if (const auto r = ratio_to_best_baseline(set, split)) {
-        out += set.name + " " + std::string(held_out_split_name(split)) +
-               ": ballsight / better baseline = " + fixed(*r, 2) + "\n";
-      }
+      const std::string name = set.name + " " + std::string(held_out_split_name(split));
+      if (const auto r = ratio_to_best_baseline(set, split))
+        out += name + ": ballsight / better baseline = " + fixed(*r, 2) + "\n";
+      if (const auto t = omni_real_target(set, split))
+        out += name + ": target (" + rule_name(*t) + ") " + fixed(t->limit_cm, 2) +
+               " cm: " + (t->met() ? "met" : "not met") + "\n";
     }
   }
   for (const std::string& path : result.missing) out += "missing (skipped): " + path + "\n";

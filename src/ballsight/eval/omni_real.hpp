@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,9 @@ struct RealOmniSetResult {
   std::size_t directions = 0;
   std::vector<double> distances_cm;
   std::vector<HeldOutScore> scores;  // per split, per method; no direction split with one direction
+  /// Per split, on the same folds: the set's neighbours' prediction (eval/omni_data_floor.hpp),
+  /// as method "floor" (fit_seconds 0).
+  std::vector<HeldOutScore> floors;
 
   /// The score of `method` on `split`, or nullptr.
   const HeldOutScore* find(std::string_view method, HeldOutSplit split) const;
@@ -70,9 +74,24 @@ struct OmniRealResult {
 
 OmniRealResult run_omni_real(const OmniRealOptions& options);
 
+/// Issue 44's target on one split, where poly, paper-mlp and ballsight all ran: ballsight's median
+/// at most the better baseline's, and at most 0.7x of it where the floor lies below that, else
+/// within 1.1x the floor.
+struct OmniRealTarget {
+  double better_baseline_cm = 0.0;
+  double floor_cm = 0.0;
+  double ballsight_cm = 0.0;
+  double limit_cm = 0.0;          // the stricter of the two rules
+  bool below_floor_rule = false;  // the 0.7x rule (the floor allows it), else the floor's 1.1x
+  bool met() const { return ballsight_cm <= limit_cm; }
+};
+std::optional<OmniRealTarget> omni_real_target(const RealOmniSetResult& set, HeldOutSplit split);
+
 /// {"sets": [{"name", "samples", "directions", "distances_cm", "scores": [{"method", "split",
 /// "median_cm", "mean_cm", "p95_cm", "max_cm", "count", "unmapped", "fit_seconds"}],
-/// "ballsight_over_best_baseline": {"directions": r, "distance": r}}], "missing": [...]}.
+/// "floor": [the same for method "floor"], "ballsight_over_best_baseline": {"directions": r,
+/// "distance": r}, "targets": {split: {"better_baseline_cm", "floor_cm", "ballsight_cm",
+/// "limit_cm", "rule", "met"}}}], "missing": [...]}.
 nlohmann::json omni_real_json(const OmniRealResult& result);
 /// An aligned text table, one row per set, split and method.
 std::string omni_real_table(const OmniRealResult& result);
