@@ -6,13 +6,9 @@
 
 namespace ballsight {
 
-namespace {
-
 double direction_key(double theta_deg) {
   return std::round(theta_deg * 1000.0) / 1000.0;
 }
-
-}  // namespace
 
 std::string_view held_out_split_name(HeldOutSplit split) {
   return split == HeldOutSplit::kDirections ? "directions" : "distance";

@@ -31,7 +31,10 @@ std::vector<HeldOutFold> held_out_folds(std::span<const PolarSample> samples, He
 /// the farthest and evenly between.
 std::vector<HeldOutFold> spread_folds(std::vector<HeldOutFold> folds, std::size_t count);
 
-/// The distinct directions (image angles to 0.001 deg) and distances, sorted.
+/// A direction as the folds tell directions apart: the image angle rounded to 0.001 deg.
+double direction_key(double theta_deg);
+
+/// The distinct directions (direction_key) and distances, sorted.
 std::vector<double> sample_directions(std::span<const PolarSample> samples);
 std::vector<double> sample_distances(std::span<const PolarSample> samples);
 

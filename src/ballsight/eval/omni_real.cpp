@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <exception>
 #include <map>
 #include <mutex>
@@ -53,21 +54,20 @@ std::map<int, std::vector<PolarSample>> read_minho_profiles(const fs::path& path
   return profiles;
 }
 
-// Fits `method` on each fold and scores its held-out samples.
+// Fits `method` on each of `folds` (of `split`) and scores its held-out samples.
 HeldOutScore score_method(const RealOmniSet& set, const std::string& method, HeldOutSplit split,
-                          std::size_t max_distance_folds) {
+                          std::span<const HeldOutFold> folds) {
   HeldOutScore score{method, split, {}, 0, 0.0};
   std::vector<double> errors;
-  for (const auto& [train, test] :
-       spread_folds(held_out_folds(set.samples, split), max_distance_folds)) {
+  for (const auto& [train, test] : folds) {
     const auto start = std::chrono::steady_clock::now();
     const auto model = fit_omni_model(parse_omni_method(method), train, set.image);
     score.fit_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const PolarSample& s : test) {
       const double d = model->predict(s.theta_deg, s.radius_px).distance_cm;
-      if (!std::isfinite(d)) ++score.unmapped;
-      errors.push_back(std::isfinite(d) ? std::abs(d - s.distance_cm) : s.distance_cm);
+      errors.push_back(held_out_error_cm(std::isfinite(d) ? std::optional<double>(d) : std::nullopt,
+                                         s, score.unmapped));
     }
   }
   score.distance_cm = summarize_errors(std::move(errors));
@@ -135,9 +135,11 @@ OmniRealResult run_omni_real(const OmniRealOptions& options) {
     std::size_t set;
     HeldOutSplit split;
     std::string method;
+    const std::vector<HeldOutFold>* folds;
     HeldOutScore score;
   };
   std::vector<Task> tasks;
+  std::deque<std::vector<HeldOutFold>> folds_of;  // per set and split: the same for every method
   for (std::size_t i = 0; i < sets.size(); ++i) {
     RealOmniSetResult& out = result.sets.emplace_back();
     out.name = sets[i].name;
@@ -145,10 +147,11 @@ OmniRealResult run_omni_real(const OmniRealOptions& options) {
     out.directions = sample_directions(sets[i].samples).size();
     out.distances_cm = sample_distances(sets[i].samples);
     for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
-      const std::vector<HeldOutFold> folds =
-          spread_folds(held_out_folds(sets[i].samples, split), options.max_distance_folds);
+      const std::vector<HeldOutFold>& folds = folds_of.emplace_back(
+          spread_folds(held_out_folds(sets[i].samples, split), options.max_distance_folds));
       if (folds.empty()) continue;
-      for (const std::string& method : options.methods) tasks.push_back({i, split, method, {}});
+      for (const std::string& method : options.methods)
+        tasks.push_back({i, split, method, &folds, {}});
       HeldOutScore& floor = out.floors.emplace_back(HeldOutScore{"floor", split, {}, 0, 0.0});
       floor.distance_cm = neighbour_floor(folds, split, floor.unmapped);
     }
@@ -161,8 +164,7 @@ OmniRealResult run_omni_real(const OmniRealOptions& options) {
     for (std::size_t t = next++; t < tasks.size(); t = next++) {
       Task& task = tasks[t];
       try {
-        task.score =
-            score_method(sets[task.set], task.method, task.split, options.max_distance_folds);
+        task.score = score_method(sets[task.set], task.method, task.split, *task.folds);
       } catch (...) {
         const std::lock_guard lock(report);
         if (!failure) failure = std::current_exception();
@@ -199,11 +201,29 @@ std::optional<OmniRealTarget> omni_real_target(const RealOmniSetResult& set, Hel
   target.better_baseline_cm = std::min(poly->distance_cm.median, mlp->distance_cm.median);
   target.floor_cm = floor->distance_cm.median;
   target.ballsight_cm = ours->distance_cm.median;
-  target.below_floor_rule = target.floor_cm < 0.7 * target.better_baseline_cm;
-  target.limit_cm =
-      std::min(target.better_baseline_cm,
-               target.below_floor_rule ? 0.7 * target.better_baseline_cm : 1.1 * target.floor_cm);
+  if (target.floor_cm < 0.7 * target.better_baseline_cm) {
+    target.rule = OmniRealRule::seven_tenths;
+    target.limit_cm = 0.7 * target.better_baseline_cm;
+  } else if (1.1 * target.floor_cm < target.better_baseline_cm) {
+    target.rule = OmniRealRule::floor;
+    target.limit_cm = 1.1 * target.floor_cm;
+  } else {
+    target.rule = OmniRealRule::better_baseline;
+    target.limit_cm = target.better_baseline_cm;
+  }
   return target;
+}
+
+std::string_view omni_real_rule_name(OmniRealRule rule) {
+  switch (rule) {
+    case OmniRealRule::seven_tenths:
+      return "0.7x the better baseline";
+    case OmniRealRule::floor:
+      return "1.1x the floor";
+    case OmniRealRule::better_baseline:
+      break;
+  }
+  return "the better baseline";
 }
 
 namespace {
@@ -231,20 +251,6 @@ std::string score_row(const std::string& set, const HeldOutScore& s) {
   return line;
 }
 
-// The target's rule in words.
-std::string rule_name(const OmniRealTarget& t) {
-  return t.below_floor_rule ? "0.7x the better baseline" : "1.1x the floor";
-}
-
-// ballsight's median over the better of poly's and paper-mlp's, when all three ran.
-std::optional<double> ratio_to_best_baseline(const RealOmniSetResult& set, HeldOutSplit split) {
-  const HeldOutScore* ours = set.find("ballsight", split);
-  const HeldOutScore* poly = set.find("poly", split);
-  const HeldOutScore* mlp = set.find("paper-mlp", split);
-  if (!ours || !poly || !mlp) return std::nullopt;
-  return ours->distance_cm.median / std::min(poly->distance_cm.median, mlp->distance_cm.median);
-}
-
 }  // namespace
 
 nlohmann::json omni_real_json(const OmniRealResult& result) {
@@ -256,13 +262,13 @@ nlohmann::json omni_real_json(const OmniRealResult& result) {
     nlohmann::json ratios = nlohmann::json::object(), targets = nlohmann::json::object();
     for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
       const std::string name(held_out_split_name(split));
-      if (const auto r = ratio_to_best_baseline(set, split)) ratios[name] = *r;
       if (const auto t = omni_real_target(set, split)) {
+        ratios[name] = t->ballsight_cm / t->better_baseline_cm;
         targets[name] = {{"better_baseline_cm", t->better_baseline_cm},
                          {"floor_cm", t->floor_cm},
                          {"ballsight_cm", t->ballsight_cm},
                          {"limit_cm", t->limit_cm},
-                         {"rule", rule_name(*t)},
+                         {"rule", omni_real_rule_name(t->rule)},
                          {"met", t->met()}};
       }
     }
@@ -286,11 +292,12 @@ std::string omni_real_table(const OmniRealResult& result) {
     for (const HeldOutScore& s : set.floors) out += score_row(set.name, s);
     for (const HeldOutSplit split : {HeldOutSplit::kDirections, HeldOutSplit::kDistance}) {
       const std::string name = set.name + " " + std::string(held_out_split_name(split));
-      if (const auto r = ratio_to_best_baseline(set, split))
-        out += name + ": ballsight / better baseline = " + fixed(*r, 2) + "\n";
-      if (const auto t = omni_real_target(set, split))
-        out += name + ": target (" + rule_name(*t) + ") " + fixed(t->limit_cm, 2) +
+      if (const auto t = omni_real_target(set, split)) {
+        out += name + ": ballsight / better baseline = " +
+               fixed(t->ballsight_cm / t->better_baseline_cm, 2) + "; target (" +
+               std::string(omni_real_rule_name(t->rule)) + ") " + fixed(t->limit_cm, 2) +
                " cm: " + (t->met() ? "met" : "not met") + "\n";
+      }
     }
   }
   for (const std::string& path : result.missing) out += "missing (skipped): " + path + "\n";

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ballsight/calib/ground_error.hpp"
@@ -74,15 +75,19 @@ struct OmniRealResult {
 
 OmniRealResult run_omni_real(const OmniRealOptions& options);
 
-/// Issue 44's target on one split, where poly, paper-mlp and ballsight all ran: ballsight's median
-/// at most the better baseline's, and at most 0.7x of it where the floor lies below that, else
-/// within 1.1x the floor.
+/// Which of issue 44's rules bounds ballsight's median on a split: 0.7x the better baseline
+/// where the floor lies below that; else 1.1x the floor where that is below the better baseline;
+/// else the better baseline itself.
+enum class OmniRealRule { seven_tenths, floor, better_baseline };
+std::string_view omni_real_rule_name(OmniRealRule rule);
+
+/// Issue 44's target on one split, where poly, paper-mlp and ballsight all ran.
 struct OmniRealTarget {
   double better_baseline_cm = 0.0;
   double floor_cm = 0.0;
   double ballsight_cm = 0.0;
-  double limit_cm = 0.0;          // the stricter of the two rules
-  bool below_floor_rule = false;  // the 0.7x rule (the floor allows it), else the floor's 1.1x
+  OmniRealRule rule = OmniRealRule::better_baseline;
+  double limit_cm = 0.0;  // the rule's bound
   bool met() const { return ballsight_cm <= limit_cm; }
 };
 std::optional<OmniRealTarget> omni_real_target(const RealOmniSetResult& set, HeldOutSplit split);
@@ -93,7 +98,8 @@ std::optional<OmniRealTarget> omni_real_target(const RealOmniSetResult& set, Hel
 /// "distance": r}, "targets": {split: {"better_baseline_cm", "floor_cm", "ballsight_cm",
 /// "limit_cm", "rule", "met"}}}], "missing": [...]}.
 nlohmann::json omni_real_json(const OmniRealResult& result);
-/// An aligned text table, one row per set, split and method.
+/// An aligned text table, one row per set, split and method (the floor's too), then per split the
+/// target where it can be judged.
 std::string omni_real_table(const OmniRealResult& result);
 
 }  // namespace ballsight
