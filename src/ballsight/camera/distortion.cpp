@@ -29,11 +29,18 @@ bool Distortion::is_zero() const {
   return true;
 }
 
-double Distortion::radial_factor(double r2) const {
+double Distortion::radial_factor(double r2, double* slope) const {
   const auto& [k1, k2, p1, p2, k3, k4, k5, k6] = c_;
   (void)p1;
   (void)p2;
-  return (1.0 + r2 * (k1 + r2 * (k2 + r2 * k3))) / (1.0 + r2 * (k4 + r2 * (k5 + r2 * k6)));
+  const double numerator = 1.0 + r2 * (k1 + r2 * (k2 + r2 * k3));
+  const double denominator = 1.0 + r2 * (k4 + r2 * (k5 + r2 * k6));
+  if (slope) {
+    *slope = ((k1 + r2 * (2.0 * k2 + 3.0 * r2 * k3)) * denominator -
+              numerator * (k4 + r2 * (2.0 * k5 + 3.0 * r2 * k6))) /
+             (denominator * denominator);
+  }
+  return numerator / denominator;
 }
 
 Vec2 Distortion::distort(const Vec2& m) const {
@@ -41,17 +48,13 @@ Vec2 Distortion::distort(const Vec2& m) const {
 }
 
 Vec2 Distortion::distort(const Vec2& m, Eigen::Matrix2d* jacobian) const {
-  const auto& [k1, k2, p1, p2, k3, k4, k5, k6] = c_;
   const double x = m.x(), y = m.y();
   const double r2 = x * x + y * y;
-  const double numerator = 1.0 + r2 * (k1 + r2 * (k2 + r2 * k3));
-  const double denominator = 1.0 + r2 * (k4 + r2 * (k5 + r2 * k6));
-  const double radial = numerator / denominator;
+  const double p1 = c_[2], p2 = c_[3];
+  double slope = 0.0;  // d radial / d r2
+  const double radial = radial_factor(r2, jacobian ? &slope : nullptr);
   if (jacobian) {
-    // d radial / d r2, then the chain through r2 = x^2 + y^2 and the tangential terms.
-    const double slope = ((k1 + r2 * (2.0 * k2 + 3.0 * r2 * k3)) * denominator -
-                          numerator * (k4 + r2 * (2.0 * k5 + 3.0 * r2 * k6))) /
-                         (denominator * denominator);
+    // The chain through r2 = x^2 + y^2, and the tangential terms.
     const double cross = 2.0 * x * y * slope + 2.0 * p1 * x + 2.0 * p2 * y;
     *jacobian << radial + 2.0 * x * x * slope + 2.0 * p1 * y + 6.0 * p2 * x, cross, cross,
         radial + 2.0 * y * y * slope + 6.0 * p1 * y + 2.0 * p2 * x;

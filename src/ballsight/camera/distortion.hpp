@@ -29,7 +29,8 @@ class Distortion {
   double max_radius() const { return max_radius_; }
 
  private:
-  double radial_factor(double r2) const;
+  // The rational radial factor at r2 = |m|^2 and, if `slope` is given, its derivative by r2.
+  double radial_factor(double r2, double* slope = nullptr) const;
   // distort() and, if `jacobian` is given, its derivative by m there.
   Vec2 distort(const Vec2& m, Eigen::Matrix2d* jacobian) const;
 
