@@ -41,6 +41,8 @@ void add_court_run_command(CLI::App& court);
 void add_eval_court_command(CLI::App& eval);
 /// `serve`: the navigation service (serve_command.cpp).
 void add_serve_command(CLI::App& app);
+/// `ballsight record info`.
+void add_record_commands(CLI::App& app);
 /// `robot`: the simulated collector's controller (robot_command.cpp).
 void add_robot_command(CLI::App& app);
 /// `plan`: the collection route of one world model (plan_command.cpp).

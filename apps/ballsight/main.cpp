@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
   ballsight::app::add_detect_commands(app);
   ballsight::app::add_plan_command(app);
   ballsight::app::add_serve_command(app);
+  ballsight::app::add_record_commands(app);
   ballsight::app::add_robot_command(app);
   ballsight::app::add_node_commands(app);
   ballsight::app::add_omni_node_command(app);

@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "http_service.hpp"
 #include "option_parsing.hpp"
+#include "record_options.hpp"
 #include "stop_signals.hpp"
 
 namespace ballsight::app {
@@ -31,6 +32,7 @@ struct ServeArgs {
   std::vector<std::string> fail_camera;  // K@T or K@T-U, each
   std::string obstacles = "none";
   SimulatedServiceOptions service;
+  RecordArgs record;
 };
 
 // K@T (camera K fails at simulated second T for good) or K@T-U (and returns at U).
@@ -60,6 +62,7 @@ void run_serve(const ServeArgs& args) {
           "give the site file (--site SITE.yml) or --sim, not both");
   require(args.duration_s >= 0.0, "--duration", "must not be negative");
   validate(args.http);
+  const std::optional<RecordOptions> record = record_options(args.record);
   const std::optional<PlannerKind> kind = planner_from_name(args.planner);
   require(kind && *kind != PlannerKind::exact, "--planner",
           "expected priority, nearest or ballsight, got '" + args.planner + "'");
@@ -83,12 +86,21 @@ void run_serve(const ServeArgs& args) {
   const StopSignals signals;  // before any thread starts
 
   NavigationHub hub;
+  std::optional<RunRecorder> recorder;
+  if (record) recorder.emplace(hub, service, *record);
   HttpService http(args.http, service, hub, {args.sim, true, args.service.seed}, "ballsight serve");
   // A failure of the court service ends the command with its message (the server stops as it
   // goes out of scope).
   signals.run_until_stopped(args.duration_s,
                             [&](const std::atomic<bool>& stop) { service.run(hub, stop); });
   http.stop();
+  if (recorder) {
+    const RecorderCounts c = recorder->finish();  // writes what is queued, closes the file
+    std::cout << "ballsight serve: recorded " << c.updates << " updates (" << c.frame_sets
+              << " frame sets with frames, " << c.dropped << " dropped) in " << c.files
+              << " file(s), " << c.bytes << " bytes, from " << record->path.string()
+              << (c.error.empty() ? "" : "; recording stopped: " + c.error) << std::endl;
+  }
   std::cout << "ballsight serve: stopped after " << service.health()["frame_sets"] << " updates"
             << std::endl;
 }
@@ -105,6 +117,7 @@ void add_serve_command(CLI::App& app) {
   cmd->add_flag("--sim", args->sim, "Serve the built-in simulated court (rendered frames)");
   add_seed_option(*cmd, args->service.seed, "Simulated court: seed of the rig and the scene");
   add_http_service_options(*cmd, args->http);
+  add_record_options(*cmd, args->record);
   cmd->add_option("--planner", args->planner, "priority, nearest or ballsight")
       ->capture_default_str();
   cmd->add_option("--rate", args->service.vision_hz,

@@ -9,30 +9,12 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/service/loop_truth.hpp"
 #include "ballsight/service/navigation_hub.hpp"
+#include "service/running_service.hpp"
 #include "temp_dir.hpp"
 #include "wait_until.hpp"
 
 namespace ballsight {
 namespace {
-
-// A simulated service running on a thread of its own until stop_and_join() or the end of the
-// test (so that a failed ASSERT ends it cleanly).
-struct RunningService {
-  explicit RunningService(const SimulatedServiceOptions& options)
-      : service(options), runner([this] { service.run(hub, stop); }) {}
-  ~RunningService() { stop_and_join(); }
-
-  void stop_and_join() {
-    stop = true;
-    if (runner.joinable()) runner.join();
-  }
-  double sim_time() const { return service.health()["sim"]["time_s"].get<double>(); }
-
-  SimulatedCourtService service;
-  NavigationHub hub;
-  std::atomic<bool> stop{false};
-  std::thread runner;  // last: it starts once the rest is built
-};
 
 // A camera fails and returns while nobody drives (the court keeps to the wall clock): the record
 // says both, the health says which camera is dark, and the pipeline goes on without it.
@@ -44,7 +26,7 @@ TEST(SimulatedService, ACameraFailsAndReturns) {
   options.vision_hz = 20.0;
   options.truth_out = dir / "truth.jsonl";
   options.camera_outages = {{2, 0.1, 0.3}, {0, 0.4}};
-  RunningService running(options);
+  test::RunningService running(options);
   const SimulatedCourtService& service = running.service;
   const auto sim_time = [&] { return running.sim_time(); };
   const auto state = [&](int k) { return service.health()["cameras"][k]["state"]; };
@@ -81,7 +63,7 @@ TEST(SimulatedService, InLockstepTheCourtWaitsForEveryAcknowledgement) {
   options.seed = 2;
   options.balls = 3;
   options.lockstep = true;
-  RunningService running(options);
+  test::RunningService running(options);
   SimulatedCourtService& service = running.service;
   const auto sim_time = [&] { return running.sim_time(); };
   const auto published = [&] { return service.health()["frame_sets"].get<std::uint64_t>(); };

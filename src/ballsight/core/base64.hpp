@@ -7,5 +7,7 @@
 namespace ballsight {
 
 std::string base64(std::string_view bytes);
+/// The bytes of base64 `text` (with padding); throws InputError naming `where` for anything else.
+std::string base64_decode(std::string_view text, const std::string& where);
 
 }  // namespace ballsight

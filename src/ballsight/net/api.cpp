@@ -15,6 +15,7 @@
 #include "ballsight/net/api_request.hpp"
 #include "ballsight/pipeline/route_json.hpp"
 #include "ballsight/pipeline/world_model_json.hpp"
+#include "ballsight/service/navigation_json.hpp"
 
 namespace ballsight {
 namespace {
@@ -62,14 +63,6 @@ std::vector<Vec2> ball_list(const json& body, const FieldRect& area) {
 
 json point_json(const Vec2& p) {
   return {{"x_m", p.x()}, {"y_m", p.y()}};
-}
-
-json given_up_json(const std::vector<UnreachableMark>& marks) {
-  json out = json::array();
-  for (const UnreachableMark& m : marks) {
-    out.push_back({{"x_m", m.position_m.x()}, {"y_m", m.position_m.y()}, {"reason", m.reason}});
-  }
-  return out;
 }
 
 /// "a=1&b=2" -> the value of `key` as an unsigned integer, or `fallback` when absent.
@@ -436,13 +429,7 @@ std::string health_message(const ApiContext& c) {
 }
 
 nlohmann::json navigation_json(const NavigationUpdate& update, const ApiContext& c) {
-  return {{"seq", update.seq},
-          {"service_id", c.hub.service_id()},
-          {"capture_time_ns", update.capture_time_ns},
-          {"published_ns", update.published_ns},
-          {"world", world_model_json(update.world, c.camera_names)},
-          {"route", route_json(update.route)},
-          {"given_up", given_up_json(update.given_up)}};
+  return navigation_json(update, c.hub.service_id(), c.camera_names);
 }
 
 ApiContext::ApiContext(NavigationHub& hub_, std::vector<std::string> camera_names_,

@@ -76,8 +76,7 @@ std::string health_message(const ApiContext& context);
 /// The OpenAPI 3 document of API v1.
 const nlohmann::json& openapi_document();
 
-/// The JSON of one update: {"seq", "service_id", "capture_time_ns", "published_ns", "world":
-/// {...}, "route": {...}}.
+/// The JSON of one update (service/navigation_json.hpp) with this service's id and camera names.
 nlohmann::json navigation_json(const NavigationUpdate& update, const ApiContext& context);
 
 }  // namespace ballsight

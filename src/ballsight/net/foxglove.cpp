@@ -1,64 +1,14 @@
 #include "ballsight/net/foxglove.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "ballsight/core/csv_fields.hpp"
-#include "ballsight/pipeline/route_json.hpp"
+#include "ballsight/service/foxglove_messages.hpp"
 
 namespace ballsight {
 namespace {
 
 using nlohmann::json;
-
-// --- JSON Schemas of the foxglove.* messages sent (the fields ballsight fills) ---
-
-json object_schema(const json& properties) {
-  return {{"type", "object"}, {"properties", properties}};
-}
-
-json array_of(const json& items) {
-  return {{"type", "array"}, {"items", items}};
-}
-
-const json kNumber{{"type", "number"}};
-
-json time_schema() {
-  return object_schema({{"sec", {{"type", "integer"}}}, {"nsec", {{"type", "integer"}}}});
-}
-
-json pose_schema() {
-  return object_schema(
-      {{"position", object_schema({{"x", kNumber}, {"y", kNumber}, {"z", kNumber}})},
-       {"orientation",
-        object_schema({{"x", kNumber}, {"y", kNumber}, {"z", kNumber}, {"w", kNumber}})}});
-}
-
-json color_schema() {
-  return object_schema({{"r", kNumber}, {"g", kNumber}, {"b", kNumber}, {"a", kNumber}});
-}
-
-json scene_update_schema() {
-  const json vector3 = object_schema({{"x", kNumber}, {"y", kNumber}, {"z", kNumber}});
-  const json shape =
-      object_schema({{"pose", pose_schema()}, {"size", vector3}, {"color", color_schema()}});
-  const json line = object_schema({{"type", {{"type", "integer"}}},
-                                   {"pose", pose_schema()},
-                                   {"thickness", kNumber},
-                                   {"scale_invariant", {{"type", "boolean"}}},
-                                   {"points", array_of(vector3)},
-                                   {"color", color_schema()}});
-  const json entity = object_schema({{"timestamp", time_schema()},
-                                     {"frame_id", {{"type", "string"}}},
-                                     {"id", {{"type", "string"}}},
-                                     {"lifetime", time_schema()},
-                                     {"frame_locked", {{"type", "boolean"}}},
-                                     {"spheres", array_of(shape)},
-                                     {"cubes", array_of(shape)},
-                                     {"lines", array_of(line)}});
-  return object_schema({{"deletions", array_of(object_schema({{"id", {{"type", "string"}}}}))},
-                        {"entities", array_of(entity)}});
-}
 
 struct Channel {
   std::uint32_t id;
@@ -71,113 +21,14 @@ enum ChannelId : std::uint32_t { kCourt = 1, kBalls, kRobot, kRoute, kNavigation
 
 const std::vector<Channel>& channels() {
   static const std::vector<Channel> kChannels{
-      {kCourt, "/court", "foxglove.SceneUpdate", scene_update_schema()},
-      {kBalls, "/balls", "foxglove.SceneUpdate", scene_update_schema()},
-      {kRobot, "/robot_pose", "foxglove.PoseInFrame",
-       object_schema({{"timestamp", time_schema()},
-                      {"frame_id", {{"type", "string"}}},
-                      {"pose", pose_schema()}})},
-      {kRoute, "/route", "foxglove.PosesInFrame",
-       object_schema({{"timestamp", time_schema()},
-                      {"frame_id", {{"type", "string"}}},
-                      {"poses", array_of(pose_schema())}})},
+      {kCourt, "/court", "foxglove.SceneUpdate", foxglove::scene_update_schema()},
+      {kBalls, "/balls", "foxglove.SceneUpdate", foxglove::scene_update_schema()},
+      {kRobot, "/robot_pose", "foxglove.PoseInFrame", foxglove::pose_in_frame_schema()},
+      {kRoute, "/route", "foxglove.PosesInFrame", foxglove::poses_in_frame_schema()},
       {kNavigation, "/navigation", "ballsight.NavigationUpdate",
-       object_schema({{"seq", {{"type", "integer"}}},
-                      {"service_id", {{"type", "string"}}},
-                      {"capture_time_ns", {{"type", "integer"}}},
-                      {"published_ns", {{"type", "integer"}}},
-                      {"world", {{"type", "object"}}},
-                      {"route", {{"type", "object"}}}})},
+       foxglove::navigation_update_schema()},
   };
   return kChannels;
-}
-
-// --- Messages ---
-
-constexpr const char* kFrame = "court";
-
-json stamp(std::int64_t ns) {
-  return {{"sec", ns / 1'000'000'000}, {"nsec", ns % 1'000'000'000}};
-}
-
-json point(double x, double y, double z = 0.0) {
-  return {{"x", x}, {"y", y}, {"z", z}};
-}
-
-/// A pose at (x, y, z) heading `yaw` about the vertical.
-json pose(double x, double y, double z, double yaw) {
-  return {{"position", point(x, y, z)},
-          {"orientation",
-           {{"x", 0.0}, {"y", 0.0}, {"z", std::sin(yaw / 2.0)}, {"w", std::cos(yaw / 2.0)}}}};
-}
-
-json color(double r, double g, double b, double a = 1.0) {
-  return {{"r", r}, {"g", g}, {"b", b}, {"a", a}};
-}
-
-json line(int type, const std::vector<Vec2>& points, double thickness, const json& rgba) {
-  json pts = json::array();
-  for (const Vec2& p : points) pts.push_back(point(p.x(), p.y()));
-  return {{"type", type},
-          {"pose", pose(0, 0, 0, 0)},
-          {"thickness", thickness},
-          {"scale_invariant", false},
-          {"points", pts},
-          {"color", rgba},
-          {"colors", json::array()},
-          {"indices", json::array()}};
-}
-
-json entity(const std::string& id, std::int64_t time_ns) {
-  json e{{"timestamp", stamp(time_ns)}, {"frame_id", kFrame},    {"id", id},
-         {"lifetime", stamp(0)},        {"frame_locked", false}, {"metadata", json::array()}};
-  for (const char* kind :
-       {"arrows", "cubes", "spheres", "cylinders", "lines", "triangles", "texts", "models"}) {
-    e[kind] = json::array();
-  }
-  return e;
-}
-
-std::vector<Vec2> rectangle(double length, double width) {
-  const double x = length / 2.0, y = width / 2.0;
-  return {{-x, -y}, {x, -y}, {x, y}, {-x, y}};
-}
-
-json court_scene(const ApiContext& c, std::int64_t time_ns) {
-  json e = entity("court", time_ns);
-  constexpr int kLineLoop = 1, kLineList = 2;
-  e["lines"].push_back(line(kLineLoop, rectangle(c.court.area_length_m, c.court.area_width_m), 0.05,
-                            color(0.6, 0.6, 0.6)));
-  e["lines"].push_back(
-      line(kLineLoop, rectangle(c.court.length_m, c.court.width_m), 0.05, color(1, 1, 1)));
-  if (c.court.net) {
-    const double y = c.court.width_m / 2.0 + c.court.net_posts_outside_m;
-    e["lines"].push_back(line(kLineList, {{0.0, -y}, {0.0, y}}, 0.08, color(0.1, 0.1, 0.1)));
-  }
-  return {{"deletions", json::array()}, {"entities", {e}}};
-}
-
-json balls_scene(const ApiContext& c, const NavigationUpdate& u) {
-  json e = entity("balls", u.capture_time_ns);
-  const double d = 2.0 * c.ball_radius_m;
-  for (const FusedBall& b : u.world.balls) {
-    e["spheres"].push_back({{"pose", pose(b.position_m.x(), b.position_m.y(), c.ball_radius_m, 0)},
-                            {"size", point(d, d, d)},
-                            {"color", color(0.8, 1.0, 0.1)}});
-  }
-  return {{"deletions", json::array()}, {"entities", {e}}};
-}
-
-json route_poses(const NavigationUpdate& u) {
-  json poses = json::array();
-  const std::vector<Vec2>& w = u.route.waypoints_m;
-  for (std::size_t i = 0; i < w.size(); ++i) {
-    const Vec2 along = i + 1 < w.size() ? Vec2(w[i + 1] - w[i])
-                       : i > 0          ? Vec2(w[i] - w[i - 1])
-                                        : Vec2(1, 0);
-    poses.push_back(pose(w[i].x(), w[i].y(), 0.0, std::atan2(along.y(), along.x())));
-  }
-  return poses;
 }
 
 }  // namespace
@@ -229,20 +80,16 @@ std::optional<std::string> FoxgloveSession::payload(std::uint32_t channel,
                                                     const NavigationUpdate& u) const {
   switch (channel) {
     case kCourt:
-      return json_text(court_scene(context_, u.capture_time_ns));
+      return json_text(foxglove::court_scene(context_.court, u.capture_time_ns));
     case kBalls:
-      return json_text(balls_scene(context_, u));
-    case kRobot:
-      if (!u.world.robot) return std::nullopt;
-      return json_text(
-          {{"timestamp", stamp(u.capture_time_ns)},
-           {"frame_id", kFrame},
-           {"pose", pose(u.world.robot->pose.position.x(), u.world.robot->pose.position.y(), 0.0,
-                         u.world.robot->pose.heading_rad)}});
+      return json_text(foxglove::balls_scene(u.world, context_.ball_radius_m, u.capture_time_ns));
+    case kRobot: {
+      const std::optional<json> robot = foxglove::robot_pose(u.world, u.capture_time_ns);
+      if (!robot) return std::nullopt;
+      return json_text(*robot);
+    }
     case kRoute:
-      return json_text({{"timestamp", stamp(u.capture_time_ns)},
-                        {"frame_id", kFrame},
-                        {"poses", route_poses(u)}});
+      return json_text(foxglove::route_poses(u.route, u.capture_time_ns));
     default:
       return json_text(navigation_json(u, context_));
   }
@@ -288,8 +135,9 @@ FoxgloveOutput FoxgloveSession::on_text(std::string_view message,
       channel_of_[id] = channel;
       const std::int64_t now = utc_now_ns();
       if (channel == kCourt) {
-        out.binary.push_back(foxglove_message_frame(id, static_cast<std::uint64_t>(now),
-                                                    json_text(court_scene(context_, now))));
+        out.binary.push_back(
+            foxglove_message_frame(id, static_cast<std::uint64_t>(now),
+                                   json_text(foxglove::court_scene(context_.court, now))));
       } else if (latest) {
         if (const std::optional<std::string> p = payload(channel, *latest)) {
           out.binary.push_back(

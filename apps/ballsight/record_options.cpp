@@ -1,0 +1,33 @@
+#include "record_options.hpp"
+
+namespace ballsight::app {
+
+void add_record_options(CLI::App& command, RecordArgs& args) {
+  command.add_option("--record", args.path,
+                     "Record the run into this MCAP file (Foxglove opens it; docs/recording.md)");
+  command
+      .add_option("--record-every", args.options.frame_every,
+                  "Record the camera frames of every Nth frame set (0: none; updates always)")
+      ->capture_default_str();
+  command
+      .add_option("--record-max-mb", args.options.max_mb,
+                  "Begin a new file (FILE-2.mcap, ...) when one reaches this size (0: no limit)")
+      ->capture_default_str();
+  command.add_option("--record-compression", args.compression, "zstd, lz4 or none")
+      ->capture_default_str();
+  command
+      .add_option("--record-jpeg-quality", args.options.jpeg_quality,
+                  "JPEG quality of the recorded frames, 1-100")
+      ->capture_default_str();
+}
+
+std::optional<RecordOptions> record_options(const RecordArgs& args) {
+  if (args.path.empty()) return std::nullopt;
+  RecordOptions options = args.options;
+  options.path = args.path;
+  options.compression = mcap::parse_compression(args.compression, "--record-compression");
+  options.validate();
+  return options;
+}
+
+}  // namespace ballsight::app

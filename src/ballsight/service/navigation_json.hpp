@@ -1,0 +1,18 @@
+#pragma once
+// One navigation update as JSON: what API v1 sends (GET /api/v1/navigation, the stream), what
+// Foxglove's /navigation channel carries and what a recording keeps.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ballsight/service/navigation_hub.hpp"
+
+namespace ballsight {
+
+/// {"seq", "service_id", "capture_time_ns", "published_ns", "world": {...}, "route": {...},
+/// "given_up": [{"x_m", "y_m", "reason"}]}; `camera_names` names the world's camera indices.
+nlohmann::json navigation_json(const NavigationUpdate& update, const std::string& service_id,
+                               const std::vector<std::string>& camera_names);
+
+}  // namespace ballsight

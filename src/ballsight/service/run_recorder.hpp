@@ -1,0 +1,108 @@
+#pragma once
+// Records a running court service into MCAP files that Foxglove (or Lichtblick) opens: every
+// navigation update the hub publishes, with the frames and detections of the frame set behind it.
+// It listens to the hub like any client: the publishing thread only copies references (the frames
+// are shared, never written after capture) into a bounded queue; a thread of the recorder's own
+// encodes (JPEG, JSON) and writes. When the queue is full the update is dropped and counted, never
+// waited for; a write that fails (a full disk) ends the recording with its error, and the service
+// goes on. docs/recording.md lists the topics.
+
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ballsight/record/compression.hpp"
+#include "ballsight/service/camera_view.hpp"
+#include "ballsight/service/court_service.hpp"
+#include "ballsight/service/navigation_hub.hpp"
+
+namespace ballsight {
+
+namespace mcap {
+class McapWriter;
+}
+
+struct RecordOptions {
+  std::filesystem::path path;
+  mcap::Compression compression = mcap::Compression::zstd;
+  /// The frames of every Nth frame set are recorded (0: none); updates always.
+  int frame_every = 1;
+  /// A file that reaches this size is closed and the next one begun (0: no limit): FILE.mcap,
+  /// then FILE-2.mcap, FILE-3.mcap, ...
+  double max_mb = 0.0;
+  int jpeg_quality = 85;
+  /// Updates waiting to be written; more are dropped (counted).
+  std::size_t queue = 8;
+
+  /// Throws InputError naming the option for a value out of range.
+  void validate() const;
+};
+
+/// What the recorder did so far.
+struct RecorderCounts {
+  std::uint64_t updates = 0;     // navigation updates written
+  std::uint64_t frame_sets = 0;  // frame sets whose frames were written
+  std::uint64_t dropped = 0;     // updates dropped: the queue was full
+  std::uint64_t files = 0;       // files begun
+  std::uint64_t bytes = 0;       // written to all of them
+  std::string error;             // why recording stopped early ("" while it goes on)
+};
+
+class RunRecorder {
+ public:
+  /// Records `service`'s updates in `hub` from now on. Throws InputError naming the path when
+  /// the first file cannot be created.
+  RunRecorder(NavigationHub& hub, const CourtService& service, RecordOptions options);
+  /// Stops listening, writes what is queued and closes the file: the final counts. Idempotent.
+  RecorderCounts finish();
+  /// Finishes.
+  ~RunRecorder();
+  RunRecorder(const RunRecorder&) = delete;
+  RunRecorder& operator=(const RunRecorder&) = delete;
+
+  RecorderCounts counts() const;
+  /// {"path", "updates", "frame_sets", "dropped", "files", "bytes", "error"} for health.
+  nlohmann::json health() const;
+
+ private:
+  struct Job {
+    NavigationUpdate update;
+    std::vector<CameraView> views;  // the frame set's, when its frames are recorded
+  };
+  void on_published(std::uint64_t seq);
+  void run();
+  void write(const Job& job);
+  void begin_file();
+
+  NavigationHub& hub_;
+  const CourtService& service_;
+  const RecordOptions options_;
+  const std::vector<std::string> camera_names_;
+  const Site site_;
+
+  mutable std::mutex mutex_;  // guards the queue, the counts and stopping_
+  std::condition_variable wake_;
+  std::deque<Job> queue_;
+  RecorderCounts counts_;
+  bool stopping_ = false;
+  std::uint64_t frame_sets_seen_ = 0;  // frame sets published, every Nth recorded
+
+  // The writer thread's own.
+  std::unique_ptr<mcap::McapWriter> writer_;
+  std::vector<std::uint16_t> channels_;
+  std::uint64_t bytes_closed_ = 0;      // in the files before this one
+  std::uint64_t dropped_recorded_ = 0;  // the drops the last /recorder message told
+
+  int listener_ = 0;
+  std::thread thread_;
+};
+
+}  // namespace ballsight

@@ -1,0 +1,134 @@
+// The recorder on a running simulated court: every update and frame set in the file, readable
+// and checked; every Nth frame set; files split by size; a path that cannot be written.
+
+#include "ballsight/service/run_recorder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+#include <optional>
+
+#include "ballsight/core/base64.hpp"
+#include "ballsight/core/error.hpp"
+#include "ballsight/record/mcap_info.hpp"
+#include "service/running_service.hpp"
+#include "temp_dir.hpp"
+#include "wait_until.hpp"
+
+namespace ballsight {
+namespace {
+
+SimulatedServiceOptions small_court() {
+  SimulatedServiceOptions options;
+  options.seed = 3;
+  options.balls = 6;
+  options.vision_hz = 20.0;
+  return options;
+}
+
+/// Runs the simulated court with a recorder until `updates` updates are published; the final
+/// counts.
+RecorderCounts record_run(const RecordOptions& options, std::uint64_t updates) {
+  std::optional<RunRecorder> recorder;
+  test::RunningService running(small_court(),
+                               [&](SimulatedCourtService& service, NavigationHub& hub) {
+                                 recorder.emplace(hub, service, options);
+                               });
+  EXPECT_TRUE(test::wait_until([&] { return running.hub.latest_seq() >= updates; }))
+      << "the service published " << running.hub.latest_seq() << " updates";
+  running.stop_and_join();
+  const RecorderCounts counts = recorder->finish();
+  EXPECT_EQ(counts.updates + counts.dropped, running.hub.latest_seq());
+  EXPECT_EQ(counts.error, "");
+  return counts;
+}
+
+/// Per topic, the messages of a recording in file order.
+std::map<std::string, std::vector<nlohmann::json>> messages_by_topic(
+    const std::filesystem::path& path) {
+  std::map<std::string, std::vector<nlohmann::json>> topics;
+  mcap::McapReader::open(path).read([&](const mcap::Channel& channel, const mcap::Message& m) {
+    topics[channel.topic].push_back(nlohmann::json::parse(m.data.bytes));
+  });
+  return topics;
+}
+
+TEST(RunRecorder, EveryUpdateAndFrameSetIsInTheFile) {
+  const test::TempDir dir;
+  RecordOptions options;
+  options.path = dir / "run.mcap";
+  const RecorderCounts counts = record_run(options, 6);
+  ASSERT_EQ(counts.dropped, 0u);
+  EXPECT_EQ(counts.frame_sets, counts.updates);
+  EXPECT_EQ(counts.files, 1u);
+  EXPECT_EQ(counts.bytes, std::filesystem::file_size(options.path));
+
+  const nlohmann::json info = mcap::mcap_info(mcap::McapReader::open(options.path));
+  EXPECT_EQ(info["summary"], "agrees");
+  EXPECT_TRUE(info["complete"].get<bool>());
+  auto topics = messages_by_topic(options.path);
+  const std::vector<nlohmann::json>& navigation = topics["/navigation"];
+  ASSERT_EQ(navigation.size(), counts.updates);
+  for (std::size_t i = 0; i < navigation.size(); ++i) {
+    EXPECT_EQ(navigation[i]["seq"], i + 1);  // every update, in order
+  }
+  EXPECT_EQ(topics["/balls"].size(), counts.updates);
+  EXPECT_EQ(topics["/route"].size(), counts.updates);
+  EXPECT_EQ(topics["/court"].size(), 1u);
+  // Camera 0's frames decode to the camera's image, with its detections beside them.
+  const std::vector<nlohmann::json>& images = topics["/camera/camera_0/image"];
+  ASSERT_EQ(images.size(), counts.frame_sets);
+  EXPECT_EQ(topics["/camera/camera_0/detections"].size(), counts.frame_sets);
+  EXPECT_EQ(images[0]["format"], "jpeg");
+  const std::string jpeg = base64_decode(images.back()["data"].get<std::string>(), "image");
+  const cv::Mat frame =
+      cv::imdecode(std::vector<std::uint8_t>(jpeg.begin(), jpeg.end()), cv::IMREAD_COLOR);
+  EXPECT_GT(frame.cols, 600);
+  EXPECT_GT(frame.rows, 300);
+  // The navigation update's capture time is the frames' time.
+  EXPECT_EQ(images.back()["timestamp"]["sec"].get<std::int64_t>(),
+            navigation.back()["capture_time_ns"].get<std::int64_t>() / 1'000'000'000);
+}
+
+TEST(RunRecorder, EveryNthFrameSetAndFilesSplitBySize) {
+  const test::TempDir dir;
+  RecordOptions options;
+  options.path = dir / "run.mcap";
+  options.frame_every = 3;
+  options.max_mb = 0.3;
+  options.compression = mcap::Compression::lz4;
+  const RecorderCounts counts = record_run(options, 12);
+  ASSERT_EQ(counts.dropped, 0u);
+  EXPECT_EQ(counts.frame_sets, (counts.updates + 2) / 3);
+  ASSERT_GT(counts.files, 1u);
+  std::size_t navigation = 0, images = 0;
+  std::uint64_t bytes = 0;
+  for (std::uint64_t n = 1; n <= counts.files; ++n) {
+    const auto path = n == 1 ? options.path : dir / ("run-" + std::to_string(n) + ".mcap");
+    ASSERT_TRUE(std::filesystem::exists(path)) << path;
+    bytes += std::filesystem::file_size(path);
+    const nlohmann::json info = mcap::mcap_info(mcap::McapReader::open(path));
+    EXPECT_EQ(info["summary"], "agrees") << path;
+    auto topics = messages_by_topic(path);
+    EXPECT_EQ(topics["/court"].size(), 1u) << "each file draws the court: " << path;
+    navigation += topics["/navigation"].size();
+    images += topics["/camera/camera_1/image"].size();
+  }
+  EXPECT_EQ(navigation, counts.updates);
+  EXPECT_EQ(images, counts.frame_sets);
+  EXPECT_EQ(bytes, counts.bytes);
+}
+
+TEST(RunRecorder, APathThatCannotBeWrittenIsAnInputError) {
+  NavigationHub hub;
+  SimulatedCourtService service(small_court());
+  RecordOptions options;
+  options.path = "/nonexistent-dir/run.mcap";
+  EXPECT_THROW(RunRecorder(hub, service, options), InputError);
+  options.path = "run.mcap";
+  options.jpeg_quality = 0;
+  EXPECT_THROW(RunRecorder(hub, service, options), InputError);
+}
+
+}  // namespace
+}  // namespace ballsight
