@@ -1,4 +1,4 @@
-// An MCAP recording (`record info`, `eval replay`): the summary through the footer, then every
+// An MCAP recording (`record info`): the summary through the footer, then every
 // record of the data section, chunks decompressed (at most 16 MB each here).
 
 #include "ballsight/record/mcap_reader.hpp"

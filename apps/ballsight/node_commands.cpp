@@ -21,6 +21,7 @@
 #include "http_service.hpp"
 #include "node_options.hpp"
 #include "option_parsing.hpp"
+#include "record_options.hpp"
 #include "stop_signals.hpp"
 
 namespace ballsight::app {
@@ -35,6 +36,7 @@ struct NodeArgs : DdsArgs {
   bool camera_nodes = false;  // court-node --sim: fuse camera nodes' detections
   bool serve = false;         // court-node: the navigation service's HTTP API inside
   HttpServiceArgs http;
+  RecordArgs record;  // court-node: --record
 
   SimulatedServiceOptions service_options() const {
     SimulatedServiceOptions options = service;
@@ -103,6 +105,7 @@ void run_court_node(const NodeArgs& args) {
   require(!args.camera_nodes || args.sim, "--camera-nodes",
           "is for --sim (a site's court node always fuses its camera nodes)");
   if (args.serve) validate(args.http);
+  record_options(args.record);  // a bad option ends the command before anything starts
   const dds::Participant participant(args.domain_options());
   std::unique_ptr<CourtService> service;
   if (args.sim && !args.camera_nodes) {
@@ -121,6 +124,7 @@ void run_court_node(const NodeArgs& args) {
     }
   }
   NavigationHub hub;
+  const std::unique_ptr<RunRecorder> recorder = start_recording(args.record, hub, *service);
   // The HTTP service first: a bad --listen ends the command before the topics are up. A court fed
   // by camera nodes holds no frames: no camera views, and no calibration saved from stills.
   const bool frames_here = args.sim && !args.camera_nodes;
@@ -163,6 +167,7 @@ void run_court_node(const NodeArgs& args) {
   signals.run_until_stopped(args.duration_s,
                             [&](const std::atomic<bool>& stop) { service->run(hub, stop); });
   if (http) http->stop();
+  finish_recording(recorder.get(), args.record, "ballsight court-node");
   std::cout << "ballsight court-node: stopped after " << topics.written() << " updates ("
             << topics.failed() << " writes refused); " << robot.answered()
             << " robot reports answered (" << robot.refused() << " refused)" << std::endl;
@@ -194,6 +199,7 @@ void add_node_commands(CLI::App& app) {
       "Also serve the navigation service's HTTP API (as `serve`: docs/robot-link.md)");
   for (CLI::Option* option : add_http_service_options(*court_cmd, court->http))
     option->needs("--serve");
+  add_record_options(*court_cmd, court->record);
   court_cmd->callback([court] { run_court_node(*court); });
 }
 

@@ -1,5 +1,7 @@
 #include "record_options.hpp"
 
+#include <iostream>
+
 namespace ballsight::app {
 
 void add_record_options(CLI::App& command, RecordArgs& args) {
@@ -28,6 +30,22 @@ std::optional<RecordOptions> record_options(const RecordArgs& args) {
   options.compression = mcap::parse_compression(args.compression, "--record-compression");
   options.validate();
   return options;
+}
+
+std::unique_ptr<RunRecorder> start_recording(const RecordArgs& args, NavigationHub& hub,
+                                             const CourtService& service) {
+  const std::optional<RecordOptions> options = record_options(args);
+  if (!options) return nullptr;
+  return std::make_unique<RunRecorder>(hub, service, *options);
+}
+
+void finish_recording(RunRecorder* recorder, const RecordArgs& args, const std::string& command) {
+  if (recorder == nullptr) return;
+  const RecorderCounts c = recorder->finish();  // writes what is queued, closes the file
+  std::cout << command << ": recorded " << c.updates << " updates (" << c.frame_sets
+            << " frame sets with frames, " << c.dropped << " dropped) in " << c.files
+            << " file(s) from " << args.path << ", " << c.bytes << " bytes"
+            << (c.error.empty() ? "" : "; recording stopped: " + c.error) << std::endl;
 }
 
 }  // namespace ballsight::app

@@ -62,7 +62,7 @@ void run_serve(const ServeArgs& args) {
           "give the site file (--site SITE.yml) or --sim, not both");
   require(args.duration_s >= 0.0, "--duration", "must not be negative");
   validate(args.http);
-  const std::optional<RecordOptions> record = record_options(args.record);
+  record_options(args.record);  // a bad option ends the command before anything starts
   const std::optional<PlannerKind> kind = planner_from_name(args.planner);
   require(kind && *kind != PlannerKind::exact, "--planner",
           "expected priority, nearest or ballsight, got '" + args.planner + "'");
@@ -86,21 +86,14 @@ void run_serve(const ServeArgs& args) {
   const StopSignals signals;  // before any thread starts
 
   NavigationHub hub;
-  std::optional<RunRecorder> recorder;
-  if (record) recorder.emplace(hub, service, *record);
+  const std::unique_ptr<RunRecorder> recorder = start_recording(args.record, hub, service);
   HttpService http(args.http, service, hub, {args.sim, true, args.service.seed}, "ballsight serve");
   // A failure of the court service ends the command with its message (the server stops as it
   // goes out of scope).
   signals.run_until_stopped(args.duration_s,
                             [&](const std::atomic<bool>& stop) { service.run(hub, stop); });
   http.stop();
-  if (recorder) {
-    const RecorderCounts c = recorder->finish();  // writes what is queued, closes the file
-    std::cout << "ballsight serve: recorded " << c.updates << " updates (" << c.frame_sets
-              << " frame sets with frames, " << c.dropped << " dropped) in " << c.files
-              << " file(s), " << c.bytes << " bytes, from " << record->path.string()
-              << (c.error.empty() ? "" : "; recording stopped: " + c.error) << std::endl;
-  }
+  finish_recording(recorder.get(), args.record, "ballsight serve");
   std::cout << "ballsight serve: stopped after " << service.health()["frame_sets"] << " updates"
             << std::endl;
 }

@@ -228,6 +228,33 @@ TEST(DdsNodes, ACourtNodeAloneOnTheSimulatedCourtWritesEveryTopic) {
   EXPECT_EQ(got.size(), 5u) << court.log_text();
 }
 
+// `court-node --record`: the run in an MCAP file, every update with its frames, which `record
+// info` reads through and finds consistent with its summary.
+TEST(DdsNodes, ACourtNodeRecordsItsRun) {
+  const test::TempDir dir;
+  const std::string path = (dir / "run.mcap").string();
+  const test::CliResult run = test::run_cli(
+      node_args("court-node", test::test_domain(), 3, {"--duration", "3", "--record", path}));
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  EXPECT_NE(run.stdout_text.find("ballsight court-node: recorded "), std::string::npos)
+      << run.stdout_text;
+  const test::CliResult info = test::run_cli({"record", "info", path, "--json"});
+  ASSERT_EQ(info.exit_code, 0) << info.stderr_text;
+  const nlohmann::json j = nlohmann::json::parse(info.stdout_text);
+  EXPECT_EQ(j["summary"], "agrees");
+  std::map<std::string, int> messages;
+  for (const auto& channel : j["channels"]) messages[channel["topic"]] = channel["messages"];
+  EXPECT_GE(messages["/navigation"], 5);
+  EXPECT_EQ(messages["/balls"], messages["/navigation"]);
+  int cameras = 0;
+  for (const auto& [topic, count] : messages) {
+    if (!topic.ends_with("/image")) continue;
+    ++cameras;
+    EXPECT_EQ(count, messages["/navigation"]) << topic;
+  }
+  EXPECT_EQ(cameras, 4);
+}
+
 // `court-node --serve`: the navigation service's HTTP API inside the court node serves the very
 // updates its DDS topics carry.
 TEST(DdsNodes, ACourtNodeServesTheNavigationServiceAsWell) {

@@ -237,6 +237,15 @@ TEST(ServeCli, BadOptionsFailWithOneLine) {
                           "got '" + std::string(malformed) + "'");
   }
   expect_one_line_error(run_cli({"serve", "--sim", "--cluster-share", "2"}), "--cluster-share");
+  expect_one_line_error(run_cli({"serve", "--sim", "--record", "/nonexistent/run.mcap"}),
+                        "/nonexistent/run.mcap: cannot open for writing");
+  expect_one_line_error(
+      run_cli({"serve", "--sim", "--record", "run.mcap", "--record-compression", "gzip"}),
+      "--record-compression");
+  expect_one_line_error(run_cli({"serve", "--sim", "--record", "run.mcap", "--record-every", "-1"}),
+                        "--record-every");
+  expect_one_line_error(run_cli({"record", "info", "/nonexistent/run.mcap"}),
+                        "/nonexistent/run.mcap: cannot open");
   // A record of another scene is not resumed.
   const TempDir temp;
   const std::string record = (temp / "truth.jsonl").string();

@@ -12,6 +12,7 @@
 #include "ballsight/core/error.hpp"
 #include "ballsight/record/mcap_reader.hpp"
 #include "ballsight/record/mcap_writer.hpp"
+#include "file_size_limit.hpp"
 #include "temp_dir.hpp"
 
 namespace ballsight::mcap {
@@ -20,6 +21,15 @@ namespace {
 std::string file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// A writer's options: `compression`, chunks of `chunk_size` bytes.
+WriterOptions writer_options(Compression compression, std::size_t chunk_size) {
+  WriterOptions options;
+  options.compression = compression;
+  options.chunk_size = chunk_size;
+  options.library = "ballsight test";
+  return options;
 }
 
 /// Message i of a test recording: on channel 1 + i % 3, 1 ms apart, of varied length.
@@ -38,7 +48,7 @@ constexpr std::uint32_t kMessages = 600;
 /// A recording of kMessages messages on three channels (two schemas), an attachment and a
 /// metadata record, in chunks of about 4 kB.
 void write_test_file(const std::filesystem::path& path, Compression compression) {
-  McapWriter writer(path, {compression, 4096, "", "ballsight test"});
+  McapWriter writer(path, writer_options(compression, 4096));
   const std::uint16_t pose =
       writer.add_schema("ballsight.Pose", "jsonschema", "{\"type\":\"object\"}");
   const std::uint16_t image = writer.add_schema("foxglove.CompressedImage", "jsonschema", "{}");
@@ -185,52 +195,70 @@ TEST(McapIndexes, ChunkMessageAttachmentAndSummaryOffsetsPointAtTheirRecords) {
   EXPECT_EQ(groups, 6);  // schemas, channels, statistics, chunk, attachment, metadata indexes
 }
 
-/// The messages a reader finds in `bytes`, which must be a file cut short.
-std::vector<Message> read_cut(const std::string& bytes) {
+/// What a reader finds in `bytes`, which must be a file cut short: its messages, and the byte
+/// after the last record it read.
+struct CutRead {
+  std::vector<Message> messages;
+  std::uint64_t read_to = 0;
+};
+CutRead read_cut(const std::string& bytes) {
   const McapReader reader(bytes, "cut.mcap");
   EXPECT_FALSE(reader.closed());
   EXPECT_FALSE(reader.summary());
-  std::vector<Message> messages;
-  const DataSection data =
-      reader.read([&](const Channel&, const Message& message) { messages.push_back(message); });
+  CutRead found;
+  const DataSection data = reader.read(
+      [&](const Channel&, const Message& message) { found.messages.push_back(message); });
   EXPECT_FALSE(data.complete);
   EXPECT_NE(data.cut.find("cut short"), std::string::npos) << data.cut;
-  return messages;
+  found.read_to = data.read_to;
+  return found;
 }
 
-TEST(McapCut, AFileCutAnywhereReadsItsCompleteChunks) {
-  const TestFile file(Compression::lz4);
-  const std::string& bytes = file.bytes;
-  const Summary& summary = file.summary;
-  for (const ChunkIndex& index : summary.chunk_indexes) {
-    // Cut inside the chunk: the chunks before it are read, in order.
-    const std::string cut = bytes.substr(0, index.chunk_start_offset + index.chunk_length / 2);
-    const std::vector<Message> messages = read_cut(cut);
-    for (std::size_t i = 0; i < messages.size(); ++i) {
-      ASSERT_EQ(messages[i], test_message(static_cast<std::uint32_t>(i)));
-    }
-    EXPECT_LT(messages.size(), kMessages);
-    if (!messages.empty()) {
-      EXPECT_LT(messages.back().log_time, index.message_start_time);
-    }
+/// The messages of the chunk `index` points at.
+std::size_t messages_in(const std::string& bytes, const ChunkIndex& index) {
+  std::size_t count = 0;
+  for (const auto& [channel, offset] : index.message_index_offsets) {
+    std::uint64_t at = offset;
+    RawRecord record;
+    EXPECT_TRUE(next_record(bytes, at, record));
+    count += parse_record<MessageIndex>(record.content, "index").records.size();
   }
+  return count;
+}
+
+TEST(McapCut, AFileCutAnywhereReadsExactlyItsCompleteChunks) {
+  const TestFile file(Compression::lz4);
+  std::size_t before = 0;  // messages in the chunks before the cut one
+  for (const ChunkIndex& index : file.summary.chunk_indexes) {
+    const std::string cut = file.bytes.substr(0, index.chunk_start_offset + index.chunk_length / 2);
+    const CutRead read = read_cut(cut);
+    ASSERT_EQ(read.messages.size(), before);
+    for (std::size_t i = 0; i < read.messages.size(); ++i) {
+      ASSERT_EQ(read.messages[i], test_message(static_cast<std::uint32_t>(i)));
+    }
+    EXPECT_EQ(read.read_to, index.chunk_start_offset);  // up to the cut chunk, indexes included
+    before += messages_in(file.bytes, index);
+  }
+  EXPECT_EQ(before, kMessages);
 }
 
 TEST(McapCut, AWriterKilledMidRecordingLeavesItsCompleteChunks) {
   test::TempDir dir;
   const auto path = dir / "killed.mcap";
+  constexpr std::size_t kChunk = 2048;
   const pid_t child = fork();
   ASSERT_GE(child, 0);
-  if (child == 0) {  // writes until killed
+  if (child == 0) {  // writes until killed (or, should the test hang, for a few minutes)
     try {
-      McapWriter writer(path, {Compression::zstd, 2048, "", "test"});
+      McapWriter writer(path, writer_options(Compression::zstd, kChunk));
       writer.add_channel(0, "/log", "json");
       writer.add_channel(0, "/log2", "json");
       writer.add_channel(0, "/log3", "json");
-      for (std::uint32_t i = 0;; ++i) writer.write(test_message(i % kMessages));
+      for (std::uint32_t i = 0; i < 100'000'000; ++i) writer.write(test_message(i % kMessages));
     } catch (...) {
       _exit(1);
     }
+    _exit(0);
   }
   // Wait (at most 20 s) for a few chunks on disk, then kill the writer.
   std::error_code no_file;
@@ -242,10 +270,41 @@ TEST(McapCut, AWriterKilledMidRecordingLeavesItsCompleteChunks) {
   int status = 0;
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFSIGNALED(status));
-  const std::vector<Message> messages = read_cut(file_bytes(path));
-  ASSERT_GT(messages.size(), 100u);
-  for (std::size_t i = 0; i < messages.size(); ++i) {
-    ASSERT_EQ(messages[i], test_message(static_cast<std::uint32_t>(i % kMessages))) << i;
+  const std::string bytes = file_bytes(path);
+  const CutRead read = read_cut(bytes);
+  ASSERT_GT(read.messages.size(), 100u);
+  for (std::size_t i = 0; i < read.messages.size(); ++i) {
+    ASSERT_EQ(read.messages[i], test_message(static_cast<std::uint32_t>(i % kMessages))) << i;
+  }
+  // What is lost is the chunk being written when the writer was killed, at most.
+  EXPECT_LT(bytes.size() - read.read_to, kChunk + 4096);
+}
+
+TEST(McapCut, AWriteRefusedByTheDiskLeavesAFileCutShort) {
+  test::TempDir dir;
+  const auto path = dir / "full.mcap";
+  std::string error;
+  {
+    const test::FileSizeLimit full_disk(40'000);
+    McapWriter writer(path, writer_options(Compression::none, 4096));
+    writer.add_channel(0, "/log", "json");
+    writer.add_channel(0, "/log2", "json");
+    writer.add_channel(0, "/log3", "json");
+    try {
+      for (std::uint32_t i = 0; i < 10'000; ++i) writer.write(test_message(i % kMessages));
+    } catch (const std::runtime_error& e) {
+      error = e.what();
+    }
+    EXPECT_THROW(writer.write(test_message(0)), std::logic_error);
+    writer.close();  // only closes: nothing more is written after the failure
+  }
+  EXPECT_NE(error.find(path.string() + ": cannot write"), std::string::npos) << error;
+  const std::string bytes = file_bytes(path);
+  EXPECT_LE(bytes.size(), 40'000u);
+  const CutRead read = read_cut(bytes);
+  EXPECT_GT(read.messages.size(), 50u);
+  for (std::size_t i = 0; i < read.messages.size(); ++i) {
+    ASSERT_EQ(read.messages[i], test_message(static_cast<std::uint32_t>(i))) << i;
   }
 }
 
@@ -279,6 +338,11 @@ TEST(McapDamage, WrongBytesAreRefusedWithWhereAndWhat) {
   // A data section byte outside any chunk (the attachment's name): the attachment's CRC.
   const AttachmentIndex& attachment = summary.attachment_indexes.at(0);
   expect_refused(flipped(bytes, attachment.offset + 9 + 16 + 4), "the CRC does not match");
+
+  // A closed file whose chunk claims to run past the file's end.
+  std::string long_chunk = bytes;
+  long_chunk[chunk.chunk_start_offset + 6] = static_cast<char>(0x7f);
+  expect_refused(long_chunk, "a record runs past the end of the file");
 
   // A message on a channel that was never defined.
   std::string handmade(kMagic);

@@ -11,6 +11,7 @@
 #include "ballsight/core/base64.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/record/mcap_info.hpp"
+#include "file_size_limit.hpp"
 #include "service/running_service.hpp"
 #include "temp_dir.hpp"
 #include "wait_until.hpp"
@@ -117,6 +118,45 @@ TEST(RunRecorder, EveryNthFrameSetAndFilesSplitBySize) {
   EXPECT_EQ(navigation, counts.updates);
   EXPECT_EQ(images, counts.frame_sets);
   EXPECT_EQ(bytes, counts.bytes);
+}
+
+// The disk fills up mid-run: the recording stops with the error, the file reads as cut short,
+// and the service goes on publishing.
+TEST(RunRecorder, AFullDiskStopsTheRecordingNotTheService) {
+  const test::TempDir dir;
+  RecordOptions options;
+  options.path = dir / "run.mcap";
+  options.queue = 10'000;
+  std::optional<test::FileSizeLimit> full_disk(std::in_place, 2'000'000);
+  std::optional<RunRecorder> recorder;
+  test::RunningService running(small_court(),
+                               [&](SimulatedCourtService& service, NavigationHub& hub) {
+                                 recorder.emplace(hub, service, options);
+                               });
+  const bool failed = test::wait_until([&] { return !recorder->counts().error.empty(); });
+  const std::uint64_t seq_at_failure = running.hub.latest_seq();
+  const bool goes_on =
+      test::wait_until([&] { return running.hub.latest_seq() >= seq_at_failure + 3; });
+  {
+    const test::Deadline deadline("stopping the service and finishing the recording");
+    running.stop_and_join();
+    recorder->finish();
+  }
+  full_disk.reset();
+  ASSERT_TRUE(failed) << "the recording never failed";
+  EXPECT_TRUE(goes_on) << "the service stopped at update " << running.hub.latest_seq();
+  const RecorderCounts counts = recorder->counts();
+  EXPECT_NE(counts.error.find(options.path.string() + ": cannot write"), std::string::npos)
+      << counts.error;
+  EXPECT_LE(std::filesystem::file_size(options.path), 2'000'000u);
+  std::size_t navigation = 0;
+  const mcap::DataSection data = mcap::McapReader::open(options.path)
+                                     .read([&](const mcap::Channel& channel, const mcap::Message&) {
+                                       navigation += channel.topic == "/navigation";
+                                     });
+  EXPECT_FALSE(data.complete);
+  EXPECT_GT(navigation, 0u);
+  EXPECT_LE(navigation, counts.updates);
 }
 
 TEST(RunRecorder, APathThatCannotBeWrittenIsAnInputError) {

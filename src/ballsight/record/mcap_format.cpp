@@ -88,7 +88,7 @@ class FieldReader {
  private:
   std::string_view take(std::uint64_t n) {
     require(n <= bytes_.size() - offset_, where_,
-            "a field of " + std::to_string(n) + " bytes at byte " + std::to_string(offset_) +
+            "a field of " + std::to_string(n) + " bytes at its byte " + std::to_string(offset_) +
                 " runs past the record's end (" + std::to_string(bytes_.size()) + " bytes)");
     const std::string_view field = bytes_.substr(offset_, n);
     offset_ += n;

@@ -43,10 +43,11 @@ McapReader McapReader::open(const std::filesystem::path& path, ReaderLimits limi
   const bool stated = ::fstat(fd, &status) == 0 && S_ISREG(status.st_mode);
   const auto size = static_cast<std::size_t>(status.st_size);
   void* data = stated && size > 0 ? ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0) : nullptr;
+  const int map_error = errno;
   ::close(fd);
   if (!stated) throw InputError(path.string() + ": not a regular file");
   if (data == MAP_FAILED) {
-    throw InputError(path.string() + ": cannot map (" + std::strerror(errno) + ")");
+    throw InputError(path.string() + ": cannot map (" + std::strerror(map_error) + ")");
   }
   std::shared_ptr<const void> mapping(data, [size](const void* p) {
     if (p != nullptr) ::munmap(const_cast<void*>(p), size);
@@ -133,6 +134,8 @@ DataSection McapReader::read(const MessageCallback& on_message) const {
   while (true) {
     const std::uint64_t record_at = offset;
     if (!next_record(bytes_, offset, record)) {
+      // A closed file has all its records: one that runs past the end is damage.
+      require(!closed_, at(where_, record_at), "a record runs past the end of the file");
       found.cut = "the data section is cut short at byte " + std::to_string(record_at) +
                   " (a writer that was stopped before closing the file)";
       break;

@@ -45,11 +45,19 @@ McapWriter::~McapWriter() {
   }
 }
 
-void McapWriter::put(const std::string& bytes) {
-  if (!file_) throw std::logic_error("McapWriter: " + path_.string() + " is closed");
-  if (std::fwrite(bytes.data(), 1, bytes.size(), file_.get()) != bytes.size()) {
-    throw std::runtime_error(path_.string() + ": cannot write (" + std::strerror(errno) + ")");
+void McapWriter::check_open() const {
+  if (closed_ || failed_) {
+    throw std::logic_error("McapWriter: " + path_.string() + (failed_ ? " failed" : " is closed"));
   }
+}
+
+void McapWriter::fail(const char* what) {
+  failed_ = true;
+  throw std::runtime_error(path_.string() + ": cannot " + what + " (" + std::strerror(errno) + ")");
+}
+
+void McapWriter::put(const std::string& bytes) {
+  if (std::fwrite(bytes.data(), 1, bytes.size(), file_.get()) != bytes.size()) fail("write");
   offset_ += bytes.size();
   data_crc_ = crc32(data_crc_, bytes);
 }
@@ -61,6 +69,7 @@ void McapWriter::put_record(const R& record) {
 
 std::uint16_t McapWriter::add_schema(const std::string& name, const std::string& encoding,
                                      const std::string& data) {
+  check_open();
   schemas_.push_back(Schema{static_cast<std::uint16_t>(schemas_.size() + 1), name, encoding, data});
   put_record(schemas_.back());
   return schemas_.back().id;
@@ -69,6 +78,7 @@ std::uint16_t McapWriter::add_schema(const std::string& name, const std::string&
 std::uint16_t McapWriter::add_channel(std::uint16_t schema_id, const std::string& topic,
                                       const std::string& message_encoding,
                                       const StringMap& metadata) {
+  check_open();
   if (schema_id > schemas_.size()) {
     throw std::invalid_argument("McapWriter: no schema " + std::to_string(schema_id));
   }
@@ -79,7 +89,7 @@ std::uint16_t McapWriter::add_channel(std::uint16_t schema_id, const std::string
 }
 
 void McapWriter::write(const Message& message) {
-  if (closed_) throw std::logic_error("McapWriter: " + path_.string() + " is closed");
+  check_open();
   if (message.channel_id == 0 || message.channel_id > channels_.size()) {
     throw std::invalid_argument("McapWriter: no channel " + std::to_string(message.channel_id));
   }
@@ -96,7 +106,10 @@ void McapWriter::write(const Message& message) {
   ++statistics_.channel_message_counts[message.channel_id];
   statistics_.message_start_time = std::min(statistics_.message_start_time, message.log_time);
   statistics_.message_end_time = std::max(statistics_.message_end_time, message.log_time);
-  if (chunk_records_.size() >= options_.chunk_size) flush_chunk();
+  if (chunk_records_.size() >= options_.chunk_size ||
+      chunk_end_time_ - chunk_start_time_ >= options_.chunk_duration_ns) {
+    flush_chunk();
+  }
 }
 
 void McapWriter::flush_chunk() {
@@ -122,12 +135,11 @@ void McapWriter::flush_chunk() {
   ++statistics_.chunk_count;
   chunk_records_.clear();
   chunk_index_entries_.clear();
-  if (std::fflush(file_.get()) != 0) {
-    throw std::runtime_error(path_.string() + ": cannot write (" + std::strerror(errno) + ")");
-  }
+  if (std::fflush(file_.get()) != 0) fail("write");
 }
 
 void McapWriter::attach(const Attachment& attachment) {
+  check_open();
   flush_chunk();  // attachments stand outside chunks
   AttachmentIndex index{offset_,
                         0,
@@ -143,6 +155,7 @@ void McapWriter::attach(const Attachment& attachment) {
 }
 
 void McapWriter::write_metadata(const Metadata& metadata) {
+  check_open();
   flush_chunk();
   MetadataIndex index{offset_, 0, metadata.name};
   put_record(metadata);
@@ -154,6 +167,10 @@ void McapWriter::write_metadata(const Metadata& metadata) {
 void McapWriter::close() {
   if (closed_) return;
   closed_ = true;
+  if (failed_) {  // what is on disk stays a file cut short, which readers read up to its end
+    file_.reset();
+    return;
+  }
   flush_chunk();
   put_record(DataEnd{data_crc_});
 
@@ -186,9 +203,7 @@ void McapWriter::close() {
   put(summary);
   put_record(Footer{summary_start, summary_offset_start, summary_crc});
   put(std::string(kMagic));
-  if (std::fclose(file_.release()) != 0) {
-    throw std::runtime_error(path_.string() + ": cannot write (" + std::strerror(errno) + ")");
-  }
+  if (std::fclose(file_.release()) != 0) fail("write");
 }
 
 }  // namespace ballsight::mcap

@@ -1,10 +1,10 @@
 #pragma once
-// Writes an MCAP file: messages in compressed chunks, each followed by its message indexes; then
-// the summary (schemas, channels, statistics, chunk, attachment and metadata indexes, grouped by
-// opcode), the summary offsets and the footer, with the data section's and the summary's CRCs,
-// so that readers can seek by time and topic. Schemas and channels are written to the data
-// section as they are added and the file is flushed after every chunk: a writer that is killed
-// leaves a file whose every complete chunk a reader still reads (McapReader).
+// Writes an MCAP file: messages in compressed chunks (of about 1 MB or 1 s), each followed by its
+// message indexes; then the summary (schemas, channels, statistics, chunk, attachment and metadata
+// indexes, grouped by opcode), the summary offsets and the footer, with the data section's and the
+// summary's CRCs, so that readers can seek by time and topic. Schemas and channels are written to
+// the data section as they are added and the file is flushed after every chunk: a writer that is
+// killed leaves a file whose every complete chunk a reader still reads (McapReader).
 
 #include <cstdint>
 #include <cstdio>
@@ -21,8 +21,10 @@ namespace ballsight::mcap {
 
 struct WriterOptions {
   Compression compression = Compression::zstd;
-  /// A chunk is closed, compressed and written once its records reach this size.
+  /// A chunk is closed, compressed and written once its records reach this size or its messages
+  /// span this long (what a killed writer can lose).
   std::size_t chunk_size = 1 << 20;
+  std::uint64_t chunk_duration_ns = 1'000'000'000;
   std::string profile;  // the Header's profile: "" (none of the well-known ones)
   std::string library = "ballsight";
 };
@@ -49,6 +51,8 @@ class McapWriter {
   void write_metadata(const Metadata& metadata);
   /// Writes the open chunk, the data end, the summary and the footer, and closes the file.
   /// Throws std::runtime_error naming the path when the disk refuses a byte (full, removed).
+  /// After any failed write the writer only closes the file: what reached the disk reads as a
+  /// file cut short, and every other call throws std::logic_error.
   void close();
 
   /// Bytes in the file so far plus the open chunk's uncompressed records.
@@ -56,7 +60,9 @@ class McapWriter {
   const std::filesystem::path& path() const { return path_; }
 
  private:
-  void put(const std::string& bytes);  // appends to the file and the data section's CRC
+  void check_open() const;
+  [[noreturn]] void fail(const char* what);  // marks the writer failed and throws
+  void put(const std::string& bytes);        // appends to the file and the data section's CRC
   void flush_chunk();
   template <class R>
   void put_record(const R& record);
@@ -67,6 +73,7 @@ class McapWriter {
   std::uint64_t offset_ = 0;
   std::uint32_t data_crc_ = 0;
   bool closed_ = false;
+  bool failed_ = false;
 
   std::vector<Schema> schemas_;
   std::vector<Channel> channels_;

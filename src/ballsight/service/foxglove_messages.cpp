@@ -17,7 +17,9 @@ json array_of(const json& items) {
   return {{"type", "array"}, {"items", items}};
 }
 
-const json kNumber{{"type", "number"}};
+json number_schema() {
+  return {{"type", "number"}};
+}
 
 json time_schema() {
   return object_schema({{"sec", {{"type", "integer"}}}, {"nsec", {{"type", "integer"}}}});
@@ -25,13 +27,19 @@ json time_schema() {
 
 json pose_schema() {
   return object_schema(
-      {{"position", object_schema({{"x", kNumber}, {"y", kNumber}, {"z", kNumber}})},
-       {"orientation",
-        object_schema({{"x", kNumber}, {"y", kNumber}, {"z", kNumber}, {"w", kNumber}})}});
+      {{"position",
+        object_schema({{"x", number_schema()}, {"y", number_schema()}, {"z", number_schema()}})},
+       {"orientation", object_schema({{"x", number_schema()},
+                                      {"y", number_schema()},
+                                      {"z", number_schema()},
+                                      {"w", number_schema()}})}});
 }
 
 json color_schema() {
-  return object_schema({{"r", kNumber}, {"g", kNumber}, {"b", kNumber}, {"a", kNumber}});
+  return object_schema({{"r", number_schema()},
+                        {"g", number_schema()},
+                        {"b", number_schema()},
+                        {"a", number_schema()}});
 }
 
 json point(double x, double y, double z = 0.0) {
@@ -80,12 +88,13 @@ std::vector<Vec2> rectangle(double length, double width) {
 }  // namespace
 
 json scene_update_schema() {
-  const json vector3 = object_schema({{"x", kNumber}, {"y", kNumber}, {"z", kNumber}});
+  const json vector3 =
+      object_schema({{"x", number_schema()}, {"y", number_schema()}, {"z", number_schema()}});
   const json shape =
       object_schema({{"pose", pose_schema()}, {"size", vector3}, {"color", color_schema()}});
   const json line = object_schema({{"type", {{"type", "integer"}}},
                                    {"pose", pose_schema()},
-                                   {"thickness", kNumber},
+                                   {"thickness", number_schema()},
                                    {"scale_invariant", {{"type", "boolean"}}},
                                    {"points", array_of(vector3)},
                                    {"color", color_schema()}});
@@ -120,11 +129,11 @@ json compressed_image_schema() {
 }
 
 json image_annotations_schema() {
-  const json point2 = object_schema({{"x", kNumber}, {"y", kNumber}});
+  const json point2 = object_schema({{"x", number_schema()}, {"y", number_schema()}});
   const json circle = object_schema({{"timestamp", time_schema()},
                                      {"position", point2},
-                                     {"diameter", kNumber},
-                                     {"thickness", kNumber},
+                                     {"diameter", number_schema()},
+                                     {"thickness", number_schema()},
                                      {"fill_color", color_schema()},
                                      {"outline_color", color_schema()}});
   return object_schema({{"circles", array_of(circle)},
@@ -206,7 +215,8 @@ json image_annotations(const std::vector<PixelDetection>& detections, std::int64
                          : d.object == ObjectClass::robot_back_marker  ? color(0.2, 0.4, 1)
                                                                        : color(0.6, 0.6, 0.6);
     circles.push_back({{"timestamp", stamp(time_ns)},
-                       {"position", {{"x", d.center_px.x()}, {"y", d.center_px.y()}}},
+                       // Foxglove's origin is the top-left pixel's corner, ours its centre.
+                       {"position", {{"x", d.center_px.x() + 0.5}, {"y", d.center_px.y() + 0.5}}},
                        {"diameter", 2.0 * d.radius_px},
                        {"thickness", 2.0},
                        {"fill_color", color(0, 0, 0, 0)},

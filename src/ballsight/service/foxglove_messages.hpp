@@ -47,7 +47,8 @@ nlohmann::json route_poses(const Route& route, std::int64_t time_ns);
 /// carries bytes).
 nlohmann::json compressed_image(std::string_view jpeg, const std::string& frame_id,
                                 std::int64_t time_ns);
-/// A circle per detection (balls yellow, the robot's markers red and blue, obstacles grey).
+/// A circle per detection (balls yellow, the robot's markers red and blue, obstacles grey), in
+/// Foxglove's image coordinates (origin at the top-left pixel's corner).
 nlohmann::json image_annotations(const std::vector<PixelDetection>& detections,
                                  std::int64_t time_ns);
 

@@ -1,5 +1,6 @@
 #include "ballsight/service/run_recorder.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <opencv2/imgcodecs.hpp>
 
@@ -26,13 +27,22 @@ std::filesystem::path numbered(const std::filesystem::path& first, std::uint64_t
          (first.stem().string() + "-" + std::to_string(n) + first.extension().string());
 }
 
-/// A camera's name as a part of a topic: letters, digits and '_' ("camera 0" -> "camera_0").
-std::string topic_part(const std::string& name) {
-  std::string part = name;
-  for (char& c : part) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
+/// Each camera's topic prefix, "/camera/NAME" with the name's letters, digits and '_' (others
+/// become '_': "camera 0" -> "camera_0"), made unique by its index where two would be the same.
+std::vector<std::string> camera_topics(const std::vector<std::string>& names) {
+  std::vector<std::string> topics;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    std::string topic = "/camera/";
+    for (const char c : names[k]) {
+      topic += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
+    }
+    if (std::find(topics.begin(), topics.end(), topic) != topics.end()) {
+      topic += '_';
+      topic += std::to_string(k);
+    }
+    topics.push_back(topic);
   }
-  return part;
+  return topics;
 }
 
 enum Topic : std::size_t { kNavigation, kBalls, kRobot, kRoute, kCourt, kRecorder, kFixedTopics };
@@ -62,12 +72,17 @@ RunRecorder::RunRecorder(NavigationHub& hub, const CourtService& service, Record
   options_.validate();
   begin_file();
   thread_ = std::thread([this] { run(); });
-  listener_ = hub_.add_listener([this](std::uint64_t seq) { on_published(seq); });
+  try {
+    listener_ = hub_.add_listener([this](std::uint64_t seq) { on_published(seq); });
+  } catch (...) {
+    finish();
+    throw;
+  }
 }
 
 RecorderCounts RunRecorder::finish() {
   if (thread_.joinable()) {
-    hub_.remove_listener(listener_);
+    if (listener_ != 0) hub_.remove_listener(listener_);
     {
       const std::lock_guard lock(mutex_);
       stopping_ = true;
@@ -83,25 +98,43 @@ RunRecorder::~RunRecorder() {
 }
 
 void RunRecorder::on_published(std::uint64_t seq) {
+  // Nothing is copied for an update that is dropped or not recorded.
+  const auto full = [&] {
+    if (queue_.size() < options_.queue) return false;
+    ++counts_.dropped;
+    return true;
+  };
+  {
+    const std::lock_guard lock(mutex_);
+    if (stopping_ || !counts_.error.empty() || full()) return;
+  }
   std::optional<NavigationUpdate> update = hub_.find(seq);
   if (!update) return;
-  std::vector<CameraView> views;
   bool frames = false;
-  for (std::size_t k = 0; k < camera_names_.size(); ++k) {
+  {
+    const std::lock_guard lock(mutex_);
+    // A re-plan of the last world model (balls reported collected) brings no new frames.
+    const bool frame_set = update->capture_time_ns != last_capture_ns_;
+    last_capture_ns_ = update->capture_time_ns;
+    frames = frame_set && options_.frame_every > 0 &&
+             frame_sets_seen_++ % static_cast<std::uint64_t>(options_.frame_every) == 0;
+  }
+  std::vector<CameraView> views;
+  for (std::size_t k = 0; frames && k < camera_names_.size(); ++k) {
     std::optional<CameraView> view = service_.camera_view(k);
-    const bool fresh = view && view->seq == seq && !view->frame.empty();
-    frames = frames || fresh;
-    views.push_back(fresh ? std::move(*view) : CameraView{});
+    if (!view || view->seq != seq || view->frame.empty()) {
+      views.emplace_back();  // this camera gave no frame to this update
+      continue;
+    }
+    for (PixelDetection& d : view->detections) d.patch = {};  // the circle is what is drawn
+    views.push_back(std::move(*view));
+  }
+  if (std::none_of(views.begin(), views.end(),
+                   [](const CameraView& v) { return !v.frame.empty(); })) {
+    views.clear();
   }
   const std::lock_guard lock(mutex_);
-  if (stopping_ || !counts_.error.empty()) return;
-  if (queue_.size() >= options_.queue) {
-    ++counts_.dropped;
-    return;
-  }
-  const bool keep = frames && options_.frame_every > 0 &&
-                    frame_sets_seen_++ % static_cast<std::uint64_t>(options_.frame_every) == 0;
-  if (!keep) views.clear();
+  if (full()) return;  // another publishing thread filled it meanwhile
   queue_.push_back({std::move(*update), std::move(views)});
   wake_.notify_one();
 }
@@ -136,15 +169,11 @@ void RunRecorder::run() {
 }
 
 void RunRecorder::begin_file() {
-  std::uint64_t number = 0;
-  {
-    const std::lock_guard lock(mutex_);
-    number = ++counts_.files;
-  }
-  const std::filesystem::path path = numbered(options_.path, number);
-  writer_ = std::make_unique<mcap::McapWriter>(
-      path, mcap::WriterOptions{options_.compression, 1 << 20, "", "ballsight"});
-  mcap::McapWriter& w = *writer_;
+  const std::uint64_t number = files_begun_ + 1;
+  mcap::WriterOptions writer_options;
+  writer_options.compression = options_.compression;
+  auto next = std::make_unique<mcap::McapWriter>(numbered(options_.path, number), writer_options);
+  mcap::McapWriter& w = *next;
   const auto schema = [&](const char* name, const json& schema_json) {
     return w.add_schema(name, "jsonschema", text(schema_json));
   };
@@ -164,10 +193,9 @@ void RunRecorder::begin_file() {
       schema("foxglove.CompressedImage", foxglove::compressed_image_schema());
   const std::uint16_t annotations =
       schema("foxglove.ImageAnnotations", foxglove::image_annotations_schema());
-  for (const std::string& name : camera_names_) {
-    channels_.push_back(w.add_channel(image, "/camera/" + topic_part(name) + "/image", "json"));
-    channels_.push_back(
-        w.add_channel(annotations, "/camera/" + topic_part(name) + "/detections", "json"));
+  for (const std::string& topic : camera_topics(camera_names_)) {
+    channels_.push_back(w.add_channel(image, topic + "/image", "json"));
+    channels_.push_back(w.add_channel(annotations, topic + "/detections", "json"));
   }
 
   const std::int64_t now = utc_now_ns();
@@ -195,14 +223,25 @@ void RunRecorder::begin_file() {
            static_cast<std::uint64_t>(now),
            static_cast<std::uint64_t>(now),
            {text(foxglove::court_scene(site_.court, now))}});
+  if (writer_) {
+    writer_->close();
+    bytes_closed_ += writer_->size();
+  }
+  writer_ = std::move(next);
+  files_begun_ = number;
+  updates_in_file_ = 0;
+  const std::lock_guard lock(mutex_);
+  counts_.files = number;
+  counts_.bytes = bytes_closed_ + writer_->size();
 }
 
 void RunRecorder::write(const Job& job) {
-  if (options_.max_mb > 0.0 && static_cast<double>(writer_->size()) >= options_.max_mb * 1e6) {
-    writer_->close();
-    bytes_closed_ += writer_->size();
+  // A file holds at least one update, however small the limit.
+  if (options_.max_mb > 0.0 && updates_in_file_ > 0 &&
+      static_cast<double>(writer_->size()) >= options_.max_mb * 1e6) {
     begin_file();
   }
+  ++updates_in_file_;
   const NavigationUpdate& u = job.update;
   const auto seq = static_cast<std::uint32_t>(u.seq);
   const auto put = [&](std::size_t channel, std::int64_t time_ns, const json& message) {
@@ -224,7 +263,10 @@ void RunRecorder::write(const Job& job) {
     const CameraView& view = job.views[k];
     if (view.frame.empty()) continue;
     std::vector<std::uint8_t> bytes;
-    cv::imencode(".jpg", view.frame, bytes, jpeg);
+    if (!cv::imencode(".jpg", view.frame, bytes, jpeg)) {
+      throw std::runtime_error("camera " + camera_names_[k] +
+                               ": the frame does not encode as JPEG");
+    }
     const std::string_view data(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     put(kFixedTopics + 2 * k, view.capture_ns,
         foxglove::compressed_image(data, camera_names_[k], view.capture_ns));
@@ -251,17 +293,6 @@ void RunRecorder::write(const Job& job) {
 RecorderCounts RunRecorder::counts() const {
   const std::lock_guard lock(mutex_);
   return counts_;
-}
-
-json RunRecorder::health() const {
-  const RecorderCounts c = counts();
-  return {{"path", options_.path.string()},
-          {"updates", c.updates},
-          {"frame_sets", c.frame_sets},
-          {"dropped", c.dropped},
-          {"files", c.files},
-          {"bytes", c.bytes},
-          {"error", c.error}};
 }
 
 }  // namespace ballsight

@@ -13,7 +13,6 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <thread>
@@ -69,8 +68,6 @@ class RunRecorder {
   RunRecorder& operator=(const RunRecorder&) = delete;
 
   RecorderCounts counts() const;
-  /// {"path", "updates", "frame_sets", "dropped", "files", "bytes", "error"} for health.
-  nlohmann::json health() const;
 
  private:
   struct Job {
@@ -80,7 +77,7 @@ class RunRecorder {
   void on_published(std::uint64_t seq);
   void run();
   void write(const Job& job);
-  void begin_file();
+  void begin_file();  // closes the current file, if any, once the next one is begun
 
   NavigationHub& hub_;
   const CourtService& service_;
@@ -93,11 +90,14 @@ class RunRecorder {
   std::deque<Job> queue_;
   RecorderCounts counts_;
   bool stopping_ = false;
-  std::uint64_t frame_sets_seen_ = 0;  // frame sets published, every Nth recorded
+  std::int64_t last_capture_ns_ = 0;   // of the last update queued
+  std::uint64_t frame_sets_seen_ = 0;  // the frames of every Nth are recorded
 
   // The writer thread's own.
   std::unique_ptr<mcap::McapWriter> writer_;
   std::vector<std::uint16_t> channels_;
+  std::uint64_t files_begun_ = 0;
+  std::uint64_t updates_in_file_ = 0;
   std::uint64_t bytes_closed_ = 0;      // in the files before this one
   std::uint64_t dropped_recorded_ = 0;  // the drops the last /recorder message told
 
