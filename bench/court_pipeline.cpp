@@ -13,58 +13,15 @@
 #include <opencv2/core.hpp>
 
 #include "ballsight/detect/court_detector.hpp"
-#include "ballsight/eval/court_eval_calibration.hpp"
-#include "ballsight/pipeline/site_setup.hpp"
-#include "ballsight/sim/court_renderer.hpp"
-#include "ballsight/sim/court_rig.hpp"
-#include "ballsight/sim/court_scenario.hpp"
-#include "ballsight/sim/tennis_court.hpp"
 #include "ballsight/world/court_world.hpp"
+#include "court_frames.hpp"
 
 namespace {
 
 using namespace ballsight;
-
-struct Setup {
-  std::vector<FieldCamera> cameras;
-  FrameSet frames;
-  BallsightPipelineOptions options;  // the simulated site's: the court's marker colours
-};
-
-// 40 balls (a quarter in clusters, some by the robot), the weather of scene 7, noise: rendered
-// once per court surface.
-Setup render_setup(sim::CourtSurface surface, bool obstacles = false) {
-  cv::setNumThreads(1);
-  sim::TennisCourtSpec court;
-  sim::set_court_surface(court, surface);
-  sim::CourtRigOptions report_cameras;
-  report_cameras.width = sim::kReportCameraWidth;
-  report_cameras.height = sim::kReportCameraHeight;
-  const sim::CourtRig rig = sim::make_court_rig(court, report_cameras, 1);
-  sim::CourtScenarioOptions options;
-  options.ball_count = 40;
-  if (obstacles) options.obstacles.people = options.obstacles.bags = 1;
-  const sim::CourtScene scene = sim::make_court_scene(rig.court, options, 7);
-  Setup out;
-  out.options = ballsight_options_for_site(simulated_site(rig));
-  for (const sim::CourtCamera& camera : rig.cameras) {
-    const sim::CourtRenderer renderer(camera, rig.court);
-    out.cameras.push_back({camera.camera, camera.camera_from_field});
-    out.frames.cameras.push_back(
-        {out.frames.cameras.size(), renderer.render(scene, 3).bgr, 0, 0, {}});
-    if (obstacles) {
-      cv::Mat empty = renderer.lit_background(scene.lighting, scene.leaves);
-      sim::apply_image_effects(empty, scene.effects, 11);
-      out.options.empty_court.push_back(empty);
-    }
-  }
-  return out;
-}
-
-const Setup& setup() {
-  static const Setup s = render_setup(sim::CourtSurface::green);
-  return s;
-}
+using bench::render_setup;
+using bench::Setup;
+using bench::setup;
 
 void run_frame_sets(benchmark::State& state, CourtPipeline& pipeline, const Setup& s = setup()) {
   for (auto _ : state) benchmark::DoNotOptimize(pipeline.process(s.frames));

@@ -1,56 +1,17 @@
 #include "ballsight/service/run_recorder.hpp"
 
 #include <algorithm>
-#include <cctype>
-#include <opencv2/imgcodecs.hpp>
 
 #include "ballsight/core/error.hpp"
-#include "ballsight/core/file_io.hpp"
-#include "ballsight/core/utc_clock.hpp"
-#include "ballsight/record/mcap_writer.hpp"
-#include "ballsight/service/foxglove_messages.hpp"
-#include "ballsight/service/navigation_json.hpp"
 
 namespace ballsight {
 namespace {
-
-using nlohmann::json;
-
-std::string text(const json& j) {
-  return j.dump(-1, ' ', false, json::error_handler_t::replace);
-}
 
 /// The n-th file of a recording (from 1): FILE.mcap, FILE-2.mcap, ...
 std::filesystem::path numbered(const std::filesystem::path& first, std::uint64_t n) {
   if (n == 1) return first;
   return first.parent_path() /
          (first.stem().string() + "-" + std::to_string(n) + first.extension().string());
-}
-
-/// Each camera's topic prefix, "/camera/NAME" with the name's letters, digits and '_' (others
-/// become '_': "camera 0" -> "camera_0"), made unique by its index where two would be the same.
-std::vector<std::string> camera_topics(const std::vector<std::string>& names) {
-  std::vector<std::string> topics;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    std::string topic = "/camera/";
-    for (const char c : names[k]) {
-      topic += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
-    }
-    if (std::find(topics.begin(), topics.end(), topic) != topics.end()) {
-      topic += '_';
-      topic += std::to_string(k);
-    }
-    topics.push_back(topic);
-  }
-  return topics;
-}
-
-enum Topic : std::size_t { kNavigation, kBalls, kRobot, kRoute, kCourt, kRecorder, kFixedTopics };
-
-json recorder_status_schema() {
-  const json integer{{"type", "integer"}};
-  return {{"type", "object"},
-          {"properties", {{"updates", integer}, {"frame_sets", integer}, {"dropped", integer}}}};
 }
 
 }  // namespace
@@ -68,7 +29,8 @@ RunRecorder::RunRecorder(NavigationHub& hub, const CourtService& service, Record
       service_(service),
       options_(std::move(options)),
       camera_names_(service.camera_names()),
-      site_(service.site()) {
+      run_{hub.service_id(),     camera_names_,        service.site(),
+           options_.frame_every, options_.compression, options_.jpeg_quality} {
   options_.validate();
   begin_file();
   thread_ = std::thread([this] { run(); });
@@ -159,121 +121,39 @@ void RunRecorder::run() {
     }
   }
   try {
-    writer_->close();
+    file_->close();
   } catch (const std::exception& e) {
     const std::lock_guard lock(mutex_);
     if (counts_.error.empty()) counts_.error = e.what();
   }
   const std::lock_guard lock(mutex_);
-  counts_.bytes = bytes_closed_ + writer_->size();
+  counts_.bytes = bytes_closed_ + file_->size();
 }
 
 void RunRecorder::begin_file() {
   const std::uint64_t number = files_begun_ + 1;
-  mcap::WriterOptions writer_options;
-  writer_options.compression = options_.compression;
-  auto next = std::make_unique<mcap::McapWriter>(numbered(options_.path, number), writer_options);
-  mcap::McapWriter& w = *next;
-  const auto schema = [&](const char* name, const json& schema_json) {
-    return w.add_schema(name, "jsonschema", text(schema_json));
-  };
-  const std::uint16_t scene = schema("foxglove.SceneUpdate", foxglove::scene_update_schema());
-  channels_ = {
-      w.add_channel(schema("ballsight.NavigationUpdate", foxglove::navigation_update_schema()),
-                    "/navigation", "json"),
-      w.add_channel(scene, "/balls", "json"),
-      w.add_channel(schema("foxglove.PoseInFrame", foxglove::pose_in_frame_schema()), "/robot_pose",
-                    "json"),
-      w.add_channel(schema("foxglove.PosesInFrame", foxglove::poses_in_frame_schema()), "/route",
-                    "json"),
-      w.add_channel(scene, "/court", "json"),
-      w.add_channel(schema("ballsight.RecorderStatus", recorder_status_schema()), "/recorder",
-                    "json")};
-  const std::uint16_t image =
-      schema("foxglove.CompressedImage", foxglove::compressed_image_schema());
-  const std::uint16_t annotations =
-      schema("foxglove.ImageAnnotations", foxglove::image_annotations_schema());
-  for (const std::string& topic : camera_topics(camera_names_)) {
-    channels_.push_back(w.add_channel(image, topic + "/image", "json"));
-    channels_.push_back(w.add_channel(annotations, topic + "/detections", "json"));
+  auto next = std::make_unique<RunFile>(numbered(options_.path, number), run_, number);
+  if (file_) {
+    file_->close();
+    bytes_closed_ += file_->size();
   }
-
-  const std::int64_t now = utc_now_ns();
-  std::string cameras;
-  for (const std::string& name : camera_names_) cameras += (cameras.empty() ? "" : ",") + name;
-  w.write_metadata({"ballsight",
-                    {{"service_id", hub_.service_id()},
-                     {"cameras", cameras},
-                     {"file", std::to_string(number)},
-                     {"frame_every", std::to_string(options_.frame_every)},
-                     {"compression", mcap::compression_name(options_.compression)}}});
-  // The site file and the cameras' calibrations, as they were when the file was begun.
-  std::vector<std::filesystem::path> files{site_.file};
-  for (const SiteCamera& camera : site_.cameras) files.push_back(camera.calibration_file);
-  for (const std::filesystem::path& file : files) {
-    if (file.empty() || !std::filesystem::is_regular_file(file)) continue;
-    w.attach({static_cast<std::uint64_t>(now),
-              0,
-              file.filename().string(),
-              "application/yaml",
-              {read_file(file)}});
-  }
-  w.write({channels_[kCourt],
-           0,
-           static_cast<std::uint64_t>(now),
-           static_cast<std::uint64_t>(now),
-           {text(foxglove::court_scene(site_.court, now))}});
-  if (writer_) {
-    writer_->close();
-    bytes_closed_ += writer_->size();
-  }
-  writer_ = std::move(next);
+  file_ = std::move(next);
   files_begun_ = number;
   updates_in_file_ = 0;
   const std::lock_guard lock(mutex_);
   counts_.files = number;
-  counts_.bytes = bytes_closed_ + writer_->size();
+  counts_.bytes = bytes_closed_ + file_->size();
 }
 
 void RunRecorder::write(const Job& job) {
   // A file holds at least one update, however small the limit.
   if (options_.max_mb > 0.0 && updates_in_file_ > 0 &&
-      static_cast<double>(writer_->size()) >= options_.max_mb * 1e6) {
+      static_cast<double>(file_->size()) >= options_.max_mb * 1e6) {
     begin_file();
   }
   ++updates_in_file_;
-  const NavigationUpdate& u = job.update;
-  const auto seq = static_cast<std::uint32_t>(u.seq);
-  const auto put = [&](std::size_t channel, std::int64_t time_ns, const json& message) {
-    writer_->write({channels_[channel],
-                    seq,
-                    static_cast<std::uint64_t>(time_ns),
-                    static_cast<std::uint64_t>(u.published_ns),
-                    {text(message)}});
-  };
-  put(kNavigation, u.published_ns, navigation_json(u, hub_.service_id(), camera_names_));
-  put(kBalls, u.capture_time_ns,
-      foxglove::balls_scene(u.world, site_.ball_radius_m, u.capture_time_ns));
-  if (const std::optional<json> robot = foxglove::robot_pose(u.world, u.capture_time_ns)) {
-    put(kRobot, u.capture_time_ns, *robot);
-  }
-  put(kRoute, u.capture_time_ns, foxglove::route_poses(u.route, u.capture_time_ns));
-  const std::vector<int> jpeg{cv::IMWRITE_JPEG_QUALITY, options_.jpeg_quality};
-  for (std::size_t k = 0; k < job.views.size(); ++k) {
-    const CameraView& view = job.views[k];
-    if (view.frame.empty()) continue;
-    std::vector<std::uint8_t> bytes;
-    if (!cv::imencode(".jpg", view.frame, bytes, jpeg)) {
-      throw std::runtime_error("camera " + camera_names_[k] +
-                               ": the frame does not encode as JPEG");
-    }
-    const std::string_view data(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-    put(kFixedTopics + 2 * k, view.capture_ns,
-        foxglove::compressed_image(data, camera_names_[k], view.capture_ns));
-    put(kFixedTopics + 2 * k + 1, view.capture_ns,
-        foxglove::image_annotations(view.detections, view.capture_ns));
-  }
-  std::optional<json> status;  // the drops so far, when there are new ones
+  file_->write_update(job.update, job.views);
+  std::optional<nlohmann::json> status;  // the drops so far, when there are new ones
   {
     const std::lock_guard lock(mutex_);
     ++counts_.updates;
@@ -285,9 +165,9 @@ void RunRecorder::write(const Job& job) {
                 {"dropped", counts_.dropped}};
     }
   }
-  if (status) put(kRecorder, u.published_ns, *status);
+  if (status) file_->write_status(job.update, *status);
   const std::lock_guard lock(mutex_);
-  counts_.bytes = bytes_closed_ + writer_->size();
+  counts_.bytes = bytes_closed_ + file_->size();
 }
 
 RecorderCounts RunRecorder::counts() const {

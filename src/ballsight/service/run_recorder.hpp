@@ -22,12 +22,9 @@
 #include "ballsight/service/camera_view.hpp"
 #include "ballsight/service/court_service.hpp"
 #include "ballsight/service/navigation_hub.hpp"
+#include "ballsight/service/run_file.hpp"
 
 namespace ballsight {
-
-namespace mcap {
-class McapWriter;
-}
 
 struct RecordOptions {
   std::filesystem::path path;
@@ -83,7 +80,7 @@ class RunRecorder {
   const CourtService& service_;
   const RecordOptions options_;
   const std::vector<std::string> camera_names_;
-  const Site site_;
+  const RunDescription run_;
 
   mutable std::mutex mutex_;  // guards the queue, the counts and stopping_
   std::condition_variable wake_;
@@ -94,8 +91,7 @@ class RunRecorder {
   std::uint64_t frame_sets_seen_ = 0;  // the frames of every Nth are recorded
 
   // The writer thread's own.
-  std::unique_ptr<mcap::McapWriter> writer_;
-  std::vector<std::uint16_t> channels_;
+  std::unique_ptr<RunFile> file_;
   std::uint64_t files_begun_ = 0;
   std::uint64_t updates_in_file_ = 0;
   std::uint64_t bytes_closed_ = 0;      // in the files before this one

@@ -1,0 +1,62 @@
+#pragma once
+// One MCAP file of a recorded run (docs/recording.md): what a file holds and how a navigation
+// update and its frame set become its messages. The recorder (run_recorder.hpp) decides what goes
+// in and when, on a thread of its own; this is the encoding (JPEG, JSON) and the writing.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ballsight/record/compression.hpp"
+#include "ballsight/service/camera_view.hpp"
+#include "ballsight/service/navigation_hub.hpp"
+#include "ballsight/world/site.hpp"
+
+namespace ballsight {
+
+namespace mcap {
+class McapWriter;
+}
+
+/// What every file of a run says about it.
+struct RunDescription {
+  std::string service_id;
+  std::vector<std::string> camera_names;
+  Site site;  // its court and ball size; its files, when it has them, become attachments
+  int frame_every = 1;
+  mcap::Compression compression = mcap::Compression::zstd;
+  int jpeg_quality = 85;
+};
+
+class RunFile {
+ public:
+  /// Creates `path` (the run's file `number`, from 1) with its schemas, channels, metadata,
+  /// attachments and the court. Throws InputError naming the path when it cannot be created.
+  RunFile(const std::filesystem::path& path, const RunDescription& run, std::uint64_t number);
+  ~RunFile();
+  RunFile(const RunFile&) = delete;
+  RunFile& operator=(const RunFile&) = delete;
+
+  /// `update`, and the frames and detections of `views` (one per camera; an empty frame: none).
+  /// Throws std::runtime_error naming the path when the disk refuses it.
+  void write_update(const NavigationUpdate& update, const std::vector<CameraView>& views);
+  /// The recorder's `status` (its counts) at `update`'s publish time, on /recorder.
+  void write_status(const NavigationUpdate& update, const nlohmann::json& status);
+  /// Writes the summary and the footer (mcap::McapWriter::close).
+  void close();
+  /// Bytes so far (the open chunk's included).
+  std::uint64_t size() const;
+
+ private:
+  void put(std::size_t channel, std::uint32_t seq, std::int64_t time_ns, std::int64_t publish_ns,
+           const nlohmann::json& message);
+
+  const RunDescription& run_;
+  std::unique_ptr<mcap::McapWriter> writer_;
+  std::vector<std::uint16_t> channels_;
+};
+
+}  // namespace ballsight
