@@ -11,6 +11,7 @@
 #include "ballsight/core/base64.hpp"
 #include "ballsight/core/error.hpp"
 #include "ballsight/record/mcap_info.hpp"
+#include "ballsight/service/navigation_json.hpp"
 #include "file_size_limit.hpp"
 #include "service/running_service.hpp"
 #include "temp_dir.hpp"
@@ -76,6 +77,13 @@ TEST(RunRecorder, EveryUpdateAndFrameSetIsInTheFile) {
   EXPECT_EQ(topics["/balls"].size(), counts.updates);
   EXPECT_EQ(topics["/route"].size(), counts.updates);
   EXPECT_EQ(topics["/court"].size(), 1u);
+  // The health once a second of publish time (the run lasts less than a few seconds), and the
+  // clients' reports when they change: none were made, so once.
+  ASSERT_GE(topics["/health"].size(), 1u);
+  EXPECT_LE(topics["/health"].size(), 1 + counts.updates / 10);
+  EXPECT_TRUE(topics["/health"][0].contains("frame_sets")) << topics["/health"][0];
+  ASSERT_EQ(topics["/robot/reports"].size(), 1u);
+  EXPECT_EQ(topics["/robot/reports"][0]["collected"].size(), 0u);
   // Camera 0's frames decode to the camera's image, with its detections beside them.
   const std::vector<nlohmann::json>& images = topics["/camera/camera_0/image"];
   ASSERT_EQ(images.size(), counts.frame_sets);
@@ -118,6 +126,43 @@ TEST(RunRecorder, EveryNthFrameSetAndFilesSplitBySize) {
   EXPECT_EQ(navigation, counts.updates);
   EXPECT_EQ(images, counts.frame_sets);
   EXPECT_EQ(bytes, counts.bytes);
+}
+
+// A robot's report (a ball collected, its basket) goes into the file with the next update.
+TEST(RunRecorder, ClientReportsAreRecordedWhenTheyChange) {
+  const test::TempDir dir;
+  RecordOptions options;
+  options.path = dir / "run.mcap";
+  options.queue = 10'000;
+  options.frame_every = 0;
+  std::optional<RunRecorder> recorder;
+  test::RunningService running(small_court(),
+                               [&](SimulatedCourtService& service, NavigationHub& hub) {
+                                 recorder.emplace(hub, service, options);
+                               });
+  ASSERT_TRUE(test::wait_until([&] { return running.hub.latest_seq() >= 3; }));
+  running.hub.add_collected({Vec2(1.25, -2.5)});
+  running.hub.set_basket(3);
+  const std::uint64_t reported_at = running.hub.latest_seq();
+  ASSERT_TRUE(test::wait_until([&] { return running.hub.latest_seq() >= reported_at + 3; }));
+  {
+    const test::Deadline deadline("stopping the service and finishing the recording");
+    running.stop_and_join();
+    recorder->finish();
+  }
+  const std::vector<nlohmann::json> reports = messages_by_topic(options.path)["/robot/reports"];
+  ASSERT_GE(reports.size(), 2u);
+  EXPECT_TRUE(reports.front()["basket"].is_null());
+  EXPECT_EQ(reports.back()["basket"]["held"], 3);
+  // (The collected ball is forgotten once frames captured after the report are fused, before
+  // the next update: its JSON is checked on a value.)
+  ClientReports value;
+  value.collected = {Vec2(1.25, -2.5)};
+  value.unreachable = {{Vec2(0.5, 1.0), "behind the net post"}};
+  const nlohmann::json j = client_reports_json(value);
+  EXPECT_EQ(j["collected"], nlohmann::json::parse("[[1.25, -2.5]]"));
+  EXPECT_EQ(j["unreachable"][0]["reason"], "behind the net post");
+  EXPECT_TRUE(j["robot"].is_null());
 }
 
 // The disk fills up mid-run: the recording stops with the error, the file reads as cut short,

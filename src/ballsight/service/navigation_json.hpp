@@ -15,4 +15,9 @@ namespace ballsight {
 nlohmann::json navigation_json(const NavigationUpdate& update, const std::string& service_id,
                                const std::vector<std::string>& camera_names);
 
+/// What clients reported (ClientReports): {"robot": {"x_m", "y_m", "heading_rad", "set_ns"} or
+/// null, "balls": {"count", "set_ns"} or null, "collected": [[x, y], ...], "basket": {"held",
+/// "set_ns"} or null, "unreachable": [{"x_m", "y_m", "reason"}]}.
+nlohmann::json client_reports_json(const ClientReports& reports);
+
 }  // namespace ballsight

@@ -37,7 +37,22 @@ std::vector<std::string> camera_topics(const std::vector<std::string>& names) {
   return topics;
 }
 
-enum Topic : std::size_t { kNavigation, kBalls, kRobot, kRoute, kCourt, kRecorder, kFixedTopics };
+enum Topic : std::size_t {
+  kNavigation,
+  kBalls,
+  kRobot,
+  kRoute,
+  kCourt,
+  kRecorder,
+  kReports,
+  kHealth,
+  kFixedTopics
+};
+
+/// A JSON object whose fields the docs list (docs/recording.md).
+json object_schema() {
+  return {{"type", "object"}};
+}
 
 json recorder_status_schema() {
   const json integer{{"type", "integer"}};
@@ -67,7 +82,9 @@ RunFile::RunFile(const std::filesystem::path& path, const RunDescription& run, s
                     "json"),
       w.add_channel(scene, "/court", "json"),
       w.add_channel(schema("ballsight.RecorderStatus", recorder_status_schema()), "/recorder",
-                    "json")};
+                    "json"),
+      w.add_channel(schema("ballsight.ClientReports", object_schema()), "/robot/reports", "json"),
+      w.add_channel(schema("ballsight.Health", object_schema()), "/health", "json")};
   const std::uint16_t image =
       schema("foxglove.CompressedImage", foxglove::compressed_image_schema());
   const std::uint16_t annotations =
@@ -140,9 +157,12 @@ void RunFile::write_update(const NavigationUpdate& u, const std::vector<CameraVi
   }
 }
 
-void RunFile::write_status(const NavigationUpdate& update, const json& status) {
-  put(kRecorder, static_cast<std::uint32_t>(update.seq), update.published_ns, update.published_ns,
-      status);
+void RunFile::write_side(Side topic, const NavigationUpdate& update, const json& message) {
+  const Topic channel = topic == Side::recorder  ? kRecorder
+                        : topic == Side::reports ? kReports
+                                                 : kHealth;
+  put(channel, static_cast<std::uint32_t>(update.seq), update.published_ns, update.published_ns,
+      message);
 }
 
 void RunFile::close() {

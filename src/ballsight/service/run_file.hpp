@@ -43,8 +43,11 @@ class RunFile {
   /// `update`, and the frames and detections of `views` (one per camera; an empty frame: none).
   /// Throws std::runtime_error naming the path when the disk refuses it.
   void write_update(const NavigationUpdate& update, const std::vector<CameraView>& views);
-  /// The recorder's `status` (its counts) at `update`'s publish time, on /recorder.
-  void write_status(const NavigationUpdate& update, const nlohmann::json& status);
+  /// What goes beside the updates, now and then: the recorder's counts (/recorder), what the
+  /// robot and other clients reported (/robot/reports), the service's health (/health).
+  enum class Side { recorder, reports, health };
+  /// `message` on the side topic, at `update`'s publish time and with its seq.
+  void write_side(Side topic, const NavigationUpdate& update, const nlohmann::json& message);
   /// Writes the summary and the footer (mcap::McapWriter::close).
   void close();
   /// Bytes so far (the open chunk's included).

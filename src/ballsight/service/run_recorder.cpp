@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/service/navigation_json.hpp"
 
 namespace ballsight {
 namespace {
@@ -95,9 +96,10 @@ void RunRecorder::on_published(std::uint64_t seq) {
                    [](const CameraView& v) { return !v.frame.empty(); })) {
     views.clear();
   }
+  ClientReports reports = hub_.reports();
   const std::lock_guard lock(mutex_);
   if (full()) return;  // another publishing thread filled it meanwhile
-  queue_.push_back({std::move(*update), std::move(views)});
+  queue_.push_back({std::move(*update), std::move(views), std::move(reports)});
   wake_.notify_one();
 }
 
@@ -140,6 +142,8 @@ void RunRecorder::begin_file() {
   file_ = std::move(next);
   files_begun_ = number;
   updates_in_file_ = 0;
+  reports_recorded_.clear();
+  health_recorded_ns_ = 0;
   const std::lock_guard lock(mutex_);
   counts_.files = number;
   counts_.bytes = bytes_closed_ + file_->size();
@@ -152,7 +156,17 @@ void RunRecorder::write(const Job& job) {
     begin_file();
   }
   ++updates_in_file_;
-  file_->write_update(job.update, job.views);
+  const NavigationUpdate& u = job.update;
+  file_->write_update(u, job.views);
+  const nlohmann::json reports = client_reports_json(job.reports);
+  if (std::string text = reports.dump(); text != reports_recorded_) {
+    file_->write_side(RunFile::Side::reports, u, reports);
+    reports_recorded_ = std::move(text);
+  }
+  if (u.published_ns - health_recorded_ns_ >= 1'000'000'000) {
+    file_->write_side(RunFile::Side::health, u, service_.health());
+    health_recorded_ns_ = u.published_ns;
+  }
   std::optional<nlohmann::json> status;  // the drops so far, when there are new ones
   {
     const std::lock_guard lock(mutex_);
@@ -165,7 +179,7 @@ void RunRecorder::write(const Job& job) {
                 {"dropped", counts_.dropped}};
     }
   }
-  if (status) file_->write_status(job.update, *status);
+  if (status) file_->write_side(RunFile::Side::recorder, u, *status);
   const std::lock_guard lock(mutex_);
   counts_.bytes = bytes_closed_ + file_->size();
 }

@@ -5,7 +5,8 @@
 // are shared, never written after capture) into a bounded queue; a thread of the recorder's own
 // encodes (JPEG, JSON) and writes. When the queue is full the update is dropped and counted, never
 // waited for; a write that fails (a full disk) ends the recording with its error, and the service
-// goes on. docs/recording.md lists the topics.
+// goes on. The service's health is recorded once a second, the clients' reports when they change.
+// docs/recording.md lists the topics.
 
 #include <condition_variable>
 #include <cstdint>
@@ -70,6 +71,7 @@ class RunRecorder {
   struct Job {
     NavigationUpdate update;
     std::vector<CameraView> views;  // the frame set's, when its frames are recorded
+    ClientReports reports;          // what clients had reported when it was published
   };
   void on_published(std::uint64_t seq);
   void run();
@@ -94,8 +96,10 @@ class RunRecorder {
   std::unique_ptr<RunFile> file_;
   std::uint64_t files_begun_ = 0;
   std::uint64_t updates_in_file_ = 0;
-  std::uint64_t bytes_closed_ = 0;      // in the files before this one
-  std::uint64_t dropped_recorded_ = 0;  // the drops the last /recorder message told
+  std::uint64_t bytes_closed_ = 0;       // in the files before this one
+  std::uint64_t dropped_recorded_ = 0;   // the drops the last /recorder message told
+  std::string reports_recorded_;         // the last /robot/reports message in this file
+  std::int64_t health_recorded_ns_ = 0;  // the last /health message's time in this file
 
   int listener_ = 0;
   std::thread thread_;
