@@ -8,6 +8,8 @@
 //   parsed at a client (`serve --sim` flat out); target p50 <= 15 ms on the 2-core machine.
 // - BM_WholeChain/at_10_hz: the same with the frame sets at the cameras' 10 Hz (30 s); target
 //   p99 <= 10 ms, from the capture time the update carries.
+// - BM_WholeChain/at_10_hz_recorded: the same while a RunRecorder writes every update and frame
+//   set into an MCAP file (issue 45: capture -> publish p99 unchanged).
 // - BM_WholeChainReplayed: the chain without the simulator beside it: ten frame sets of the
 //   simulated court rendered first, then replayed at 10 Hz (30 s), each stamped as captured when
 //   it is handed over, as a camera delivers a frame; the same target.
@@ -26,6 +28,7 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
+#include <filesystem>
 #include <functional>
 #include <thread>
 
@@ -36,6 +39,7 @@
 #include "ballsight/pipeline/court_pipeline.hpp"
 #include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/service/court_service.hpp"
+#include "ballsight/service/run_recorder.hpp"
 #include "ballsight/service/simulated_court.hpp"
 #include "ballsight/service/simulated_service.hpp"
 
@@ -222,15 +226,25 @@ void measure_chain(benchmark::State& state, ApiContext& context,
   state.counters["plan_ms"] = health()["plan_ms"].get<double>();
 }
 
-void BM_WholeChain(benchmark::State& state, bool at_10_hz) {
+void BM_WholeChain(benchmark::State& state, bool at_10_hz, bool recorded = false) {
   SimulatedServiceOptions options;
   options.realtime = at_10_hz;  // frame sets at the cameras' 10 Hz, not one after the other
   SimulatedCourtService simulated(options);
   NavigationHub hub;
   ApiContext context = api_context(simulated, hub);
+  std::unique_ptr<RunRecorder> recorder;  // every update and frame set into an MCAP file
+  RecordOptions record;
+  record.path = std::filesystem::temp_directory_path() / "ballsight_bench_chain.mcap";
+  if (recorded) recorder = std::make_unique<RunRecorder>(hub, simulated, record);
   measure_chain(
       state, context, [&](const std::atomic<bool>& stop) { simulated.run(hub, stop); },
       [&] { return simulated.health(); });
+  if (recorder) {
+    const RecorderCounts counts = recorder->finish();
+    state.counters["recorded"] = static_cast<double>(counts.updates);
+    state.counters["dropped"] = static_cast<double>(counts.dropped);
+    std::filesystem::remove(record.path);
+  }
 }
 // The service's chain alone: what `serve --site` does with frames its cameras deliver.
 void BM_WholeChainReplayed(benchmark::State& state) {
@@ -265,6 +279,12 @@ BENCHMARK_CAPTURE(BM_WholeChain, flat_out, false)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK_CAPTURE(BM_WholeChain, at_10_hz, true)
+    ->Iterations(300)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+// The same while the run is recorded (serve --sim --record): issue 45's "no change in capture ->
+// publish p99".
+BENCHMARK_CAPTURE(BM_WholeChain, at_10_hz_recorded, true, true)
     ->Iterations(300)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
