@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <set>
 
 namespace ballsight::mcap {
 namespace {
@@ -60,12 +59,6 @@ nlohmann::json mcap_info(const McapReader& reader) {
   nlohmann::json metadata = nlohmann::json::array();
   for (const Metadata& m : data.metadata)
     metadata.push_back({{"name", m.name}, {"values", m.metadata}});
-  std::set<std::string> compressions;
-  if (reader.summary()) {
-    for (const ChunkIndex& index : reader.summary()->chunk_indexes) {
-      compressions.insert(index.compression.empty() ? "none" : index.compression);
-    }
-  }
   return {{"library", reader.header().library},
           {"profile", reader.header().profile},
           {"closed", reader.closed()},
@@ -73,7 +66,7 @@ nlohmann::json mcap_info(const McapReader& reader) {
           {"cut", data.cut},
           {"messages", counted.message_count},
           {"chunks", data.chunk_count},
-          {"compressions", compressions},
+          {"compressions", data.compressions},
           {"start_ns", counted.message_start_time},
           {"end_ns", counted.message_end_time},
           {"channels", channels},

@@ -191,6 +191,7 @@ void McapReader::read_chunk(const RawRecord& record, DataSection& found,
     require(chunk.uncompressed_crc == 0 || chunk.uncompressed_crc == crc32(0, records), where,
             "the chunk's CRC does not match");
     ++found.chunk_count;
+    found.compressions.insert(chunk.compression.empty() ? "none" : chunk.compression);
   } else {
     records = std::string(record.content);
   }

@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,9 +44,10 @@ struct DataSection {
   std::vector<Metadata> metadata;
   std::uint64_t message_count = 0;
   std::uint64_t chunk_count = 0;
-  bool complete = false;      // the data end record was reached
-  std::uint64_t read_to = 0;  // the byte after the last record read
-  std::string cut;            // why reading stopped early ("" when complete)
+  std::set<std::string> compressions;  // of the chunks read ("none" for uncompressed ones)
+  bool complete = false;               // the data end record was reached
+  std::uint64_t read_to = 0;           // the byte after the last record read
+  std::string cut;                     // why reading stopped early ("" when complete)
 };
 
 class McapReader {
