@@ -7,10 +7,6 @@
 
 namespace ballsight {
 
-std::string json_text(const nlohmann::json& j) {
-  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-}
-
 ApiResponse api_error(int status, const std::string& what, const std::string& where) {
   return {status, json_text(nlohmann::json{{"error", what}, {"where", where}})};
 }

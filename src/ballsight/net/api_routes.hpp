@@ -17,6 +17,8 @@
 #include <variant>
 #include <vector>
 
+#include "ballsight/core/json_text.hpp"
+
 namespace ballsight {
 
 struct ApiRequest {
@@ -39,10 +41,6 @@ struct ApiResponse {
   std::function<std::optional<ApiResponse>()> retry;
   std::chrono::milliseconds wait{0};
 };
-
-/// `j` as JSON text; bytes that are not UTF-8 (a client's, a camera's message) become U+FFFD
-/// instead of an exception.
-std::string json_text(const nlohmann::json& j);
 
 /// The 4xx/5xx answer {"error": what, "where": where}.
 ApiResponse api_error(int status, const std::string& what, const std::string& where);

@@ -1,5 +1,6 @@
 #include "ballsight/record/mcap_format.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "ballsight/core/checksum.hpp"
@@ -134,6 +135,14 @@ R parse_record(std::string_view content, const std::string& where) {
             "the CRC does not match the attachment \"" + record.name + "\"");
   }
   return record;
+}
+
+void Statistics::count(const Message& message) {
+  if (message_count == 0) message_start_time = message_end_time = message.log_time;
+  ++message_count;
+  ++channel_message_counts[message.channel_id];
+  message_start_time = std::min(message_start_time, message.log_time);
+  message_end_time = std::max(message_end_time, message.log_time);
 }
 
 bool next_record(std::string_view bytes, std::uint64_t& offset, RawRecord& record) {

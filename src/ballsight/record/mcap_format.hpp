@@ -199,6 +199,8 @@ struct Statistics {
   std::uint64_t message_end_time = 0;
   ChannelCounts channel_message_counts;
   bool operator==(const Statistics&) const = default;
+  /// Counts `message` in: its channel's count, the total and the time span.
+  void count(const Message& message);
   template <class F, class R>
   static void fields(F& f, R& r) {
     f(r.message_count), f(r.schema_count), f(r.channel_count), f(r.attachment_count),

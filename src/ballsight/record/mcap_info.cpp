@@ -1,8 +1,5 @@
 #include "ballsight/record/mcap_info.hpp"
 
-#include <algorithm>
-#include <limits>
-
 namespace ballsight::mcap {
 namespace {
 
@@ -31,14 +28,8 @@ std::string check_summary(const Summary& summary, const DataSection& data,
 
 nlohmann::json mcap_info(const McapReader& reader) {
   Statistics counted;
-  counted.message_start_time = std::numeric_limits<std::uint64_t>::max();
-  const DataSection data = reader.read([&](const Channel& channel, const Message& message) {
-    ++counted.message_count;
-    ++counted.channel_message_counts[channel.id];
-    counted.message_start_time = std::min(counted.message_start_time, message.log_time);
-    counted.message_end_time = std::max(counted.message_end_time, message.log_time);
-  });
-  if (counted.message_count == 0) counted.message_start_time = 0;
+  const DataSection data =
+      reader.read([&](const Channel&, const Message& message) { counted.count(message); });
 
   nlohmann::json channels = nlohmann::json::array();
   for (const auto& [id, channel] : data.channels) {

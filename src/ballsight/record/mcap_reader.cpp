@@ -154,7 +154,7 @@ DataSection McapReader::read(const MessageCallback& on_message) const {
       case Op::schema:
       case Op::channel:
       case Op::message:
-        read_chunk(RawRecord{record.op, whole(record, bytes_), record_at}, found, on_message);
+        read_records(whole(record, bytes_), where_ + ": byte ", record_at, found, on_message);
         break;
       case Op::chunk:
         read_chunk(record, found, on_message);
@@ -175,30 +175,31 @@ DataSection McapReader::read(const MessageCallback& on_message) const {
   return found;
 }
 
-/// A chunk's records (or, with a schema, channel or message op, that one record as it stands in
-/// the data section).
 void McapReader::read_chunk(const RawRecord& record, DataSection& found,
                             const MessageCallback& on_message) const {
   const std::string where = at(where_, record.offset);
-  std::string records;
-  if (record.op == Op::chunk) {
-    const Chunk chunk = parse_record<Chunk>(record.content, where);
-    require(chunk.uncompressed_size <= limits_.max_chunk_bytes, where,
-            "a chunk of " + std::to_string(chunk.uncompressed_size) + " bytes (at most " +
-                std::to_string(limits_.max_chunk_bytes) + " are read)");
-    records = decompress(chunk.compression, chunk.records.bytes, chunk.uncompressed_size,
-                         where + " (chunk)");
-    require(chunk.uncompressed_crc == 0 || chunk.uncompressed_crc == crc32(0, records), where,
-            "the chunk's CRC does not match");
-    ++found.chunk_count;
-    found.compressions.insert(chunk.compression.empty() ? "none" : chunk.compression);
-  } else {
-    records = std::string(record.content);
-  }
+  const Chunk chunk = parse_record<Chunk>(record.content, where);
+  require(chunk.uncompressed_size <= limits_.max_chunk_bytes, where,
+          "a chunk of " + std::to_string(chunk.uncompressed_size) + " bytes (at most " +
+              std::to_string(limits_.max_chunk_bytes) + " are read)");
+  const std::string records = decompress(chunk.compression, chunk.records.bytes,
+                                         chunk.uncompressed_size, where + " (chunk)");
+  require(chunk.uncompressed_crc == 0 || chunk.uncompressed_crc == crc32(0, records), where,
+          "the chunk's CRC does not match");
+  ++found.chunk_count;
+  found.compressions.insert(chunk.compression.empty() ? "none" : chunk.compression);
+  read_records(records, where + ", chunk byte ", 0, found, on_message);
+}
+
+/// Schema, channel and message records, a chunk's or one standing in the data section; `where`
+/// followed by `base` plus a record's offset in `records` names it.
+void McapReader::read_records(std::string_view records, const std::string& where,
+                              std::uint64_t base, DataSection& found,
+                              const MessageCallback& on_message) const {
   std::uint64_t offset = 0;
   RawRecord inner;
   while (offset < records.size()) {
-    const std::string inner_where = where + ", chunk byte " + std::to_string(offset);
+    const std::string inner_where = where + std::to_string(base + offset);
     require(next_record(records, offset, inner), inner_where, "a record is cut short");
     if (inner.op == Op::schema) {
       const Schema schema = parse_record<Schema>(inner.content, inner_where);

@@ -73,6 +73,8 @@ class McapReader {
   void read_footer();
   void read_chunk(const RawRecord& record, DataSection& found,
                   const MessageCallback& on_message) const;
+  void read_records(std::string_view records, const std::string& where, std::uint64_t base,
+                    DataSection& found, const MessageCallback& on_message) const;
 
   std::shared_ptr<const void> mapping_;  // the mapped file, when opened from a path
   std::string_view bytes_;

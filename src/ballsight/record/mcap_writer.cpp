@@ -99,13 +99,7 @@ void McapWriter::write(const Message& message) {
   chunk_index_entries_[message.channel_id].emplace_back(message.log_time, chunk_records_.size());
   append_record(chunk_records_, message);
 
-  if (statistics_.message_count == 0) {
-    statistics_.message_start_time = statistics_.message_end_time = message.log_time;
-  }
-  ++statistics_.message_count;
-  ++statistics_.channel_message_counts[message.channel_id];
-  statistics_.message_start_time = std::min(statistics_.message_start_time, message.log_time);
-  statistics_.message_end_time = std::max(statistics_.message_end_time, message.log_time);
+  statistics_.count(message);
   if (chunk_records_.size() >= options_.chunk_size ||
       chunk_end_time_ - chunk_start_time_ >= options_.chunk_duration_ns) {
     flush_chunk();

@@ -5,6 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "ballsight/core/file_io.hpp"
+#include "ballsight/core/json_text.hpp"
 #include "ballsight/core/utc_clock.hpp"
 #include "ballsight/record/mcap_writer.hpp"
 #include "ballsight/service/foxglove_messages.hpp"
@@ -14,10 +15,6 @@ namespace ballsight {
 namespace {
 
 using nlohmann::json;
-
-std::string text(const json& j) {
-  return j.dump(-1, ' ', false, json::error_handler_t::replace);
-}
 
 /// Each camera's topic prefix, "/camera/NAME" with the name's letters, digits and '_' (others
 /// become '_': "camera 0" -> "camera_0"), made unique by its index where two would be the same.
@@ -69,7 +66,7 @@ RunFile::RunFile(const std::filesystem::path& path, const RunDescription& run, s
   writer_ = std::make_unique<mcap::McapWriter>(path, options);
   mcap::McapWriter& w = *writer_;
   const auto schema = [&](const char* name, const json& schema_json) {
-    return w.add_schema(name, "jsonschema", text(schema_json));
+    return w.add_schema(name, "jsonschema", json_text(schema_json));
   };
   const std::uint16_t scene = schema("foxglove.SceneUpdate", foxglove::scene_update_schema());
   channels_ = {
@@ -125,7 +122,7 @@ void RunFile::put(std::size_t channel, std::uint32_t seq, std::int64_t time_ns,
                   seq,
                   static_cast<std::uint64_t>(time_ns),
                   static_cast<std::uint64_t>(publish_ns),
-                  {text(message)}});
+                  {json_text(message)}});
 }
 
 void RunFile::write_update(const NavigationUpdate& u, const std::vector<CameraView>& views) {

@@ -26,12 +26,12 @@ void RecordOptions::validate() const {
 }
 
 RunRecorder::RunRecorder(NavigationHub& hub, const CourtService& service, RecordOptions options)
-    : hub_(hub),
-      service_(service),
-      options_(std::move(options)),
-      camera_names_(service.camera_names()),
-      run_{hub.service_id(),     camera_names_,        service.site(),
-           options_.frame_every, options_.compression, options_.jpeg_quality} {
+    : hub_(hub), service_(service), options_(std::move(options)), run_{hub.service_id(),
+                                                                       service.camera_names(),
+                                                                       service.site(),
+                                                                       options_.frame_every,
+                                                                       options_.compression,
+                                                                       options_.jpeg_quality} {
   options_.validate();
   begin_file();
   thread_ = std::thread([this] { run(); });
@@ -83,7 +83,7 @@ void RunRecorder::on_published(std::uint64_t seq) {
              frame_sets_seen_++ % static_cast<std::uint64_t>(options_.frame_every) == 0;
   }
   std::vector<CameraView> views;
-  for (std::size_t k = 0; frames && k < camera_names_.size(); ++k) {
+  for (std::size_t k = 0; frames && k < run_.camera_names.size(); ++k) {
     std::optional<CameraView> view = service_.camera_view(k);
     if (!view || view->seq != seq || view->frame.empty()) {
       views.emplace_back();  // this camera gave no frame to this update

@@ -81,7 +81,6 @@ class RunRecorder {
   NavigationHub& hub_;
   const CourtService& service_;
   const RecordOptions options_;
-  const std::vector<std::string> camera_names_;
   const RunDescription run_;
 
   mutable std::mutex mutex_;  // guards the queue, the counts and stopping_
