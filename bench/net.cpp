@@ -254,10 +254,8 @@ void BM_WholeChainReplayed(benchmark::State& state) {
   for (std::uint64_t tick = 0; tick < kSets; ++tick)
     for (std::size_t k = 0; k < court.cameras().size(); ++k)
       sets[tick].push_back(court.render(k, court.scene(), tick));
-  UpdatePublisher publisher(
-      court.site(),
-      make_ballsight_pipeline(court.cameras(), service_pipeline_options(court.site())),
-      PlannerOptions{});
+  UpdatePublisher publisher(court.site(), {CourtMethod::ballsight, court.cameras(), {}},
+                            PlannerOptions{});
   NavigationHub hub;
   std::vector<std::string> names;
   for (const SiteCamera& camera : court.site().cameras) names.push_back(camera.name);

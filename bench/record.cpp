@@ -42,13 +42,15 @@ const Recorded& recorded() {
   return r;
 }
 
-void record(benchmark::State& state, mcap::Compression compression, bool frames) {
+void record(benchmark::State& state, mcap::Compression compression, bool frames,
+            FrameEncoding encoding = FrameEncoding::jpeg) {
   const bench::Setup& s = bench::setup();
   RunDescription run;
   run.service_id = "bench";
   for (const SiteCamera& camera : s.site.cameras) run.camera_names.push_back(camera.name);
-  run.site = s.site;
+  run.setup.site = s.site;
   run.compression = compression;
+  run.frames = encoding;
   const std::filesystem::path path =
       std::filesystem::temp_directory_path() / "ballsight_bench_record.mcap";
   NavigationUpdate update = recorded().update;
@@ -72,15 +74,18 @@ void record(benchmark::State& state, mcap::Compression compression, bool frames)
 
 void BM_RecordUpdateWithFrames(benchmark::State& state) {
   const auto compression = static_cast<mcap::Compression>(state.range(0));
-  record(state, compression, true);
-  state.SetLabel("4 x 1920x1080 JPEG q85 + update, " + (compression == mcap::Compression::none
-                                                            ? std::string("no compression")
-                                                            : mcap::compression_name(compression)));
+  const bool png = state.range(1) != 0;
+  record(state, compression, true, png ? FrameEncoding::png : FrameEncoding::jpeg);
+  state.SetLabel(std::string(png ? "4 x 1920x1080 PNG (zlib 1)" : "4 x 1920x1080 JPEG q85") +
+                 " + update, " +
+                 (compression == mcap::Compression::none ? std::string("no compression")
+                                                         : mcap::compression_name(compression)));
 }
 BENCHMARK(BM_RecordUpdateWithFrames)
-    ->Arg(static_cast<int>(mcap::Compression::zstd))
-    ->Arg(static_cast<int>(mcap::Compression::lz4))
-    ->Arg(static_cast<int>(mcap::Compression::none))
+    ->Args({static_cast<int>(mcap::Compression::zstd), 0})
+    ->Args({static_cast<int>(mcap::Compression::lz4), 0})
+    ->Args({static_cast<int>(mcap::Compression::none), 0})
+    ->Args({static_cast<int>(mcap::Compression::zstd), 1})
     ->Unit(benchmark::kMillisecond);
 
 void BM_RecordUpdateOnly(benchmark::State& state) {

@@ -11,6 +11,10 @@ const CAMERA_PERIOD_MS = 2000; // each camera's frame, at a low rate
 const HEALTH_WAIT_MS = 250; // for the first health document, before the first frames are asked
 const MARKER_COLOURS = { ball: "#ffe14d", robot_front_marker: "#ff4d4d", robot_back_marker: "#4da3ff" };
 
+// A camera in one of these states gives no frames it should (docs/robot-link.md, the health
+// document): the site's cameras retrying or stopped, a camera node silent, a simulated camera
+// failed. Running, starting, waiting for its first frame, a file source finished, a replay: not.
+const FAILED_CAMERA_STATES = new Set(["retrying", "stopped", "silent", "failed"]);
 const state = { site: null, update: null, health: null, latencies: [], serviceId: "", seq: 0, retries: 0, live: false };
 window.ballsightDashboard = { seq: 0, balls: [], robot: null, route: null, cameras: {} };
 
@@ -43,12 +47,16 @@ function showHealth(health) {
   $("rate").textContent = `${fixed(health.frame_sets_per_s, 1)} /s`;
   $("pipeline").textContent = `${fixed(health.pipeline_ms, 1)} ms, plan ${fixed(health.plan_ms, 1)} ms`;
   $("collected").textContent = health.sim ? `${health.sim.collected} (${health.sim.balls_left} left)` : "-";
+  if (health.replay && state.live) {
+    const file = health.replay.file.split("/").pop();
+    $("connection").textContent = `live: replay of ${file}${health.replay.finished ? ", ended" : ""}`;
+  }
   const list = $("cameras");
   list.replaceChildren(
     ...(health.cameras ?? []).map((camera) => {
       const item = document.createElement("li");
       item.textContent = `${camera.name}: ${camera.state}`;
-      if (camera.state !== "ok" && camera.state !== "simulated") item.className = "failed";
+      if (FAILED_CAMERA_STATES.has(camera.state)) item.className = "failed";
       return item;
     }),
   );

@@ -53,6 +53,8 @@ void add_eval_plan_command(CLI::App& eval);
 void add_eval_loop_command(CLI::App& eval);
 /// `eval tsplib` (eval_tsplib_command.cpp), registered on the `eval` group.
 void add_eval_tsplib_command(CLI::App& eval);
+/// `eval replay` (eval_replay_command.cpp), registered on the `eval` group.
+void add_eval_replay_command(CLI::App& eval);
 /// `eval detect-real` and `eval tennis-sim` (eval_tennis_command.cpp), registered on the `eval`
 /// group.
 void add_eval_tennis_command(CLI::App& eval);

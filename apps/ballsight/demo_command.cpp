@@ -36,6 +36,7 @@ void add_demo_command(CLI::App& app) {
   cmd->add_flag("!--no-faults", args->options.loop_faults,
                 "Closed loop: skip the run with a camera failure and restarts");
   cmd->callback([args] {
+    args->options.web_dir = BALLSIGHT_WEB_DIR;
     const DemoResult result = run_demo(
         args->options, args->out, run_loop_demo,
         [](const std::string& line) { std::cout << "ballsight demo: " << line << std::endl; });

@@ -101,6 +101,9 @@ void add_eval_loop_command(CLI::App& eval) {
                   "3)");
   cmd->add_option("--record-dir", args->options.record_dir,
                   "Write each run's record of the court here (<system>-<seed>.jsonl)");
+  cmd->add_flag("--record-mcap", args->options.record_mcap,
+                "With --record-dir: also record each run for Foxglove (<system>-<seed>.mcap: "
+                "every update, the frames of every 10th frame set; docs/recording.md)");
   cmd->add_option("--min-balls", args->options.min_balls, "Balls in the first scene")
       ->capture_default_str();
   cmd->add_option("--max-balls", args->options.max_balls, "Balls in the last scene")

@@ -145,6 +145,7 @@ class DemoRun {
     out.gaps = gaps_;
     out.reconnects = reconnects_;
     out.unreachable = unreachable_;
+    out.recordings = recordings_;
     out.events = events_;  // what the demo did first, then what the court recorded of it
     out.events.insert(out.events.end(), out.truth.events.begin(), out.truth.events.end());
     std::stable_sort(out.events.begin(), out.events.end(),
@@ -163,6 +164,10 @@ class DemoRun {
                                   "--planner",    std::string(planner_name(plan_.system.planner)),
                                   "--truth-out",  (dir_ / "truth.jsonl").string(),
                                   "--duration",   std::to_string(kProcessLimitS)};
+    // The run in MCAP for Foxglove: every update, and the frames once a second of simulated
+    // time (every 10th frame set), which keeps the recorder's JPEG encoding off the loop's CPU.
+    recordings_.push_back(dir_ / ("run-" + std::to_string(services_ + 1) + ".mcap"));
+    args.insert(args.end(), {"--record", recordings_.back().string(), "--record-every", "10"});
     if (plan_.system.report_pipeline) args.push_back("--report-pipeline");
     if (plan_.faults) {
       args.insert(args.end(), {"--sim-fail-camera",
@@ -209,6 +214,7 @@ class DemoRun {
   Plan plan_;
   fs::path dir_;
   RecordFollower record_;
+  std::vector<fs::path> recordings_;
   int port_ = 0;
   int services_ = 0, robots_ = 0;
   std::unique_ptr<ChildProcess> service_, robot_;

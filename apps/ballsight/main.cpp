@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   ballsight::app::add_eval_plan_command(*eval);
   ballsight::app::add_eval_loop_command(*eval);
   ballsight::app::add_eval_tsplib_command(*eval);
+  ballsight::app::add_eval_replay_command(*eval);
   ballsight::app::add_eval_tennis_command(*eval);
   ballsight::app::add_eval_nodes_command(*eval);
   ballsight::app::add_demo_command(app);

@@ -2,6 +2,8 @@
 
 #include <iostream>
 
+#include "ballsight/core/error.hpp"
+
 namespace ballsight::app {
 
 void add_record_options(CLI::App& command, RecordArgs& args) {
@@ -18,6 +20,11 @@ void add_record_options(CLI::App& command, RecordArgs& args) {
   command.add_option("--record-compression", args.compression, "zstd, lz4 or none")
       ->capture_default_str();
   command
+      .add_option(
+          "--record-frames", args.frames,
+          "jpeg, or png: lossless, so that `eval replay` sees exactly the pipeline's frames")
+      ->capture_default_str();
+  command
       .add_option("--record-jpeg-quality", args.options.jpeg_quality,
                   "JPEG quality of the recorded frames, 1-100")
       ->capture_default_str();
@@ -28,6 +35,9 @@ std::optional<RecordOptions> record_options(const RecordArgs& args) {
   RecordOptions options = args.options;
   options.path = args.path;
   options.compression = mcap::parse_compression(args.compression, "--record-compression");
+  require(args.frames == "jpeg" || args.frames == "png", "--record-frames",
+          "expected jpeg or png, got '" + args.frames + "'");
+  options.frames = args.frames == "png" ? FrameEncoding::png : FrameEncoding::jpeg;
   options.validate();
   return options;
 }

@@ -14,6 +14,7 @@ namespace ballsight::app {
 struct RecordArgs {
   std::string path;  // "": no recording
   std::string compression = "zstd";
+  std::string frames = "jpeg";
   RecordOptions options;
 };
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/service/replay_service.hpp"
 #include "ballsight/service/simulated_service.hpp"
 #include "ballsight/service/site_service.hpp"
 #include "commands.hpp"
@@ -25,6 +26,9 @@ namespace {
 struct ServeArgs {
   bool sim = false;
   std::string site;
+  std::string replay;
+  ReplayServiceOptions replay_options;
+  bool planner_given = false;
   HttpServiceArgs http;
   std::string planner = "ballsight";
   int balls = -1;                        // simulated court: tennis balls (-1: the scenario's)
@@ -58,8 +62,8 @@ CameraOutage parse_camera_outage(const std::string& text) {
 }
 
 void run_serve(const ServeArgs& args) {
-  require(args.sim != !args.site.empty(), "--site",
-          "give the site file (--site SITE.yml) or --sim, not both");
+  require(int{args.sim} + int{!args.site.empty()} + int{!args.replay.empty()} == 1, "--site",
+          "give the site file (--site SITE.yml), --sim or --replay FILE.mcap: one of them");
   require(args.duration_s >= 0.0, "--duration", "must not be negative");
   validate(args.http);
   record_options(args.record);  // a bad option ends the command before anything starts
@@ -67,7 +71,11 @@ void run_serve(const ServeArgs& args) {
   require(kind && *kind != PlannerKind::exact, "--planner",
           "expected priority, nearest or ballsight, got '" + args.planner + "'");
   std::unique_ptr<CourtService> court;
-  if (args.sim) {
+  if (!args.replay.empty()) {
+    ReplayServiceOptions options = args.replay_options;
+    if (args.planner_given) options.planner = *kind;
+    court = std::make_unique<ReplayCourtService>(args.replay, options);
+  } else if (args.sim) {
     SimulatedServiceOptions options = args.service;
     options.planner.kind = *kind;
     if (args.balls >= 0) options.balls = args.balls;
@@ -87,7 +95,10 @@ void run_serve(const ServeArgs& args) {
 
   NavigationHub hub;
   const std::unique_ptr<RunRecorder> recorder = start_recording(args.record, hub, service);
-  HttpService http(args.http, service, hub, {args.sim, true, args.service.seed}, "ballsight serve");
+  // A replay's calibration is the recording's: like the simulator's, never saved to files.
+  const bool simulated = args.sim || !args.replay.empty();
+  HttpService http(args.http, service, hub, {simulated, true, args.service.seed},
+                   "ballsight serve");
   // A failure of the court service ends the command with its message (the server stops as it
   // goes out of scope).
   signals.run_until_stopped(args.duration_s,
@@ -108,10 +119,17 @@ void add_serve_command(CLI::App& app) {
       "model, served over HTTP (API v1, docs/robot-link.md) to the robot and any client");
   cmd->add_option("--site", args->site, "Site file: serve its cameras");
   cmd->add_flag("--sim", args->sim, "Serve the built-in simulated court (rendered frames)");
+  cmd->add_option("--replay", args->replay,
+                  "Serve a recorded run (serve --record FILE.mcap) as if live: its frames "
+                  "through this build's pipeline and planner, its robot reports");
+  cmd->add_option("--speed", args->replay_options.speed,
+                  "Replay: times the recorded pace (0: as fast as it goes)")
+      ->capture_default_str();
   add_seed_option(*cmd, args->service.seed, "Simulated court: seed of the rig and the scene");
   add_http_service_options(*cmd, args->http);
   add_record_options(*cmd, args->record);
-  cmd->add_option("--planner", args->planner, "priority, nearest or ballsight")
+  cmd->add_option("--planner", args->planner,
+                  "priority, nearest or ballsight (replay: instead of the recorded one)")
       ->capture_default_str();
   cmd->add_option("--rate", args->service.vision_hz,
                   "Simulated court: frame sets per second of simulated time")
@@ -142,7 +160,10 @@ void add_serve_command(CLI::App& app) {
                   "on (K@T), or until second U (K@T-U); may be given several times");
   cmd->add_option("--duration", args->duration_s, "Stop after this many seconds (0: on a signal)")
       ->capture_default_str();
-  cmd->callback([args] { run_serve(*args); });
+  cmd->callback([args, cmd] {
+    args->planner_given = cmd->count("--planner") > 0;
+    run_serve(*args);
+  });
 }
 
 }  // namespace ballsight::app

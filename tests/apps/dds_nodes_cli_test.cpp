@@ -117,7 +117,7 @@ void expect_one_process_makes_the_same(DistributedCourt& court) {
   const SimulatedCourt simulated({court.seed, 12, 0.25, {}, {}, {}});
   const BallsightPipelineOptions options = service_pipeline_options(simulated.site());
   const auto detector = make_ballsight_pipeline(simulated.cameras(), options);
-  UpdatePublisher publisher(simulated.site(), make_ballsight_pipeline(simulated.cameras(), options),
+  UpdatePublisher publisher(simulated.site(), {CourtMethod::ballsight, simulated.cameras(), {}},
                             PlannerOptions{});
   NavigationHub hub;
   const std::int64_t period_ns = 1'000'000'000 / kRateHz;

@@ -35,15 +35,17 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
   EXPECT_NE(markdown.find("ballsight: error "), std::string::npos) << markdown;
   EXPECT_TRUE(fs::exists(out / "omni" / "ballsight.bsgm"));
   // The court evaluation: both methods scored.
-  EXPECT_NE(markdown.find("\nballsight "), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("\n| ballsight | "), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("\n| seed | "), std::string::npos) << markdown;
   EXPECT_EQ(markdown.find("wrote "), std::string::npos) << markdown;
   // The route: the three planners, ballsight's the fastest.
   const std::size_t route = markdown.find("## Court: collection route");
   ASSERT_NE(route, std::string::npos) << markdown;
   const auto seconds = [&](const std::string& planner) {
-    const std::size_t at = markdown.find(planner + ": ", route);
+    const std::string row = "\n| " + planner + " | ";
+    const std::size_t at = markdown.find(row, route);
     EXPECT_NE(at, std::string::npos) << planner;
-    return at == std::string::npos ? 0.0 : std::stod(markdown.substr(at + planner.size() + 2));
+    return at == std::string::npos ? 0.0 : std::stod(markdown.substr(at + row.size()));
   };
   EXPECT_LT(seconds("ballsight"), seconds("nearest"));
   EXPECT_LT(seconds("nearest"), seconds("priority"));
@@ -53,7 +55,7 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
   const std::size_t loop = markdown.find("## Court: the closed loop");
   ASSERT_NE(loop, std::string::npos) << markdown;
   const auto row = [&](const std::string& system) {
-    const std::size_t at = markdown.find("\n" + system + " ", loop);
+    const std::size_t at = markdown.find("\n| " + system + " | ", loop);
     EXPECT_NE(at, std::string::npos) << system;
     return at == std::string::npos ? std::string()
                                    : markdown.substr(at + 1, markdown.find('\n', at + 1) - at - 1);
@@ -66,6 +68,22 @@ TEST(DemoCli, WritesAReportThatShowsEveryImage) {
     EXPECT_NE(markdown.find(event, loop), std::string::npos) << event;
   }
   EXPECT_NE(r.stdout_text.find("balls left"), std::string::npos) << "progress while it runs";
+
+  // The report opens with the result, before any section.
+  const std::size_t result = markdown.find("## The result");
+  EXPECT_LT(result, markdown.find("## Omnidirectional rig"));
+  EXPECT_NE(markdown.find("\n| ballsight | 10 of 10 | ", result), std::string::npos) << markdown;
+  // The loop replayed in the page, offline: its data and script inline.
+  EXPECT_NE(html.find("id=\"loop-replay\""), std::string::npos);
+  EXPECT_NE(html.find("id=\"loop-replay-data\""), std::string::npos);
+  EXPECT_NE(html.find("startLoopReplay(document"), std::string::npos);
+  EXPECT_EQ(html.find("<script type=\"module\" src="), std::string::npos) << "nothing to fetch";
+  // Each service's recording, linked: the run with faults had two services (one killed).
+  for (const char* file : {"loop/ballsight/run-1.mcap", "loop/ballsight-faults/run-1.mcap",
+                           "loop/ballsight-faults/run-2.mcap"}) {
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+    EXPECT_NE(html.find(std::string("href=\"") + file + "\""), std::string::npos) << file;
+  }
 }
 
 TEST(DemoCli, BadOptionsFailWithOneLine) {

@@ -26,7 +26,7 @@ TEST(UpdatePublisher, CameraViewsAndANewPipeline) {
   const Site site = read_site(kExampleSite.string());
   const sim::CourtRig rig = sim::make_court_rig({}, {}, 3);
   const sim::CourtScene scene = sim::make_court_scene(rig.court, {}, 3);
-  UpdatePublisher publisher(site, make_ballsight_pipeline(rig_cameras(rig)), {});
+  UpdatePublisher publisher(site, {CourtMethod::ballsight, rig_cameras(rig), {}}, {});
   NavigationHub hub;
   EXPECT_FALSE(publisher.camera_view(0));
   std::vector<cv::Mat> frames(4);
@@ -45,14 +45,14 @@ TEST(UpdatePublisher, CameraViewsAndANewPipeline) {
 
   std::vector<FieldCamera> moved = rig_cameras(rig);
   moved[1].camera_from_field.translation += Vec3(0.5, 0.0, 0.0);
-  publisher.replace_pipeline(make_ballsight_pipeline(moved));
+  publisher.replace_pipeline({CourtMethod::ballsight, moved, {}});
   EXPECT_EQ(publisher.cameras()[1].camera_from_field.translation,
             moved[1].camera_from_field.translation);
   EXPECT_EQ(publisher.publish(frame_set_of(frames, 2000), hub), 2u);
   EXPECT_EQ(publisher.camera_view(1)->seq, 2u);
 
   moved.pop_back();
-  EXPECT_THROW(publisher.replace_pipeline(make_ballsight_pipeline(moved)), InputError);
+  EXPECT_THROW(publisher.replace_pipeline({CourtMethod::ballsight, moved, {}}), InputError);
   EXPECT_EQ(publisher.cameras().size(), 4u);
 
   // The planner is read at once and used from the next plan on.

@@ -13,37 +13,12 @@
 #include "ballsight/record/mcap_info.hpp"
 #include "ballsight/service/navigation_json.hpp"
 #include "file_size_limit.hpp"
-#include "service/running_service.hpp"
+#include "service/recorded_court.hpp"
 #include "temp_dir.hpp"
 #include "wait_until.hpp"
 
 namespace ballsight {
 namespace {
-
-SimulatedServiceOptions small_court() {
-  SimulatedServiceOptions options;
-  options.seed = 3;
-  options.balls = 6;
-  options.vision_hz = 20.0;
-  return options;
-}
-
-/// Runs the simulated court with a recorder until `updates` updates are published; the final
-/// counts.
-RecorderCounts record_run(const RecordOptions& options, std::uint64_t updates) {
-  std::optional<RunRecorder> recorder;
-  test::RunningService running(small_court(),
-                               [&](SimulatedCourtService& service, NavigationHub& hub) {
-                                 recorder.emplace(hub, service, options);
-                               });
-  EXPECT_TRUE(test::wait_until([&] { return running.hub.latest_seq() >= updates; }))
-      << "the service published " << running.hub.latest_seq() << " updates";
-  running.stop_and_join();
-  const RecorderCounts counts = recorder->finish();
-  EXPECT_EQ(counts.updates + counts.dropped, running.hub.latest_seq());
-  EXPECT_EQ(counts.error, "");
-  return counts;
-}
 
 /// Per topic, the messages of a recording in file order.
 std::map<std::string, std::vector<nlohmann::json>> messages_by_topic(
@@ -59,7 +34,7 @@ TEST(RunRecorder, EveryUpdateAndFrameSetIsInTheFile) {
   const test::TempDir dir;
   RecordOptions options;
   options.path = dir / "run.mcap";
-  const RecorderCounts counts = record_run(options, 6);
+  const RecorderCounts counts = test::record_run(options, 6);
   ASSERT_EQ(counts.dropped, 0u);
   EXPECT_EQ(counts.frame_sets, counts.updates);
   EXPECT_EQ(counts.files, 1u);
@@ -106,7 +81,7 @@ TEST(RunRecorder, EveryNthFrameSetAndFilesSplitBySize) {
   options.frame_every = 3;
   options.max_mb = 0.3;
   options.compression = mcap::Compression::lz4;
-  const RecorderCounts counts = record_run(options, 12);
+  const RecorderCounts counts = test::record_run(options, 12);
   ASSERT_EQ(counts.dropped, 0u);
   EXPECT_EQ(counts.frame_sets, (counts.updates + 2) / 3);
   ASSERT_GT(counts.files, 1u);
@@ -136,7 +111,7 @@ TEST(RunRecorder, ClientReportsAreRecordedWhenTheyChange) {
   options.queue = 10'000;
   options.frame_every = 0;
   std::optional<RunRecorder> recorder;
-  test::RunningService running(small_court(),
+  test::RunningService running(test::small_court(),
                                [&](SimulatedCourtService& service, NavigationHub& hub) {
                                  recorder.emplace(hub, service, options);
                                });
@@ -172,9 +147,11 @@ TEST(RunRecorder, AFullDiskStopsTheRecordingNotTheService) {
   RecordOptions options;
   options.path = dir / "run.mcap";
   options.queue = 10'000;
-  std::optional<test::FileSizeLimit> full_disk(std::in_place, 2'000'000);
+  // Room for the file's beginning (the simulated court's empty-court views are 5 MB of it) and a
+  // few updates.
+  std::optional<test::FileSizeLimit> full_disk(std::in_place, 8'000'000);
   std::optional<RunRecorder> recorder;
-  test::RunningService running(small_court(),
+  test::RunningService running(test::small_court(),
                                [&](SimulatedCourtService& service, NavigationHub& hub) {
                                  recorder.emplace(hub, service, options);
                                });
@@ -193,7 +170,7 @@ TEST(RunRecorder, AFullDiskStopsTheRecordingNotTheService) {
   const RecorderCounts counts = recorder->counts();
   EXPECT_NE(counts.error.find(options.path.string() + ": cannot write"), std::string::npos)
       << counts.error;
-  EXPECT_LE(std::filesystem::file_size(options.path), 2'000'000u);
+  EXPECT_LE(std::filesystem::file_size(options.path), 8'000'000u);
   std::size_t navigation = 0;
   const mcap::DataSection data = mcap::McapReader::open(options.path)
                                      .read([&](const mcap::Channel& channel, const mcap::Message&) {
@@ -206,7 +183,7 @@ TEST(RunRecorder, AFullDiskStopsTheRecordingNotTheService) {
 
 TEST(RunRecorder, APathThatCannotBeWrittenIsAnInputError) {
   NavigationHub hub;
-  SimulatedCourtService service(small_court());
+  SimulatedCourtService service(test::small_court());
   RecordOptions options;
   options.path = "/nonexistent-dir/run.mcap";
   EXPECT_THROW(RunRecorder(hub, service, options), InputError);

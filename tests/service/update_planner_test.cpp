@@ -112,8 +112,8 @@ TEST(PlanUpdate, AMarkedBallStaysOutOfTheRoute) {
   const NavigationUpdate u = plan_update(site, world, reports, nullptr, {});
   EXPECT_EQ(u.route.order.size(), 2u);
   EXPECT_EQ(u.world.balls.size(), 3u);
-  ASSERT_EQ(u.given_up.size(), 1u);
-  EXPECT_EQ(u.given_up[0].reason, "stuck");
+  ASSERT_EQ(u.reports.unreachable.size(), 1u);
+  EXPECT_EQ(u.reports.unreachable[0].reason, "stuck");
 }
 
 }  // namespace

@@ -1,12 +1,15 @@
 // ballsight's Foxglove WebSocket server (src/ballsight/net/foxglove.cpp) against the official
-// client, @foxglove/ws-protocol over ws. Needs scripts/setup-npm; run from the repository root:
+// client, @foxglove/ws-protocol over ws, on the simulated court and on a recording of it served
+// again (`serve --replay`). Needs scripts/setup-npm; run from the repository root:
 //   BALLSIGHT_BIN=build/bin/ballsight node --test tests/web/foxglove_conformance.test.mjs
 import assert from "node:assert/strict";
-import { existsSync } from "node:fs";
+import { existsSync, mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
 import test from "node:test";
 import { setTimeout as sleep } from "node:timers/promises";
 
-import { startSimulatedService, until } from "./serve_support.mjs";
+import { startService, until } from "./serve_support.mjs";
 
 const TOPICS = ["/court", "/balls", "/robot_pose", "/route", "/navigation"];
 const modules = new URL("../../node_modules/", import.meta.url);
@@ -24,17 +27,43 @@ const installed = ["@foxglove/ws-protocol", "ws"].every((name) =>
   existsSync(new URL(`${name}/package.json`, modules)),
 );
 
-test("Foxglove WebSocket v1 with @foxglove/ws-protocol", { timeout: 180_000 }, async (t) => {
+/** The executable, or a skip (a failure in CI when the packages are missing). */
+function executable(t) {
   const bin = process.env.BALLSIGHT_BIN;
   if (!bin) return t.skip("BALLSIGHT_BIN is not set (the path of the ballsight executable)");
   // CI installs the packages (scripts/setup): there a missing client is a failure, not a skip.
   if (!installed && process.env.CI) assert.fail("node_modules is missing: scripts/setup-npm did not run");
   if (!installed) return t.skip("node_modules is missing: run scripts/setup-npm");
+  return bin;
+}
+
+test("Foxglove WebSocket v1 with @foxglove/ws-protocol", { timeout: 180_000 }, async (t) => {
+  const bin = executable(t);
+  if (bin) await conformance(t, bin, ["--sim"]);
+});
+
+// A recording of the simulated court served again: the same channels and stream, from the file.
+test("the same in replay (serve --replay)", { timeout: 180_000 }, async (t) => {
+  const bin = executable(t);
+  if (!bin) return;
+  const dir = mkdtempSync(join(tmpdir(), "ballsight-replay-"));
+  t.after(() => rmSync(dir, { recursive: true, force: true }));
+  const file = join(dir, "run.mcap");
+  const { child } = await startService(t, bin, {
+    court: ["--sim"], seconds: 8, extra: ["--record", file],
+  });
+  await until(() => child.exitCode !== null, "the recording service to stop after 8 s", 60_000);
+  assert.equal(child.exitCode, 0);
+  // Recorded at 10 updates a second, replayed at half that pace: some 16 s of stream.
+  await conformance(t, bin, ["--replay", file, "--speed", "0.5"]);
+});
+
+async function conformance(t, bin, court) {
   const { default: protocol } = await import("@foxglove/ws-protocol"); // CJS
   const { FoxgloveClient } = protocol;
   const { default: WebSocket } = await import("ws");
 
-  const { port } = await startSimulatedService(t, bin);
+  const { port } = await startService(t, bin, { court });
   const url = `ws://127.0.0.1:${port}/`;
 
   const ws = new WebSocket(url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]);
@@ -135,4 +164,4 @@ test("Foxglove WebSocket v1 with @foxglove/ws-protocol", { timeout: 180_000 }, a
     assert.equal(first.binary, false);
     assert.equal(JSON.parse(first.data.toString()).op, "serverInfo");
   });
-});
+}

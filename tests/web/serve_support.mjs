@@ -54,8 +54,13 @@ export async function stop(child) {
  * the test `t`, which stops it at its end. Returns {child, port, token, stderr()}.
  */
 export async function startSimulatedService(t, bin, { seconds = 60, extra = [] } = {}) {
+  return startService(t, bin, { court: ["--sim"], seconds, extra });
+}
+
+/** The same for any court: `court` is `["--sim"]`, `["--replay", FILE, "--speed", X]`, ... */
+export async function startService(t, bin, { court, seconds = 60, extra = [] }) {
   const dir = mkdtempSync(join(tmpdir(), "ballsight-web-"));
-  const args = ["serve", "--sim", "--listen", "127.0.0.1:0", "--duration", String(seconds)];
+  const args = ["serve", ...court, "--listen", "127.0.0.1:0", "--duration", String(seconds)];
   args.push("--token-file", join(dir, "token"), ...extra);
   const child = spawn(bin, args, { stdio: ["ignore", "pipe", "pipe"] });
   let stderr = "";

@@ -218,3 +218,54 @@ TEST(Site, TheBasketAndWhereItIsEmptied) {
 
 }  // namespace
 }  // namespace ballsight
+
+namespace ballsight {
+namespace {
+
+// A site written as text reads back to the same values, every digit kept: what a recording keeps
+// to replay its run.
+TEST(SiteText, ReadsBackToTheSameSite) {
+  Site site = read_site(kExample);
+  site.court.fence_lane_m = 0.1 + 0.2;  // 0.30000000000000004: needs every digit
+  site.ball_radius_m = 1.0 / 30.0;
+  site.robot.unload_m = Vec2(15.25, -1.0 / 3.0);
+  site.robot.capacity = 12;
+  site.colours.ball = {1, 2, 3};
+  site.reference_balls[0].name = "it's: a ball";
+  site.cameras[0].name = "camera 'north'";
+  site.cameras[1].source = {CameraSource::Kind::device, {}, 2, {}};
+  site.cameras[2].source = {CameraSource::Kind::url, {}, 0, "rtsp://10.0.0.9/stream"};
+  site.cameras[3].position_hint_m.reset();
+  const std::string text = site_file_text(site);
+  const Site back = parse_site(text, kExample);
+  EXPECT_EQ(back.court.fence_lane_m, site.court.fence_lane_m);
+  EXPECT_EQ(back.ball_radius_m, site.ball_radius_m);
+  EXPECT_EQ(back.robot.unload_m, site.robot.unload_m);
+  EXPECT_EQ(back.robot.capacity, 12);
+  EXPECT_EQ(back.colours.ball.bgr(), cv::Vec3b(3, 2, 1));
+  EXPECT_EQ(back.reference_balls[0].name, "it's: a ball");
+  EXPECT_EQ(back.reference_balls[5].floor_position_m, site.reference_balls[5].floor_position_m);
+  EXPECT_EQ(back.cameras[0].name, "camera 'north'");
+  EXPECT_EQ(back.cameras[0].source.path, site.cameras[0].source.path);
+  EXPECT_EQ(back.cameras[0].calibration_file, site.cameras[0].calibration_file);
+  EXPECT_EQ(back.cameras[1].source.kind, CameraSource::Kind::device);
+  EXPECT_EQ(back.cameras[1].source.device, 2);
+  EXPECT_EQ(back.cameras[2].source.url, "rtsp://10.0.0.9/stream");
+  EXPECT_EQ(back.cameras[0].position_hint_m, site.cameras[0].position_hint_m);
+  EXPECT_FALSE(back.cameras[3].position_hint_m.has_value());
+  EXPECT_EQ(site_file_text(back), text);  // and nothing else changed
+}
+
+// A site made in code (the simulator's) has no files: its cameras get names that parse.
+TEST(SiteText, ASiteWithoutFilesStillReads) {
+  Site site = read_site(kExample);
+  for (SiteCamera& camera : site.cameras) {
+    camera.calibration_file.clear();
+    camera.source = {};
+  }
+  const Site back = parse_site(site_file_text(site), "replay/site.yml");
+  EXPECT_EQ(back.cameras[0].calibration_file, "replay/" + site.cameras[0].name + ".yml");
+}
+
+}  // namespace
+}  // namespace ballsight

@@ -1,8 +1,8 @@
 #include "ballsight/core/base64.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
-#include <cstring>
 
 #include "ballsight/core/error.hpp"
 
@@ -31,9 +31,17 @@ std::string base64(std::string_view bytes) {
 }
 
 std::string base64_decode(std::string_view text, const std::string& where) {
-  require(
-      text.size() % 4 == 0, where,
-      "base64 text of " + std::to_string(text.size()) + " characters (a multiple of 4 expected)");
+  // Each character's 6-bit value, or -1 for one that is not a base64 digit.
+  static const std::array<int, 256> kValues = [] {
+    std::array<int, 256> values;
+    values.fill(-1);
+    for (int v = 0; v < 64; ++v) values[static_cast<unsigned char>(kDigits[v])] = v;
+    return values;
+  }();
+  if (text.size() % 4 != 0) {
+    throw InputError(where + ": base64 text of " + std::to_string(text.size()) +
+                     " characters (a multiple of 4 expected)");
+  }
   std::string out;
   out.reserve(text.size() / 4 * 3);
   for (std::size_t i = 0; i < text.size(); i += 4) {
@@ -41,13 +49,14 @@ std::string base64_decode(std::string_view text, const std::string& where) {
     int padding = 0;
     for (std::size_t k = 0; k < 4; ++k) {
       const char c = text[i + k];
-      const char* digit = c == '\0' ? nullptr : std::strchr(kDigits, c);
+      const int value = kValues[static_cast<unsigned char>(c)];
       const bool pad = c == '=' && i + 4 == text.size() && k >= 2 && (k == 3 || text[i + 3] == '=');
-      require(digit != nullptr || pad, where,
-              "not base64 at character " + std::to_string(i + k + 1));
-      require(padding == 0 || pad, where, "base64 data after '=' padding");
+      if (value < 0 && !pad) {
+        throw InputError(where + ": not base64 at character " + std::to_string(i + k + 1));
+      }
+      if (padding > 0 && !pad) throw InputError(where + ": base64 data after '=' padding");
       padding += pad ? 1 : 0;
-      group = (group << 6) | static_cast<std::uint32_t>(pad ? 0 : digit - kDigits);
+      group = (group << 6) | static_cast<std::uint32_t>(pad ? 0 : value);
     }
     for (int k = 0; k < 3 - padding; ++k) out += static_cast<char>((group >> (16 - 8 * k)) & 0xFF);
   }

@@ -20,8 +20,7 @@ CameraFedCourtService::CameraFedCourtService(const Participant& participant, Sit
           "the site has " + std::to_string(site_.cameras.size()) + " cameras, " +
               std::to_string(cameras.size()) + " calibrations were given");
   publisher_ = std::make_unique<UpdatePublisher>(
-      site_, make_ballsight_pipeline(std::move(cameras), service_pipeline_options(site_)),
-      options.planner);
+      site_, ServicePipeline{CourtMethod::ballsight, std::move(cameras), {}}, options.planner);
   for (const SiteCamera& camera : site_.cameras) {
     readers_.push_back(
         std::make_unique<Reader<CameraDetectionsMsg>>(participant, detections_topic(camera.name)));

@@ -16,10 +16,13 @@
 #include "ballsight/core/text_format.hpp"
 #include "ballsight/eval/court_eval.hpp"
 #include "ballsight/eval/loop_demo.hpp"
+#include "ballsight/eval/loop_replay_data.hpp"
 #include "ballsight/eval/plan_eval.hpp"
 #include "ballsight/eval/plot_inputs.hpp"
 #include "ballsight/pipeline/marker_frame_samples.hpp"
 #include "ballsight/pipeline/omni_pipelines.hpp"
+#include "ballsight/pipeline/world_model_json.hpp"
+#include "ballsight/service/simulated_court.hpp"
 #include "ballsight/sim/court_dataset.hpp"
 #include "ballsight/sim/omni_dataset.hpp"
 #include "ballsight/sim/omni_scenario.hpp"
@@ -81,8 +84,10 @@ std::vector<ReportFigure> omni_figures(const fs::path& dir, const std::vector<st
 
 // The omni run time on the data set: calibrated without clicking from frame 0's markers, then the
 // ball of every other frame placed by ballsight's pipeline and by the paper's (polynomial, as its
-// robots), against the truth. Appends to the frames' captions; returns the summary.
-std::string omni_localisation(const fs::path& dir, std::vector<ReportFigure>& figures) {
+// robots), against the truth. Appends to the frames' captions; returns the summary and puts the
+// errors in `table`.
+std::string omni_localisation(const fs::path& dir, std::vector<ReportFigure>& figures,
+                              ReportTable& table) {
   const auto start = Clock::now();
   const sim::OmniPalette palette;
   const Vec2 configured_center(319.5, 239.5);
@@ -126,14 +131,16 @@ std::string omni_localisation(const fs::path& dir, std::vector<ReportFigure>& fi
     for (double x : v) sum += x;
     return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
   };
+  table = {
+      "The ball placed on the floor in every frame after the first, against the truth",
+      {"pipeline", "mean ball error (cm)", "frames"},
+      {{"ballsight", fixed(mean(ballsight_errors), 2), std::to_string(ballsight_errors.size())},
+       {"the paper's (its polynomial, from the same markers)", fixed(mean(paper_errors), 1),
+        std::to_string(paper_errors.size())}}};
   return "Calibrated without clicking: " + std::to_string(found.samples.size()) + " of " +
          std::to_string(layout.size()) + " markers found in frame 0 and matched to the paper's " +
          "layout, ballsight's model fitted and baked into omni/ballsight.bsgm in " +
-         fixed(calibration_seconds, 2) + " s (docs/omni-calibration.md). Ball error: ballsight " +
-         fixed(mean(ballsight_errors), 2) + " cm mean over " +
-         std::to_string(ballsight_errors.size()) + " frames; the paper's pipeline with its " +
-         "polynomial from the same markers " + fixed(mean(paper_errors), 1) + " cm over " +
-         std::to_string(paper_errors.size()) + ".";
+         fixed(calibration_seconds, 2) + " s (docs/omni-calibration.md).";
 }
 
 std::vector<ReportFigure> court_figures(const fs::path& dir,
@@ -159,23 +166,45 @@ std::vector<ReportFigure> court_figures(const fs::path& dir,
   return figures;
 }
 
-// The evaluation's table without its list of the pictures written (the report shows them).
-std::string scores_only(const std::string& text) {
-  std::istringstream in(text);
-  std::string kept, line;
-  while (std::getline(in, line)) {
-    if (!line.starts_with("wrote ")) kept += line + "\n";
+// The evaluation's scores, a row per method.
+ReportTable court_eval_table(const CourtEvalReport& report) {
+  ReportTable table{"Scored against the truth (match radius " +
+                        fixed(100.0 * report.options.match_radius_m, 0) +
+                        " cm; the robot's errors over the scenes where it was found)",
+                    {"method", "recall", "precision", "duplicates", "false positives",
+                     "ball error mean / p95 (cm)", "robot position (cm)", "robot heading (deg)",
+                     "robot found", "ms per frame set"},
+                    {}};
+  for (const MethodReport& m : report.methods) {
+    const std::string name(court_method_name(m.method));
+    if (!m.calibration_error.empty()) {
+      table.rows.push_back({name, "could not be calibrated: " + m.calibration_error});
+      continue;
+    }
+    const CourtScores& s = m.scores;
+    double ms = 0.0;
+    for (double v : m.frame_set_ms) ms += v / static_cast<double>(m.frame_set_ms.size());
+    table.rows.push_back(
+        {name, fixed(100.0 * s.recall(), 2) + " %", fixed(100.0 * s.precision(), 2) + " %",
+         std::to_string(s.duplicates), std::to_string(s.false_positives),
+         fixed(100.0 * s.ball_error_mean_m(), 2) + " / " + fixed(100.0 * s.ball_error_p95_m(), 2),
+         fixed(100.0 * s.robot_position_error_mean_m(), 2),
+         fixed(deg_from_rad(s.robot_heading_error_mean_rad()), 3),
+         std::to_string(s.robot_found) + " of " + std::to_string(s.scenes), fixed(ms, 1)});
   }
-  return kept;
+  return table;
 }
 
-}  // namespace
-
-/// The closed loop's section: each run's map and latency chart, the table, what happened when.
-std::string loop_section(const std::vector<LoopDemoRun>& runs, const fs::path& out_dir,
+/// The closed loop's figures (each run's map and latency chart), what happened when, the
+/// recordings; appends the figures.
+std::string loop_details(const std::vector<LoopDemoRun>& runs, const fs::path& out_dir,
                          std::vector<ReportFigure>& figures) {
-  std::string events;
+  std::string events, recordings;
   for (const LoopDemoRun& r : runs) {
+    for (const fs::path& file : r.recordings) {
+      const std::string link = fs::relative(file, out_dir).generic_string();
+      recordings += "<li><a href=\"" + link + "\">" + link + "</a> (" + r.name + ")</li>";
+    }
     const std::string map = "loop/" + r.name + "/map.png";
     const std::string latency = "loop/" + r.name + "/latency.png";
     const std::string outcome =
@@ -188,18 +217,78 @@ std::string loop_section(const std::vector<LoopDemoRun>& runs, const fs::path& o
     write_png_atomic(out_dir / latency,
                      draw_latency_chart(r.seqs, r.latency_ms,
                                         r.name + ": frames captured -> update at the robot"));
-    figures.push_back({map,
-                       "true path, routes as published, balls by the time they were "
-                       "collected (grey, red cross: never); " +
-                           outcome});
-    figures.push_back({latency, "per-update latency at the robot (wall ms)"});
+    figures.push_back({map, r.name +
+                                ": true path, routes as published, balls by the time they were "
+                                "collected (grey, red cross: never); " +
+                                outcome});
+    figures.push_back({latency, r.name + ": per-update latency at the robot (wall ms)"});
     for (const TruthEvent& e : r.events) {
       events += r.name + " at " + fixed(e.time_s, 1) + " s: " + e.what + "\n";
     }
   }
-  return "<pre>" + loop_demo_table(runs) +
-         "</pre><p>What happened, and when (simulated):</p><pre>" + events + "</pre>";
+  return "<p>What happened, and when (simulated):</p><pre>" + events +
+         "</pre><p>Each run as recorded by its service (MCAP: every update, the frames once a "
+         "second; a service that was killed left its file cut short, readable up to its last "
+         "complete chunk). Open one in Foxglove or Lichtblick (File &gt; Open local file) for "
+         "the court in 3D with a time slider, or read it with <code>ballsight record info "
+         "FILE</code>; docs/recording.md.</p><ul>" +
+         recordings + "</ul>";
 }
+
+// The page's replay of the closed loop (web/loop_replay.js on web/court_map.js): its controls,
+// its data, and the script, or a note when the web pages' folder is not at hand.
+struct LoopReplay {
+  std::string html;
+  std::string script;
+};
+
+LoopReplay loop_replay(const std::vector<LoopDemoRun>& runs, const fs::path& web_dir) {
+  const fs::path map_js = web_dir / "court_map.js", replay_js = web_dir / "loop_replay.js";
+  if (web_dir.empty() || !fs::exists(map_js) || !fs::exists(replay_js)) {
+    return {"<p>(The replay needs the web pages' folder, which was not found: " +
+                html_escaped(web_dir.string()) + ".)</p>",
+            ""};
+  }
+  nlohmann::json data{{"site",
+                       {{"court", site_court_json(site_court(sim::TennisCourtSpec{}))},
+                        {"ball_radius_m", sim::kTennisBallRadiusM}}},
+                      {"runs", nlohmann::json::array()}};
+  for (const LoopDemoRun& r : runs) {
+    nlohmann::json run = loop_replay_json(r.truth);
+    run["name"] = r.name;
+    data["runs"].push_back(std::move(run));
+  }
+  std::string json = data.dump();
+  // Inside a <script> element "</" would end it.
+  for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 2))
+    json.replace(at, 2, "<\\/");
+  const std::string html =
+      "<div class=\"replay\" id=\"loop-replay\"><div class=\"controls\"><label>Run "
+      "<select></select></label><button type=\"button\">Play</button><input type=\"range\" "
+      "min=\"0\" value=\"0\" aria-label=\"time\"><output></output></div><canvas "
+      "width=\"1000\" height=\"520\"></canvas></div>\n<script type=\"application/json\" "
+      "id=\"loop-replay-data\">" +
+      json + "</script>\n";
+  // A page opened from its folder may not import modules (file:// has no origin): the two
+  // modules are inlined into one, their import and export keywords dropped.
+  const auto module_text = [](const fs::path& file) {
+    std::istringstream in(read_file(file));
+    std::string text, line;
+    while (std::getline(in, line)) {
+      if (line.starts_with("import ")) continue;
+      if (line.starts_with("export ")) line.erase(0, 7);
+      text += line + "\n";
+    }
+    return text;
+  };
+  const std::string script =
+      module_text(map_js) + module_text(replay_js) +
+      "const data = JSON.parse(document.getElementById(\"loop-replay-data\").textContent);\n"
+      "startLoopReplay(document.getElementById(\"loop-replay\"), data.site, data.runs);\n";
+  return {html, script};
+}
+
+}  // namespace
 
 DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
                     const LoopDemoRunner& run_loop,
@@ -223,7 +312,8 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
   const double court_seconds = seconds_since(court_start);
 
   std::vector<ReportFigure> omni_figs = omni_figures(out_dir / "omni", omni_files);
-  const std::string omni_results = omni_localisation(out_dir / "omni", omni_figs);
+  ReportTable omni_table;
+  const std::string omni_results = omni_localisation(out_dir / "omni", omni_figs, omni_table);
   const std::vector<ReportFigure> court_figs = court_figures(out_dir / "court", court_files);
   const std::string omni_intro =
       "On-board omnidirectional camera (misaligned as the omnivision paper's robot: tilted axis, "
@@ -254,8 +344,7 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
       "given the truth), then run on " +
       std::to_string(options.court_scenes) +
       " simulated scene(s) of their own, scored against the truth in " +
-      fixed(seconds_since(eval_start), 1) + " s (docs/court-eval.md):<pre>" +
-      scores_only(court_eval_text(court_report)) + "</pre>";
+      fixed(seconds_since(eval_start), 1) + " s (docs/court-eval.md).";
   ensure_directory(out_dir / "plan");
   const std::vector<ReportFigure> plan_figs{
       {"plan/route-practice-50.png",
@@ -263,10 +352,9 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
   const std::string plan_intro =
       "The order in which the robot collects 50 balls left after practice (along the baselines "
       "and at the foot of the net), round the net, turning costed (1 m/s, 90 deg/s), the 70 cm "
-      "collector taking the balls it passes (docs/route-planning.md):<pre>" +
-      eval::plan_comparison(eval::BallLayout::practice, 50, options.seed,
-                            out_dir / plan_figs[0].image) +
-      "</pre>";
+      "collector taking the balls it passes (docs/route-planning.md).";
+  const ReportTable plan_table = eval::plan_comparison(eval::BallLayout::practice, 50, options.seed,
+                                                       out_dir / plan_figs[0].image);
   LoopDemoOptions loop;
   loop.seed = options.seed;
   loop.balls = options.loop_balls;
@@ -275,7 +363,8 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
   const auto loop_start = Clock::now();
   const std::vector<LoopDemoRun> runs = run_loop(loop, out_dir, progress);
   std::vector<ReportFigure> loop_figs;
-  const std::string loop_results = loop_section(runs, out_dir, loop_figs);
+  const std::string loop_more = loop_details(runs, out_dir, loop_figs);
+  const LoopReplay replay = loop_replay(runs, options.web_dir);
   const std::string loop_intro =
       "The closed loop: the navigation service on the simulated court (<code>ballsight serve "
       "--sim</code>: four cameras rendered every 0.1 s of simulated time from the truth, the "
@@ -285,25 +374,57 @@ DemoResult run_demo(const DemoOptions& options, const fs::path& out_dir,
       " balls, until all are collected, the robot sees none left, or " +
       fixed(options.loop_max_time_s, 0) +
       " s. Systems: the report's pipeline and priority rule (report), ballsight's pipeline with "
-      "the priority rule (priority), ballsight; then ballsight with faults (a camera dies, the "
-      "service and "
-      "the robot are killed and started again). Scored on the court's record (contacts: ticks of "
-      "0.1 s in which the net or the fence stopped the robot); " +
-      fixed(seconds_since(loop_start), 1) + " s wall (docs/robot-link.md):" + loop_results;
-  const std::string title = "ballsight demo (seed " + std::to_string(options.seed) + ")";
+      "the priority rule (priority), ballsight" +
+      (options.loop_faults ? "; then ballsight with faults (a camera dies, the service and the "
+                             "robot are killed and started again)"
+                           : "") +
+      ". Scored on the court's record (contacts: ticks of 0.1 s in which the net or the fence "
+      "stopped the robot); " +
+      fixed(seconds_since(loop_start), 1) + " s wall (docs/robot-link.md). Below, the loop " +
+      "replayed: pick a run, move the slider or play; the robot moves along its true path, " +
+      "each ball goes when it was collected, and the route is the one the robot had then.";
 
-  const std::vector<ReportSection> sections{
-      {"Omnidirectional rig", omni_intro, omni_figs},
-      {"Court rig", court_intro, court_figs},
-      {"Court: calibration, detection and world model", eval_intro, eval_figs},
-      {"Court: collection route", plan_intro, plan_figs},
-      {"Court: the closed loop", loop_intro, loop_figs}};
+  ReportPage page;
+  page.title = "ballsight demo (seed " + std::to_string(options.seed) + ")";
+  // The result first: every ball collected or not, how fast, against the report's system, with
+  // ballsight's run on the court.
+  page.result.title = "The result";
+  page.result.intro =
+      "The collecting robot on the simulated court, " + std::to_string(options.loop_balls) +
+      " tennis balls, closed loop (the service and the robot as two processes): the report's "
+      "whole system (report), ballsight's pipeline with the report's route rule (priority) and "
+      "ballsight" +
+      (options.loop_faults ? ", and ballsight again through a camera failure and both processes "
+                             "killed and started again (ballsight-faults)."
+                           : ".");
+  page.result.tables = {loop_result_table(runs)};
+  for (const ReportFigure& f : loop_figs) {
+    if (f.image == "loop/ballsight/map.png") page.result.figures = {f};
+  }
+  page.sections = {{"Omnidirectional rig", omni_intro, "", {omni_table}, omni_figs, ""},
+                   {"Court rig", court_intro, "", {}, court_figs, ""},
+                   {"Court: calibration, detection and world model",
+                    eval_intro,
+                    "",
+                    {court_eval_table(court_report)},
+                    eval_figs,
+                    ""},
+                   {"Court: collection route", plan_intro, "", {plan_table}, plan_figs, ""},
+                   {"Court: the closed loop",
+                    loop_intro,
+                    replay.html,
+                    {loop_demo_table(runs)},
+                    loop_figs,
+                    loop_more}};
+  page.script = replay.script;
+  const std::string style_file = (options.web_dir / "style.css").string();
+  if (!options.web_dir.empty() && fs::exists(style_file)) page.style = read_file(style_file);
 
   DemoResult result{out_dir / "report.html", out_dir / "report.md",
                     static_cast<int>(omni_figs.size() + court_figs.size() + eval_figs.size() +
                                      plan_figs.size() + loop_figs.size())};
-  write_file_atomic(result.report_html, html_report(title, sections));
-  write_file_atomic(result.report_markdown, markdown_report(title, sections));
+  write_file_atomic(result.report_html, html_report(page));
+  write_file_atomic(result.report_markdown, markdown_report(page));
   return result;
 }
 

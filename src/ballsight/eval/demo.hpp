@@ -22,6 +22,9 @@ struct DemoOptions {
   int loop_balls = 20;            // the closed loop's scene
   double loop_max_time_s = 90.0;  // simulated, per system
   bool loop_faults = true;        // the closed loop once more with faults
+  /// The web pages' folder: the report inlines its style sheet and the court map's script for
+  /// the loop's replay ("" or missing: a plain page, the replay left out with a note).
+  std::filesystem::path web_dir;
   /// Throws InputError naming the first invalid field.
   void validate() const;
 };

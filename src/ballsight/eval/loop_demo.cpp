@@ -15,24 +15,48 @@ void LoopDemoOptions::validate() const {
   require(std::isfinite(max_time_s) && max_time_s > 0.0, "demo", "loop max time must be positive");
 }
 
-std::string loop_demo_table(const std::vector<LoopDemoRun>& runs) {
-  std::string text =
-      "system               collected  time to all (s)  distance (m)  contacts  unloads  given up  "
-      "latency p50/p99/max (ms)  missed updates  wall (s)\n";
+ReportTable loop_demo_table(const std::vector<LoopDemoRun>& runs) {
+  ReportTable table{
+      "Each run in detail (contacts: ticks of 0.1 s in which the net or the fence "
+      "stopped the robot; latency: frames captured to the update at the robot, wall)",
+      {"system", "collected", "time to all (s)", "distance (m)", "contacts", "unloads", "given up",
+       "latency p50 / p99 / max (ms)", "missed updates", "wall (s)"},
+      {}};
   for (const LoopDemoRun& r : runs) {
-    char line[256];
-    std::snprintf(
-        line, sizeof line,
-        "%-20s %4d / %-3d %16s %13.1f %9d %8d %9d %10.1f / %.1f / %.1f %14llu %9.1f\n",
-        r.name.c_str(), r.score.collected, r.score.balls,
-        r.score.all ? fixed(r.score.time_s, 1).c_str() : "not all", r.score.distance_m,
-        r.score.blocked_ticks, r.score.unloads, r.unreachable, quantile(r.latency_ms, 0.5),
-        quantile(r.latency_ms, 0.99),
-        r.latency_ms.empty() ? 0.0 : *std::max_element(r.latency_ms.begin(), r.latency_ms.end()),
-        static_cast<unsigned long long>(r.gaps), r.wall_s);
-    text += line;
+    const double max_ms =
+        r.latency_ms.empty() ? 0.0 : *std::max_element(r.latency_ms.begin(), r.latency_ms.end());
+    table.rows.push_back({r.name,
+                          std::to_string(r.score.collected) + " / " + std::to_string(r.score.balls),
+                          r.score.all ? fixed(r.score.time_s, 1) : "not all",
+                          fixed(r.score.distance_m, 1), std::to_string(r.score.blocked_ticks),
+                          std::to_string(r.score.unloads), std::to_string(r.unreachable),
+                          fixed(quantile(r.latency_ms, 0.5), 1) + " / " +
+                              fixed(quantile(r.latency_ms, 0.99), 1) + " / " + fixed(max_ms, 1),
+                          std::to_string(r.gaps), fixed(r.wall_s, 1)});
   }
-  return text;
+  return table;
+}
+
+ReportTable loop_result_table(const std::vector<LoopDemoRun>& runs) {
+  ReportTable table{"",
+                    {"system", "balls collected", "time to collect all (s)", "distance (m)",
+                     "faults it went through"},
+                    {}};
+  for (const LoopDemoRun& r : runs) {
+    std::string faults;
+    for (const TruthEvent& e : r.events) {
+      if (e.what.find("killed") == std::string::npos &&
+          e.what.find("failed") == std::string::npos) {
+        continue;
+      }
+      faults += (faults.empty() ? "" : "; ") + e.what;
+    }
+    table.rows.push_back(
+        {r.name, std::to_string(r.score.collected) + " of " + std::to_string(r.score.balls),
+         r.score.all ? fixed(r.score.time_s, 1) : "not all in time", fixed(r.score.distance_m, 1),
+         faults.empty() ? "none" : faults});
+  }
+  return table;
 }
 
 }  // namespace ballsight

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ballsight/service/loop_truth.hpp"
+#include "ballsight/viz/report.hpp"
 
 namespace ballsight {
 
@@ -36,6 +37,9 @@ struct LoopDemoRun {
   std::vector<TruthEvent> events;  // the record's and the demo's own (what it did, when)
   double wall_s = 0.0;
   std::filesystem::path dir;  // serve and robot logs, the record, the robot's summaries
+  /// Each service process's recording (serve --record, docs/recording.md), in order: a service
+  /// that was killed left its file cut short, readable up to its last complete chunk.
+  std::vector<std::filesystem::path> recordings;
 };
 
 /// Runs every system into out_dir/loop/<name>/; `progress` hears a line now and then.
@@ -43,8 +47,12 @@ using LoopDemoRunner = std::function<std::vector<LoopDemoRun>(
     const LoopDemoOptions& options, const std::filesystem::path& out_dir,
     const std::function<void(const std::string&)>& progress)>;
 
-/// The runs side by side: balls collected, time to collect all, distance, unload trips, balls
-/// given up, latency, gaps.
-std::string loop_demo_table(const std::vector<LoopDemoRun>& runs);
+/// The runs side by side: balls collected, time to collect all, distance, contacts, unload trips,
+/// balls given up, latency, missed updates, wall time.
+ReportTable loop_demo_table(const std::vector<LoopDemoRun>& runs);
+
+/// The result that matters, a row per run: balls collected, time to collect them all, distance,
+/// the faults it went through.
+ReportTable loop_result_table(const std::vector<LoopDemoRun>& runs);
 
 }  // namespace ballsight

@@ -53,7 +53,7 @@ std::string obstacles_name(const std::vector<sim::CourtObstacle>& obstacles) {
 
 LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
                  const RobotConnector& connect, const std::filesystem::path& record,
-                 const LoopRobot& robot) {
+                 const LoopRobot& robot, const RecordOptions* mcap) {
   SimulatedServiceOptions options;
   options.truth_out = record;
   options.seed = scene.seed;
@@ -70,6 +70,8 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   SimulatedCourtService service(options);
   NavigationHub hub;
   const std::unique_ptr<RobotLink> link = connect(service, hub);
+  std::optional<RunRecorder> recorder;
+  if (mcap) recorder.emplace(hub, service, *mcap);
   const Pose2D start = service.robot_start();
   std::atomic<bool> stop{false};
   std::thread court([&] { service.run(hub, stop); });
@@ -91,6 +93,7 @@ LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_ti
   driver.join();
   court.join();
   link->stop();
+  if (recorder) recorder->finish();
 
   // The court is stopped from here, at wall-clock moments: a run is scored on its first
   // max_time_s simulated seconds, the same ticks every time.
@@ -135,6 +138,7 @@ void LoopEvalOptions::validate() const {
   require(min_balls >= 1 && min_balls <= max_balls && max_balls <= 200, "balls",
           "need 1 <= min <= max <= 200");
   require(std::isfinite(max_time_s) && max_time_s > 0.0, "--max-time", "must be positive");
+  require(!record_mcap || !record_dir.empty(), "--record-mcap", "needs --record-dir");
   robot.body.validate();
   require(!robot.capacity || (*robot.capacity >= 1 && *robot.capacity <= 1000), "--capacity",
           "must be 1 to 1000 balls");
@@ -186,7 +190,15 @@ std::vector<LoopRun> run_loop_eval(const LoopEvalOptions& options, const RobotCo
               ? std::filesystem::path()
               : options.record_dir / (system.name + "-" + std::to_string(scene.seed) + ".jsonl");
       if (!record.empty()) ensure_directory(options.record_dir);
-      runs.push_back(run_loop(system, scene, options.max_time_s, connect, record, options.robot));
+      std::optional<RecordOptions> mcap;
+      if (options.record_mcap && !record.empty()) {
+        mcap.emplace();
+        mcap->path = std::filesystem::path(record).replace_extension(".mcap");
+        mcap->frame_every = 10;
+        mcap->wait_for_room = true;  // simulated time: the court waits, nothing is dropped
+      }
+      runs.push_back(run_loop(system, scene, options.max_time_s, connect, record, options.robot,
+                              mcap ? &*mcap : nullptr));
       if (progress) progress(runs.back());
     }
   }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "ballsight/robot/robot_link.hpp"
+#include "ballsight/service/run_recorder.hpp"
 #include "ballsight/service/simulated_service.hpp"
 
 namespace ballsight::eval {
@@ -98,10 +99,11 @@ struct LoopRobot {
 };
 
 /// One scene, one system, until every ball is collected or `max_time_s` of simulated time.
-/// `record`: where the court's record goes (service/loop_truth.hpp), empty for nowhere.
+/// `record`: where the court's record goes (service/loop_truth.hpp), empty for nowhere; `mcap`:
+/// how the run is recorded in MCAP (docs/recording.md), nullptr for not at all.
 LoopRun run_loop(const LoopSystem& system, const LoopScene& scene, double max_time_s,
                  const RobotConnector& connect, const std::filesystem::path& record = {},
-                 const LoopRobot& robot = {});
+                 const LoopRobot& robot = {}, const RecordOptions* mcap = nullptr);
 
 struct LoopEvalOptions {
   std::uint64_t seed = 1;
@@ -115,7 +117,10 @@ struct LoopEvalOptions {
   /// The obstacles of every scene; nullopt: the mix (loop_obstacles).
   std::optional<sim::ObstacleOptions> obstacles;
   std::filesystem::path record_dir;  // each run's record as <system>-<seed>.jsonl (empty: none)
-  LoopRobot robot;                   // a perfect robot by default
+  /// With record_dir: each run also recorded as <system>-<seed>.mcap, every update and the
+  /// frames of every 10th frame set.
+  bool record_mcap = false;
+  LoopRobot robot;  // a perfect robot by default
 
   /// Throws InputError naming the first invalid field.
   void validate() const;

@@ -132,7 +132,7 @@ nlohmann::json by_n_json(const std::map<int, PlannerFigures>& by_n) {
 
 }  // namespace
 
-std::string plan_comparison(BallLayout layout, int n, std::uint64_t seed,
+ReportTable plan_comparison(BallLayout layout, int n, std::uint64_t seed,
                             const std::filesystem::path& png) {
   const PlanningProblem problem = court_planning_problem(layout, n, seed);
   const std::vector<RouteLayer> layers = compared_routes(problem, seed);
@@ -140,11 +140,13 @@ std::string plan_comparison(BallLayout layout, int n, std::uint64_t seed,
       std::to_string(n) + " balls, layout " + std::string(layout_name(layout));
   write_png_atomic(png,
                    draw_route_map(problem, court_floor(sim::TennisCourtSpec{}), layers, title));
-  std::string out;
+  ReportTable table{title, {"planner", "time (s)", "length (m)", "planned in (ms)"}, {}};
   for (const RouteLayer& layer : layers) {
-    out += layer.label + " (planned in " + fixed(layer.route.plan_ms, 2) + " ms)\n";
+    const Route& r = layer.route;
+    table.rows.push_back(
+        {r.planner, fixed(r.time_s, 1), fixed(r.length_m, 1), fixed(r.plan_ms, 2)});
   }
-  return out;
+  return table;
 }
 
 void Spread::add(double value) {

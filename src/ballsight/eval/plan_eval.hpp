@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ballsight/eval/plan_layouts.hpp"
+#include "ballsight/viz/report.hpp"
 
 namespace ballsight::eval {
 
@@ -58,8 +59,8 @@ int plan_eval_trials(int n);
 PlanEvalReport run_plan_eval(const PlanEvalOptions& options);
 
 /// The report's rule, nearest neighbour and ballsight on one layout of `n` balls, their routes
-/// drawn into `png`; one line per planner: time, length, planning time.
-std::string plan_comparison(BallLayout layout, int n, std::uint64_t seed,
+/// drawn into `png`; a row per planner: its name, time (s), length (m), planning time (ms).
+ReportTable plan_comparison(BallLayout layout, int n, std::uint64_t seed,
                             const std::filesystem::path& png);
 nlohmann::json plan_eval_json(const PlanEvalReport& report);
 std::string plan_eval_text(const PlanEvalReport& report);

@@ -289,14 +289,7 @@ ApiResponse plan_route(const ApiRequest&, const std::string&, const ApiContext& 
 }
 
 ApiResponse site_route(const ApiRequest&, const std::string&, const ApiContext& c) {
-  const SiteCourt& court = c.court;
-  return ok(json{{"court",
-                  {{"length_m", court.length_m},
-                   {"width_m", court.width_m},
-                   {"area_length_m", court.area_length_m},
-                   {"area_width_m", court.area_width_m},
-                   {"net", court.net},
-                   {"net_posts_outside_m", court.net_posts_outside_m}}},
+  return ok(json{{"court", site_court_json(c.court)},
                  {"cameras", c.camera_names},
                  {"ball_radius_m", c.ball_radius_m},
                  {"simulated", static_cast<bool>(c.drive)}});

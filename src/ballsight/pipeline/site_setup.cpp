@@ -73,6 +73,15 @@ HsvRange marker_box(const HsvRange& box, const Rgb& plain, const Rgb& colour, co
 
 }  // namespace
 
+std::unique_ptr<CourtPipeline> make_service_pipeline(const Site& site,
+                                                     const ServicePipeline& setup) {
+  if (setup.method == CourtMethod::seed)
+    return make_seed_pipeline(setup.cameras, seed_options_for_site(site));
+  BallsightPipelineOptions options = service_pipeline_options(site);
+  options.empty_court = setup.empty_court;
+  return make_ballsight_pipeline(setup.cameras, options);
+}
+
 SeedPipelineOptions seed_options_for_site(const Site& site) {
   SeedPipelineOptions options;
   // The markers' boxes follow the site's marker colours.

@@ -26,6 +26,20 @@ BallsightPipelineOptions service_pipeline_options(const Site& site);
 /// Throws InputError naming the colour when its box would not hold it (grey, or red).
 SeedPipelineOptions seed_options_for_site(const Site& site);
 
+/// What a court service's pipeline is made of beyond its site: enough to make the same pipeline
+/// again (a recording keeps it, to replay the run).
+struct ServicePipeline {
+  CourtMethod method = CourtMethod::ballsight;  // seed: the report's pipeline
+  std::vector<FieldCamera> cameras;
+  /// Per camera, its view of the empty court (obstacles are looked for); empty: none.
+  std::vector<cv::Mat> empty_court;
+};
+
+/// The service's pipeline for `site`: service_pipeline_options (with `setup`'s empty court) for
+/// ballsight's, seed_options_for_site for the report's.
+std::unique_ptr<CourtPipeline> make_service_pipeline(const Site& site,
+                                                     const ServicePipeline& setup);
+
 /// The camera's source: a file (one frame), a folder (its images in name order), a video device
 /// or a URL.
 std::unique_ptr<FrameSource> site_frame_source(const SiteCamera& camera);

@@ -63,4 +63,13 @@ nlohmann::json world_model_json(const WorldModel& world,
   return j;
 }
 
+nlohmann::json site_court_json(const SiteCourt& court) {
+  return {{"length_m", court.length_m},
+          {"width_m", court.width_m},
+          {"area_length_m", court.area_length_m},
+          {"area_width_m", court.area_width_m},
+          {"net", court.net},
+          {"net_posts_outside_m", court.net_posts_outside_m}};
+}
+
 }  // namespace ballsight

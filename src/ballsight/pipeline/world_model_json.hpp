@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "ballsight/core/site_court.hpp"
 #include "ballsight/world/world_model.hpp"
 
 namespace ballsight {
@@ -17,5 +18,9 @@ namespace ballsight {
 /// camera indices.
 nlohmann::json world_model_json(const WorldModel& world,
                                 const std::vector<std::string>& camera_names);
+
+/// What the court map of the web pages draws (web/court_map.js): {"length_m", "width_m",
+/// "area_length_m", "area_width_m", "net", "net_posts_outside_m"}.
+nlohmann::json site_court_json(const SiteCourt& court);
 
 }  // namespace ballsight

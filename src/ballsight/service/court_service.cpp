@@ -35,18 +35,27 @@ void CourtService::set_planner(PlannerKind kind, NavigationHub& hub) {
   republish(hub);
 }
 
+PlannerOptions CourtService::planner_options() const {
+  return publisher().planner();
+}
+
 std::vector<FieldCamera> CourtService::cameras() const {
   return publisher().cameras();
+}
+
+ServicePipeline CourtService::pipeline_setup() const {
+  return publisher().pipeline_setup();
 }
 
 std::optional<CameraView> CourtService::camera_view(std::size_t index) const {
   return publisher().camera_view(index);
 }
 
-UpdatePublisher::UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
+UpdatePublisher::UpdatePublisher(const Site& site, ServicePipeline pipeline,
                                  const PlannerOptions& planner)
     : site_(site),
-      pipeline_(std::move(pipeline)),
+      setup_(std::move(pipeline)),
+      pipeline_(make_service_pipeline(site_, setup_)),
       planner_(planner),
       views_(pipeline_->cameras().size()),
       next_planner_(planner) {
@@ -58,21 +67,29 @@ std::vector<FieldCamera> UpdatePublisher::cameras() const {
   return pipeline_->cameras();
 }
 
-void UpdatePublisher::replace_pipeline(std::unique_ptr<CourtPipeline> pipeline) {
+ServicePipeline UpdatePublisher::pipeline_setup() const {
   const std::lock_guard lock(pipeline_mutex_);
-  require(pipeline->cameras().size() == pipeline_->cameras().size(), "pipeline",
-          "is for another number of cameras");
-  pipeline_ = std::move(pipeline);
+  return setup_;
 }
 
-std::uint64_t UpdatePublisher::publish(const FrameSet& frames, NavigationHub& hub) {
-  return publish_result(frames, hub,
+void UpdatePublisher::replace_pipeline(ServicePipeline pipeline) {
+  std::unique_ptr<CourtPipeline> made = make_service_pipeline(site_, pipeline);
+  const std::lock_guard lock(pipeline_mutex_);
+  require(made->cameras().size() == pipeline_->cameras().size(), "pipeline",
+          "is for another number of cameras");
+  setup_ = std::move(pipeline);
+  pipeline_ = std::move(made);
+}
+
+std::uint64_t UpdatePublisher::publish(const FrameSet& frames, NavigationHub& hub,
+                                       const ClientReports* reports) {
+  return publish_result(frames, hub, reports,
                         [&](CourtPipeline& pipeline) { return pipeline.process(frames); });
 }
 
 std::uint64_t UpdatePublisher::publish_detections(const CameraDetectionLists& detections,
                                                   std::int64_t capture_ns, NavigationHub& hub) {
-  return publish_result({}, hub, [&](CourtPipeline& pipeline) {
+  return publish_result({}, hub, nullptr, [&](CourtPipeline& pipeline) {
     FrameSetResult result;
     result.detections = detections;
     result.camera_errors.resize(detections.size());
@@ -83,7 +100,7 @@ std::uint64_t UpdatePublisher::publish_detections(const CameraDetectionLists& de
 }
 
 std::uint64_t UpdatePublisher::publish_result(
-    const FrameSet& frames, NavigationHub& hub,
+    const FrameSet& frames, NavigationHub& hub, const ClientReports* reports,
     const std::function<FrameSetResult(CourtPipeline&)>& run) {
   const auto started = Clock::now();
   FrameSetResult result;
@@ -112,7 +129,7 @@ std::uint64_t UpdatePublisher::publish_result(
   const auto plan_started = Clock::now();
   // The views and the health's figures are there before anyone hears of the update (a client
   // that asks for the health once it has the update finds its frame set counted).
-  return plan_and_publish(hub, [&](std::uint64_t published_seq) {
+  return plan_and_publish(hub, reports, [&](std::uint64_t published_seq) {
     const double plan_ms = ms_since(plan_started);
     const std::lock_guard lock(mutex_);
     for (std::size_t k = 0; k < views.size() && k < views_.size(); ++k) {
@@ -132,24 +149,19 @@ std::uint64_t UpdatePublisher::publish_result(
   });
 }
 
-void UpdatePublisher::republish(NavigationHub& hub) {
+void UpdatePublisher::republish(NavigationHub& hub, const ClientReports* reports) {
   const std::lock_guard plan_lock(plan_mutex_);
   if (!last_world_) return;  // nothing seen yet
-  plan_and_publish(hub);
+  plan_and_publish(hub, reports);
 }
 
 std::uint64_t UpdatePublisher::plan_and_publish(
-    NavigationHub& hub, const std::function<void(std::uint64_t)>& published) {
+    NavigationHub& hub, const ClientReports* reports,
+    const std::function<void(std::uint64_t)>& published) {
   std::string error;
-  NavigationUpdate update;
-  try {
-    update = plan_update(site_, *last_world_, hub.reports(), previous_ ? &*previous_ : nullptr,
-                         planner_);
-  } catch (const InputError& e) {  // e.g. a pose the cameras put inside the net
-    error = e.what();
-    update.capture_time_ns = last_world_->capture_time_ns;
-    update.world = *last_world_;
-  }
+  NavigationUpdate update =
+      publishable_update(site_, *last_world_, reports ? *reports : hub.reports(),
+                         previous_ ? &*previous_ : nullptr, planner_, error);
   previous_ = update.route;
   const std::uint64_t seq = hub.publish(std::move(update), published);
   const std::lock_guard lock(mutex_);

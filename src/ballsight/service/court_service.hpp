@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "ballsight/pipeline/court_pipeline.hpp"
+#include "ballsight/pipeline/site_setup.hpp"
 #include "ballsight/plan/planning_problem.hpp"
 #include "ballsight/service/camera_view.hpp"
 #include "ballsight/service/navigation_hub.hpp"
@@ -44,6 +45,8 @@ class CourtService {
 
   /// The planner of the next plans.
   PlannerKind planner() const;
+  /// All of the next plans' options.
+  PlannerOptions planner_options() const;
   /// Plans with `kind` from now on, and plans the last world model again with it into `hub`.
   void set_planner(PlannerKind kind, NavigationHub& hub);
 
@@ -56,6 +59,8 @@ class CourtService {
 
   /// Every camera as the pipeline uses it (intrinsics and pose), in site order.
   std::vector<FieldCamera> cameras() const;
+  /// What its pipeline is made of (a recording keeps it, to replay the run).
+  ServicePipeline pipeline_setup() const;
   /// Camera `index`'s last frame through the pipeline; nullopt before its first. Any thread.
   std::optional<CameraView> camera_view(std::size_t index) const;
   /// Reads the cameras' calibration files again and runs the pipeline on them from the next
@@ -74,27 +79,32 @@ double smoothed_rate(double previous_hz, double sample_hz);
 /// published. Thread-safe.
 class UpdatePublisher {
  public:
-  UpdatePublisher(const Site& site, std::unique_ptr<CourtPipeline> pipeline,
-                  const PlannerOptions& planner);
+  /// Runs make_service_pipeline(site, pipeline). Throws InputError naming what is wrong.
+  UpdatePublisher(const Site& site, ServicePipeline pipeline, const PlannerOptions& planner);
 
   /// One frame set -> one update (with the set's capture time); its seq. Reports of collected
   /// balls the frames confirm are forgotten. A pipeline failure publishes nothing (0) and is
-  /// counted (health).
-  std::uint64_t publish(const FrameSet& frames, NavigationHub& hub);
+  /// counted (health). The plan weighs the hub's reports, or `reports` when given (a replay: the
+  /// reports the recorded update was planned with).
+  std::uint64_t publish(const FrameSet& frames, NavigationHub& hub,
+                        const ClientReports* reports = nullptr);
   /// The same from detections made elsewhere (camera nodes): one list per camera in camera
   /// order, nullopt for a camera without a usable frame; only the pipeline's fusion runs here.
   std::uint64_t publish_detections(const CameraDetectionLists& detections, std::int64_t capture_ns,
                                    NavigationHub& hub);
   /// The last world model planned again and published; nothing before the first frame set.
-  void republish(NavigationHub& hub);
+  void republish(NavigationHub& hub, const ClientReports* reports = nullptr);
 
   /// The planner of the next plans (validated first; throws InputError).
   void set_planner(const PlannerOptions& planner);
   PlannerOptions planner() const;
 
   std::vector<FieldCamera> cameras() const;
-  /// Runs `pipeline` (for the same cameras) from the next frame set on. Any thread.
-  void replace_pipeline(std::unique_ptr<CourtPipeline> pipeline);
+  /// What the pipeline of the next frame set is made of.
+  ServicePipeline pipeline_setup() const;
+  /// Runs the pipeline made of `pipeline` (for the same cameras) from the next frame set on. Any
+  /// thread. Throws InputError for another number of cameras.
+  void replace_pipeline(ServicePipeline pipeline);
   /// Camera `index`'s last frame and detections; nullopt before its first frame. Any thread.
   std::optional<CameraView> camera_view(std::size_t index) const;
 
@@ -105,13 +115,15 @@ class UpdatePublisher {
  private:
   // Runs the pipeline (`run`), keeps each camera's frame of `frames` (if any) as its view.
   std::uint64_t publish_result(const FrameSet& frames, NavigationHub& hub,
+                               const ClientReports* reports,
                                const std::function<FrameSetResult(CourtPipeline&)>& run);
   // plan_mutex_ held; the update's seq (`published(seq)` runs before the hub's listeners).
-  std::uint64_t plan_and_publish(NavigationHub& hub,
+  std::uint64_t plan_and_publish(NavigationHub& hub, const ClientReports* reports,
                                  const std::function<void(std::uint64_t)>& published = {});
 
   const Site& site_;
-  mutable std::mutex pipeline_mutex_;  // guards pipeline_ (held while it runs)
+  mutable std::mutex pipeline_mutex_;  // guards pipeline_ and its setup (held while it runs)
+  ServicePipeline setup_;
   std::unique_ptr<CourtPipeline> pipeline_;
   std::mutex plan_mutex_;  // guards the planner's use, the last world, its time, the route
   PlannerOptions planner_;

@@ -200,11 +200,12 @@ json route_poses(const Route& route, std::int64_t time_ns) {
   return {{"timestamp", stamp(time_ns)}, {"frame_id", kCourtFrame}, {"poses", poses}};
 }
 
-json compressed_image(std::string_view jpeg, const std::string& frame_id, std::int64_t time_ns) {
+json compressed_image(std::string_view bytes, std::string_view format, const std::string& frame_id,
+                      std::int64_t time_ns) {
   return {{"timestamp", stamp(time_ns)},
           {"frame_id", frame_id},
-          {"data", base64(jpeg)},
-          {"format", "jpeg"}};
+          {"data", base64(bytes)},
+          {"format", format}};
 }
 
 json image_annotations(const std::vector<PixelDetection>& detections, std::int64_t time_ns) {

@@ -43,10 +43,10 @@ nlohmann::json balls_scene(const WorldModel& world, double ball_radius_m, std::i
 std::optional<nlohmann::json> robot_pose(const WorldModel& world, std::int64_t time_ns);
 /// The route's waypoints, each heading to the next.
 nlohmann::json route_poses(const Route& route, std::int64_t time_ns);
-/// A JPEG frame of camera `frame_id` (its bytes base64 in "data", as Foxglove's JSON encoding
-/// carries bytes).
-nlohmann::json compressed_image(std::string_view jpeg, const std::string& frame_id,
-                                std::int64_t time_ns);
+/// A frame of camera `frame_id` encoded as `format` ("jpeg" or "png"; its bytes base64 in "data",
+/// as Foxglove's JSON encoding carries bytes).
+nlohmann::json compressed_image(std::string_view bytes, std::string_view format,
+                                const std::string& frame_id, std::int64_t time_ns);
 /// A circle per detection (balls yellow, the robot's markers red and blue, obstacles grey), in
 /// Foxglove's image coordinates (origin at the top-left pixel's corner).
 nlohmann::json image_annotations(const std::vector<PixelDetection>& detections,

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <random>
-#include <tuple>
 #include <utility>
 
+#include "ballsight/core/closest_pairs.hpp"
 #include "ballsight/core/error.hpp"
 
 namespace ballsight {
@@ -169,27 +169,8 @@ std::vector<Vec2> NavigationHub::take_for_hand() {
 
 std::vector<bool> taken_by_reports(const std::vector<Vec2>& balls,
                                    const std::vector<Vec2>& collected) {
-  struct Pair {
-    double distance;
-    std::size_t report, ball;
-  };
-  std::vector<Pair> pairs;
-  for (std::size_t r = 0; r < collected.size(); ++r) {
-    for (std::size_t b = 0; b < balls.size(); ++b) {
-      const double d = (collected[r] - balls[b]).norm();
-      if (d < kCollectedMatchM) pairs.push_back({d, r, b});
-    }
-  }
-  std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
-    return std::tie(a.distance, a.report, a.ball) < std::tie(b.distance, b.report, b.ball);
-  });
   std::vector<bool> taken(balls.size(), false);
-  std::vector<bool> used(collected.size(), false);
-  for (const Pair& p : pairs) {
-    if (used[p.report] || taken[p.ball]) continue;
-    used[p.report] = true;
-    taken[p.ball] = true;
-  }
+  for (const PointPair& p : closest_pairs(collected, balls, kCollectedMatchM)) taken[p.b] = true;
   return taken;
 }
 

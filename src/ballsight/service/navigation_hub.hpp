@@ -31,16 +31,6 @@ struct UnreachableMark {
   std::string reason;
 };
 
-/// One published value: what the cameras saw and where the robot should go.
-struct NavigationUpdate {
-  std::uint64_t seq = 0;             // 1, 2, ... in publishing order
-  std::int64_t capture_time_ns = 0;  // UTC, when the frames behind it were captured
-  std::int64_t published_ns = 0;     // UTC, when it was published
-  WorldModel world;
-  Route route;
-  std::vector<UnreachableMark> given_up;  // the balls the robot marked unreachable, oldest first
-};
-
 /// A pose or ball list a client set (PUT), with when it was set.
 template <class T>
 struct External {
@@ -59,6 +49,18 @@ struct ClientReports {
   std::optional<External<int>> basket;
   /// Balls the robot marked unreachable.
   std::vector<UnreachableMark> unreachable;
+};
+
+/// One published value: what the cameras saw and where the robot should go.
+struct NavigationUpdate {
+  std::uint64_t seq = 0;             // 1, 2, ... in publishing order
+  std::int64_t capture_time_ns = 0;  // UTC, when the frames behind it were captured
+  std::int64_t published_ns = 0;     // UTC, when it was published
+  WorldModel world;
+  Route route;
+  /// What clients had reported when it was planned (a recording keeps it, to replay the plan);
+  /// its `unreachable` are the balls the robot gave up on, oldest first.
+  ClientReports reports;
 };
 
 /// A ball reported collected is a ball seen this close to where it was reported.

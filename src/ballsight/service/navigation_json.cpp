@@ -25,7 +25,7 @@ nlohmann::json navigation_json(const NavigationUpdate& update, const std::string
           {"published_ns", update.published_ns},
           {"world", world_model_json(update.world, camera_names)},
           {"route", route_json(update.route)},
-          {"given_up", marks_json(update.given_up)}};
+          {"given_up", marks_json(update.reports.unreachable)}};
 }
 
 nlohmann::json client_reports_json(const ClientReports& reports) {
@@ -42,13 +42,42 @@ nlohmann::json client_reports_json(const ClientReports& reports) {
                     {"set_ns", reports.robot->set_ns}};
   }
   if (reports.balls) {
-    out["balls"] = {{"count", reports.balls->value.size()}, {"set_ns", reports.balls->set_ns}};
+    nlohmann::json m = nlohmann::json::array();
+    for (const Vec2& b : reports.balls->value) m.push_back({b.x(), b.y()});
+    out["balls"] = {{"count", reports.balls->value.size()},
+                    {"m", std::move(m)},
+                    {"set_ns", reports.balls->set_ns}};
   }
   for (const Vec2& c : reports.collected) out["collected"].push_back({c.x(), c.y()});
   if (reports.basket) {
     out["basket"] = {{"held", reports.basket->value}, {"set_ns", reports.basket->set_ns}};
   }
   return out;
+}
+
+ClientReports parse_client_reports(const nlohmann::json& json) {
+  const auto point = [](const nlohmann::json& p) {
+    return Vec2(p.at(0).get<double>(), p.at(1).get<double>());
+  };
+  ClientReports reports;
+  if (const nlohmann::json& r = json.at("robot"); !r.is_null()) {
+    reports.robot = {
+        {{r.at("x_m").get<double>(), r.at("y_m").get<double>()}, r.at("heading_rad").get<double>()},
+        r.at("set_ns").get<std::int64_t>()};
+  }
+  if (const nlohmann::json& b = json.at("balls"); !b.is_null()) {
+    reports.balls = {{}, b.at("set_ns").get<std::int64_t>()};
+    for (const nlohmann::json& p : b.at("m")) reports.balls->value.push_back(point(p));
+  }
+  for (const nlohmann::json& p : json.at("collected")) reports.collected.push_back(point(p));
+  if (const nlohmann::json& b = json.at("basket"); !b.is_null()) {
+    reports.basket = {b.at("held").get<int>(), b.at("set_ns").get<std::int64_t>()};
+  }
+  for (const nlohmann::json& m : json.at("unreachable")) {
+    reports.unreachable.push_back({{m.at("x_m").get<double>(), m.at("y_m").get<double>()},
+                                   m.at("reason").get<std::string>()});
+  }
+  return reports;
 }
 
 }  // namespace ballsight

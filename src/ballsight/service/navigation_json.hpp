@@ -16,8 +16,11 @@ nlohmann::json navigation_json(const NavigationUpdate& update, const std::string
                                const std::vector<std::string>& camera_names);
 
 /// What clients reported (ClientReports): {"robot": {"x_m", "y_m", "heading_rad", "set_ns"} or
-/// null, "balls": {"count", "set_ns"} or null, "collected": [[x, y], ...], "basket": {"held",
-/// "set_ns"} or null, "unreachable": [{"x_m", "y_m", "reason"}]}.
+/// null, "balls": {"count", "m": [[x, y], ...], "set_ns"} or null, "collected": [[x, y], ...],
+/// "basket": {"held", "set_ns"} or null, "unreachable": [{"x_m", "y_m", "reason"}]}.
 nlohmann::json client_reports_json(const ClientReports& reports);
+/// client_reports_json's inverse. Throws nlohmann::json::exception for a document of another
+/// shape.
+ClientReports parse_client_reports(const nlohmann::json& json);
 
 }  // namespace ballsight

@@ -16,24 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-/// Each camera's topic prefix, "/camera/NAME" with the name's letters, digits and '_' (others
-/// become '_': "camera 0" -> "camera_0"), made unique by its index where two would be the same.
-std::vector<std::string> camera_topics(const std::vector<std::string>& names) {
-  std::vector<std::string> topics;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    std::string topic = "/camera/";
-    for (const char c : names[k]) {
-      topic += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
-    }
-    if (std::find(topics.begin(), topics.end(), topic) != topics.end()) {
-      topic += '_';
-      topic += std::to_string(k);
-    }
-    topics.push_back(topic);
-  }
-  return topics;
-}
-
 enum Topic : std::size_t {
   kNavigation,
   kBalls,
@@ -58,6 +40,22 @@ json recorder_status_schema() {
 }
 
 }  // namespace
+
+std::vector<std::string> camera_topics(const std::vector<std::string>& names) {
+  std::vector<std::string> topics;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    std::string topic = "/camera/";
+    for (const char c : names[k]) {
+      topic += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
+    }
+    if (std::find(topics.begin(), topics.end(), topic) != topics.end()) {
+      topic += '_';
+      topic += std::to_string(k);
+    }
+    topics.push_back(topic);
+  }
+  return topics;
+}
 
 RunFile::RunFile(const std::filesystem::path& path, const RunDescription& run, std::uint64_t number)
     : run_(run) {
@@ -99,10 +97,12 @@ RunFile::RunFile(const std::filesystem::path& path, const RunDescription& run, s
                      {"cameras", cameras},
                      {"file", std::to_string(number)},
                      {"frame_every", std::to_string(run.frame_every)},
+                     {"frames", run.frames == FrameEncoding::png ? "png" : "jpeg"},
                      {"compression", mcap::compression_name(run.compression)}}});
   // The site file and the cameras' calibrations, as they were when the file was begun.
-  std::vector<std::filesystem::path> files{run.site.file};
-  for (const SiteCamera& camera : run.site.cameras) files.push_back(camera.calibration_file);
+  const Site& site = run.setup.site;
+  std::vector<std::filesystem::path> files{site.file};
+  for (const SiteCamera& camera : site.cameras) files.push_back(camera.calibration_file);
   for (const std::filesystem::path& file : files) {
     if (file.empty() || !std::filesystem::is_regular_file(file)) continue;
     w.attach({static_cast<std::uint64_t>(now),
@@ -111,7 +111,8 @@ RunFile::RunFile(const std::filesystem::path& path, const RunDescription& run, s
               "application/yaml",
               {read_file(file)}});
   }
-  put(kCourt, 0, now, now, foxglove::court_scene(run.site.court, now));
+  for (const mcap::Attachment& a : run.setup_attachments) w.attach(a);
+  put(kCourt, 0, now, now, foxglove::court_scene(site.court, now));
 }
 
 RunFile::~RunFile() = default;
@@ -132,23 +133,28 @@ void RunFile::write_update(const NavigationUpdate& u, const std::vector<CameraVi
   };
   put_at(kNavigation, u.published_ns, navigation_json(u, run_.service_id, run_.camera_names));
   put_at(kBalls, u.capture_time_ns,
-         foxglove::balls_scene(u.world, run_.site.ball_radius_m, u.capture_time_ns));
+         foxglove::balls_scene(u.world, run_.setup.site.ball_radius_m, u.capture_time_ns));
   if (const std::optional<json> robot = foxglove::robot_pose(u.world, u.capture_time_ns)) {
     put_at(kRobot, u.capture_time_ns, *robot);
   }
   put_at(kRoute, u.capture_time_ns, foxglove::route_poses(u.route, u.capture_time_ns));
-  const std::vector<int> jpeg{cv::IMWRITE_JPEG_QUALITY, run_.jpeg_quality};
+  const bool png = run_.frames == FrameEncoding::png;
+  // PNG at zlib level 1: lossless at a third of level 3's time, a little larger.
+  const std::vector<int> parameters =
+      png ? std::vector<int>{cv::IMWRITE_PNG_COMPRESSION, 1}
+          : std::vector<int>{cv::IMWRITE_JPEG_QUALITY, run_.jpeg_quality};
   for (std::size_t k = 0; k < views.size() && k < run_.camera_names.size(); ++k) {
     const CameraView& view = views[k];
     if (view.frame.empty()) continue;
     std::vector<std::uint8_t> bytes;
-    if (!cv::imencode(".jpg", view.frame, bytes, jpeg)) {
+    if (!cv::imencode(png ? ".png" : ".jpg", view.frame, bytes, parameters)) {
       throw std::runtime_error("camera " + run_.camera_names[k] +
-                               ": the frame does not encode as JPEG");
+                               ": the frame does not encode as " + (png ? "PNG" : "JPEG"));
     }
     const std::string_view data(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     put_at(kFixedTopics + 2 * k, view.capture_ns,
-           foxglove::compressed_image(data, run_.camera_names[k], view.capture_ns));
+           foxglove::compressed_image(data, png ? "png" : "jpeg", run_.camera_names[k],
+                                      view.capture_ns));
     put_at(kFixedTopics + 2 * k + 1, view.capture_ns,
            foxglove::image_annotations(view.detections, view.capture_ns));
   }

@@ -13,6 +13,7 @@
 #include "ballsight/record/compression.hpp"
 #include "ballsight/service/camera_view.hpp"
 #include "ballsight/service/navigation_hub.hpp"
+#include "ballsight/service/run_setup.hpp"
 #include "ballsight/world/site.hpp"
 
 namespace ballsight {
@@ -21,15 +22,28 @@ namespace mcap {
 class McapWriter;
 }
 
+/// How a recording encodes the frames: JPEG (small; a replay sees slightly other frames than the
+/// pipeline saw) or PNG (lossless: a replay sees exactly the pipeline's frames).
+enum class FrameEncoding { jpeg, png };
+
 /// What every file of a run says about it.
 struct RunDescription {
   std::string service_id;
   std::vector<std::string> camera_names;
-  Site site;  // its court and ball size; its files, when it has them, become attachments
+  /// The site (its files, when it has them, become attachments), the pipeline and the planner
+  /// as the recording began: what a replay needs (run_setup.hpp).
+  RunSetup setup;
+  /// run_setup_attachments(setup): encoded once for all the run's files.
+  std::vector<mcap::Attachment> setup_attachments;
   int frame_every = 1;
   mcap::Compression compression = mcap::Compression::zstd;
+  FrameEncoding frames = FrameEncoding::jpeg;
   int jpeg_quality = 85;
 };
+
+/// Each camera's topic prefix, "/camera/NAME" with the name's letters, digits and '_' (others
+/// become '_': "camera 0" -> "camera_0"), made unique by its index where two would be the same.
+std::vector<std::string> camera_topics(const std::vector<std::string>& names);
 
 class RunFile {
  public:

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ballsight/core/error.hpp"
+#include "ballsight/core/utc_clock.hpp"
 #include "ballsight/service/navigation_json.hpp"
 
 namespace ballsight {
@@ -13,6 +14,20 @@ std::filesystem::path numbered(const std::filesystem::path& first, std::uint64_t
   if (n == 1) return first;
   return first.parent_path() /
          (first.stem().string() + "-" + std::to_string(n) + first.extension().string());
+}
+
+RunDescription describe_run(const NavigationHub& hub, const CourtService& service,
+                            const RecordOptions& o) {
+  RunDescription run{hub.service_id(),
+                     service.camera_names(),
+                     {service.site(), service.pipeline_setup(), service.planner_options()},
+                     {},
+                     o.frame_every,
+                     o.compression,
+                     o.frames,
+                     o.jpeg_quality};
+  run.setup_attachments = run_setup_attachments(run.setup, utc_now_ns());
+  return run;
 }
 
 }  // namespace
@@ -26,12 +41,10 @@ void RecordOptions::validate() const {
 }
 
 RunRecorder::RunRecorder(NavigationHub& hub, const CourtService& service, RecordOptions options)
-    : hub_(hub), service_(service), options_(std::move(options)), run_{hub.service_id(),
-                                                                       service.camera_names(),
-                                                                       service.site(),
-                                                                       options_.frame_every,
-                                                                       options_.compression,
-                                                                       options_.jpeg_quality} {
+    : hub_(hub),
+      service_(service),
+      options_(std::move(options)),
+      run_(describe_run(hub, service, options_)) {
   options_.validate();
   begin_file();
   thread_ = std::thread([this] { run(); });
@@ -51,6 +64,7 @@ RecorderCounts RunRecorder::finish() {
       stopping_ = true;
     }
     wake_.notify_all();
+    room_.notify_all();
     thread_.join();
   }
   return counts();
@@ -62,14 +76,17 @@ RunRecorder::~RunRecorder() {
 
 void RunRecorder::on_published(std::uint64_t seq) {
   // Nothing is copied for an update that is dropped or not recorded.
-  const auto full = [&] {
+  const auto full = [&](std::unique_lock<std::mutex>& lock) {
+    if (options_.wait_for_room) {
+      room_.wait(lock, [&] { return queue_.size() < options_.queue || stopping_; });
+    }
     if (queue_.size() < options_.queue) return false;
     ++counts_.dropped;
     return true;
   };
   {
-    const std::lock_guard lock(mutex_);
-    if (stopping_ || !counts_.error.empty() || full()) return;
+    std::unique_lock lock(mutex_);
+    if (stopping_ || !counts_.error.empty() || full(lock)) return;
   }
   std::optional<NavigationUpdate> update = hub_.find(seq);
   if (!update) return;
@@ -96,10 +113,9 @@ void RunRecorder::on_published(std::uint64_t seq) {
                    [](const CameraView& v) { return !v.frame.empty(); })) {
     views.clear();
   }
-  ClientReports reports = hub_.reports();
-  const std::lock_guard lock(mutex_);
-  if (full()) return;  // another publishing thread filled it meanwhile
-  queue_.push_back({std::move(*update), std::move(views), std::move(reports)});
+  std::unique_lock lock(mutex_);
+  if (full(lock)) return;  // another publishing thread filled it meanwhile
+  queue_.push_back({std::move(*update), std::move(views)});
   wake_.notify_one();
 }
 
@@ -113,12 +129,14 @@ void RunRecorder::run() {
       job = std::move(queue_.front());
       queue_.pop_front();
     }
+    room_.notify_all();
     try {
       write(job);
     } catch (const std::exception& e) {
       const std::lock_guard lock(mutex_);
       counts_.error = e.what();
       queue_.clear();
+      room_.notify_all();
       break;
     }
   }
@@ -158,7 +176,7 @@ void RunRecorder::write(const Job& job) {
   ++updates_in_file_;
   const NavigationUpdate& u = job.update;
   file_->write_update(u, job.views);
-  const nlohmann::json reports = client_reports_json(job.reports);
+  const nlohmann::json reports = client_reports_json(u.reports);
   if (std::string text = reports.dump(); text != reports_recorded_) {
     file_->write_side(RunFile::Side::reports, u, reports);
     reports_recorded_ = std::move(text);

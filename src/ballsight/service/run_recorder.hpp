@@ -35,9 +35,14 @@ struct RecordOptions {
   /// A file that reaches this size is closed and the next one begun (0: no limit): FILE.mcap,
   /// then FILE-2.mcap, FILE-3.mcap, ...
   double max_mb = 0.0;
+  FrameEncoding frames = FrameEncoding::jpeg;
   int jpeg_quality = 85;
   /// Updates waiting to be written; more are dropped (counted).
   std::size_t queue = 8;
+  /// Instead of dropping, the publishing thread waits for room: nothing is lost and the service
+  /// runs at the writer's pace. For an evaluation in simulated time (a lossless recording to
+  /// replay), never for a live court.
+  bool wait_for_room = false;
 
   /// Throws InputError naming the option for a value out of range.
   void validate() const;
@@ -71,7 +76,6 @@ class RunRecorder {
   struct Job {
     NavigationUpdate update;
     std::vector<CameraView> views;  // the frame set's, when its frames are recorded
-    ClientReports reports;          // what clients had reported when it was published
   };
   void on_published(std::uint64_t seq);
   void run();
@@ -85,6 +89,7 @@ class RunRecorder {
 
   mutable std::mutex mutex_;  // guards the queue, the counts and stopping_
   std::condition_variable wake_;
+  std::condition_variable room_;  // the writer took an update from the queue
   std::deque<Job> queue_;
   RecorderCounts counts_;
   bool stopping_ = false;

@@ -28,16 +28,22 @@ sim::CourtScene make_scene(const sim::CourtRig& rig, const SimulatedCourtOptions
 
 }  // namespace
 
+SiteCourt site_court(const sim::TennisCourtSpec& court) {
+  SiteCourt site;
+  site.length_m = court.length_m;
+  site.width_m = court.doubles_width_m;
+  site.area_length_m = court.surround_length_m;
+  site.area_width_m = court.surround_width_m;
+  site.net = court.net.enabled;
+  site.net_posts_outside_m = court.net.post_outside_doubles_m;
+  site.net_height_posts_m = court.net.post_height_m;
+  site.net_height_centre_m = court.net.centre_height_m;
+  return site;
+}
+
 Site simulated_site(const sim::CourtRig& rig) {
   Site site;
-  site.court.length_m = rig.court.length_m;
-  site.court.width_m = rig.court.doubles_width_m;
-  site.court.area_length_m = rig.court.surround_length_m;
-  site.court.area_width_m = rig.court.surround_width_m;
-  site.court.net = rig.court.net.enabled;
-  site.court.net_posts_outside_m = rig.court.net.post_outside_doubles_m;
-  site.court.net_height_posts_m = rig.court.net.post_height_m;
-  site.court.net_height_centre_m = rig.court.net.centre_height_m;
+  site.court = site_court(rig.court);
   site.robot.collector_width_m = 0.70;  // the report's collector (section 7.8)
   const std::vector<Vec3> references = sim::reference_ball_positions(rig.court);
   for (size_t i = 0; i < references.size(); ++i)

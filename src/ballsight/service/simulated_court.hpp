@@ -19,6 +19,9 @@
 
 namespace ballsight {
 
+/// The simulated court's size and net as a site file gives them.
+SiteCourt site_court(const sim::TennisCourtSpec& court);
+
 /// The site file a user of the simulated court would write: court size, the reference balls'
 /// floor positions, the colours, and each camera's pole corner as a rough position hint (5 m
 /// high, at the corner of the run-off area; not the simulator's exact pose).

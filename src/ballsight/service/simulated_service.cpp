@@ -143,15 +143,14 @@ SimulatedCourtService::SimulatedCourtService(const SimulatedServiceOptions& opti
   s.balls_left = s.world->balls_left();
   s.start = s.world->motion().pose;
   s.robot = s.world->motion().pose;
-  std::vector<FieldCamera> cameras = s.court->cameras();
-  BallsightPipelineOptions pipeline = service_pipeline_options(site);
-  for (std::size_t c = 0; c < cameras.size(); ++c)
-    pipeline.empty_court.push_back(s.court->empty_court(c));
-  s.publisher = std::make_unique<UpdatePublisher>(
-      site,
-      options.report_pipeline ? make_seed_pipeline(std::move(cameras), seed_options_for_site(site))
-                              : make_ballsight_pipeline(std::move(cameras), pipeline),
-      options.planner);
+  ServicePipeline pipeline{CourtMethod::ballsight, s.court->cameras(), {}};
+  if (options.report_pipeline) {
+    pipeline.method = CourtMethod::seed;
+  } else {
+    for (std::size_t c = 0; c < pipeline.cameras.size(); ++c)
+      pipeline.empty_court.push_back(s.court->empty_court(c));
+  }
+  s.publisher = std::make_unique<UpdatePublisher>(site, std::move(pipeline), options.planner);
 }
 
 SimulatedCourtService::~SimulatedCourtService() = default;

@@ -21,7 +21,7 @@ constexpr EnumNames<CaptureState, 5> kStateNames{{{CaptureState::starting, "star
 SiteCourtService::SiteCourtService(Site site, const SiteServiceOptions& options)
     : site_(std::move(site)), options_(options) {
   publisher_ = std::make_unique<UpdatePublisher>(
-      site_, make_ballsight_pipeline(site_field_cameras(site_), service_pipeline_options(site_)),
+      site_, ServicePipeline{CourtMethod::ballsight, site_field_cameras(site_), {}},
       options.planner);
   const auto log = [](const std::string& message) {
     std::cerr << "ballsight serve: " << message << "\n";
@@ -36,8 +36,7 @@ SiteCourtService::SiteCourtService(Site site, const SiteServiceOptions& options)
 SiteCourtService::~SiteCourtService() = default;
 
 void SiteCourtService::reload_calibration() {
-  publisher_->replace_pipeline(
-      make_ballsight_pipeline(site_field_cameras(site_), service_pipeline_options(site_)));
+  publisher_->replace_pipeline({CourtMethod::ballsight, site_field_cameras(site_), {}});
 }
 
 void SiteCourtService::run(NavigationHub& hub, const std::atomic<bool>& stop) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "ballsight/core/error.hpp"
 #include "ballsight/pipeline/planning_input.hpp"
 #include "ballsight/plan/planner.hpp"
 
@@ -34,7 +35,7 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
   }
   // Less the balls the robot reported collected, one for each report, and those it gave up on.
   const std::vector<bool> taken = taken_by_reports(distinct, reports.collected);
-  update.given_up = reports.unreachable;
+  update.reports = reports;
   const auto given_up = [&](const Vec2& b) {
     return std::any_of(
         reports.unreachable.begin(), reports.unreachable.end(),
@@ -63,6 +64,22 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
   }
   update.route = plan(problem, planner);
   return update;
+}
+
+NavigationUpdate publishable_update(const Site& site, const WorldModel& world,
+                                    const ClientReports& reports, const Route* previous,
+                                    const PlannerOptions& options, std::string& error) {
+  error.clear();
+  try {
+    return plan_update(site, world, reports, previous, options);
+  } catch (const InputError& e) {
+    error = e.what();
+    NavigationUpdate update;
+    update.capture_time_ns = world.capture_time_ns;
+    update.world = world;
+    update.reports = reports;
+    return update;
+  }
 }
 
 }  // namespace ballsight

@@ -23,4 +23,11 @@ NavigationUpdate plan_update(const Site& site, const WorldModel& world,
                              const ClientReports& reports, const Route* previous,
                              const PlannerOptions& options);
 
+/// What the service publishes: plan_update's update, or, when the world cannot be planned (an
+/// InputError: a pose the cameras put inside the net), the world with no route, and `error` says
+/// why ("" when it was planned).
+NavigationUpdate publishable_update(const Site& site, const WorldModel& world,
+                                    const ClientReports& reports, const Route* previous,
+                                    const PlannerOptions& options, std::string& error);
+
 }  // namespace ballsight

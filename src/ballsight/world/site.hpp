@@ -101,4 +101,10 @@ Site parse_site(std::string_view text, const std::filesystem::path& file);
 /// Reads and parses a site file.
 Site read_site(const std::filesystem::path& file);
 
+/// `site` as a site file's text that parse_site reads back to the same values (numbers in their
+/// shortest exact form): what a recording keeps to replay the run (docs/recording.md). Paths are
+/// written as they are; a camera without a calibration file gets `NAME.yml`, one without a
+/// source file `NAME.png`, so that the text parses.
+std::string site_file_text(const Site& site);
+
 }  // namespace ballsight
