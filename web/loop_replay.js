@@ -47,15 +47,15 @@ export function startLoopReplay(root, site, runs) {
   const clock = root.querySelector("output");
   const picker = root.querySelector("select");
   let run = runs[0];
+  let time = 0; // seconds into the run shown (the slider rounds to its step; playing does not)
   let playing = null; // the animation frame's id while playing
 
   const show = () => {
-    const t = Number(slider.value);
-    const state = loopStateAt(run, t);
+    const state = loopStateAt(run, time);
     drawCourtMap(canvas, site, state);
     const { x_m, y_m } = state.world.robot;
     root.dataset.robot = `${x_m},${y_m}`;
-    clock.value = `${t.toFixed(1)} s of ${run.duration_s.toFixed(1)} s: ${state.world.balls.length} of ${run.balls.length} balls left`;
+    clock.value = `${time.toFixed(1)} s of ${run.duration_s.toFixed(1)} s: ${state.world.balls.length} of ${run.balls.length} balls left`;
   };
   const stop = () => {
     if (playing !== null) cancelAnimationFrame(playing);
@@ -66,28 +66,30 @@ export function startLoopReplay(root, site, runs) {
     stop();
     run = runs[index];
     slider.max = String(run.duration_s);
+    time = 0;
     slider.value = "0";
     show();
   };
 
   runs.forEach((r, k) => picker.add(new Option(r.name, String(k))));
   picker.addEventListener("change", () => select(Number(picker.value)));
-  slider.step = "0.1";
+  slider.step = "any";
   slider.addEventListener("input", () => {
     stop();
+    time = Number(slider.value);
     show();
   });
   play.addEventListener("click", () => {
     if (playing !== null) return stop();
-    if (Number(slider.value) >= run.duration_s) slider.value = "0";
+    if (time >= run.duration_s) time = 0;
     play.textContent = "Pause";
     let last = performance.now();
     const step = (now) => {
-      const t = Math.min(run.duration_s, Number(slider.value) + ((now - last) / 1000) * PLAY_SPEED);
+      time = Math.min(run.duration_s, time + ((now - last) / 1000) * PLAY_SPEED);
       last = now;
-      slider.value = String(t);
+      slider.value = String(time);
       show();
-      if (t >= run.duration_s) return stop();
+      if (time >= run.duration_s) return stop();
       playing = requestAnimationFrame(step);
     };
     playing = requestAnimationFrame(step);

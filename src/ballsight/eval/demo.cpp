@@ -202,8 +202,9 @@ std::string loop_details(const std::vector<LoopDemoRun>& runs, const fs::path& o
   std::string events, recordings;
   for (const LoopDemoRun& r : runs) {
     for (const fs::path& file : r.recordings) {
-      const std::string link = fs::relative(file, out_dir).generic_string();
-      recordings += "<li><a href=\"" + link + "\">" + link + "</a> (" + r.name + ")</li>";
+      const std::string link = html_escaped(fs::relative(file, out_dir).generic_string());
+      recordings +=
+          "<li><a href=\"" + link + "\">" + link + "</a> (" + html_escaped(r.name) + ")</li>";
     }
     const std::string map = "loop/" + r.name + "/map.png";
     const std::string latency = "loop/" + r.name + "/latency.png";
@@ -259,9 +260,9 @@ LoopReplay loop_replay(const std::vector<LoopDemoRun>& runs, const fs::path& web
     data["runs"].push_back(std::move(run));
   }
   std::string json = data.dump();
-  // Inside a <script> element "</" would end it.
-  for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 2))
-    json.replace(at, 2, "<\\/");
+  // Inside a <script> element "</" or "<!--" would upset it: every "<" as its JSON escape.
+  for (std::size_t at = json.find('<'); at != std::string::npos; at = json.find('<', at + 6))
+    json.replace(at, 1, "\\u003c");
   const std::string html =
       "<div class=\"replay\" id=\"loop-replay\"><div class=\"controls\"><label>Run "
       "<select></select></label><button type=\"button\">Play</button><input type=\"range\" "

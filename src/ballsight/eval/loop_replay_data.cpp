@@ -43,7 +43,10 @@ nlohmann::json loop_replay_json(const LoopTruth& truth) {
     routes.push_back({rounded(r.time_s, 0.01), std::move(waypoints)});
     last = &r.waypoints_m;
   }
-  return {{"duration_s", map.duration_s}, {"path", path}, {"balls", balls}, {"routes", routes}};
+  return {{"duration_s", rounded(map.duration_s, 0.01)},
+          {"path", path},
+          {"balls", balls},
+          {"routes", routes}};
 }
 
 }  // namespace ballsight

@@ -47,6 +47,10 @@ ServicePipeline CourtService::pipeline_setup() const {
   return publisher().pipeline_setup();
 }
 
+std::uint64_t CourtService::pipeline_generation() const {
+  return publisher().pipeline_generation();
+}
+
 std::optional<CameraView> CourtService::camera_view(std::size_t index) const {
   return publisher().camera_view(index);
 }
@@ -79,6 +83,7 @@ void UpdatePublisher::replace_pipeline(ServicePipeline pipeline) {
           "is for another number of cameras");
   setup_ = std::move(pipeline);
   pipeline_ = std::move(made);
+  ++generation_;
 }
 
 std::uint64_t UpdatePublisher::publish(const FrameSet& frames, NavigationHub& hub,
@@ -149,10 +154,10 @@ std::uint64_t UpdatePublisher::publish_result(
   });
 }
 
-void UpdatePublisher::republish(NavigationHub& hub, const ClientReports* reports) {
+std::uint64_t UpdatePublisher::republish(NavigationHub& hub, const ClientReports* reports) {
   const std::lock_guard plan_lock(plan_mutex_);
-  if (!last_world_) return;  // nothing seen yet
-  plan_and_publish(hub, reports);
+  if (!last_world_) return 0;  // nothing seen yet
+  return plan_and_publish(hub, reports);
 }
 
 std::uint64_t UpdatePublisher::plan_and_publish(
@@ -176,8 +181,9 @@ void UpdatePublisher::set_planner(const PlannerOptions& planner) {
     next_planner_ = planner;
   }
   const std::lock_guard plan_lock(plan_mutex_);
+  // Another planner starts afresh, not from the other one's route; the same one goes on.
+  if (planner.kind != planner_.kind) previous_.reset();
   planner_ = planner;
-  previous_.reset();  // another planner starts afresh, not from the other one's route
 }
 
 PlannerOptions UpdatePublisher::planner() const {

@@ -59,8 +59,10 @@ class CourtService {
 
   /// Every camera as the pipeline uses it (intrinsics and pose), in site order.
   std::vector<FieldCamera> cameras() const;
-  /// What its pipeline is made of (a recording keeps it, to replay the run).
+  /// What its pipeline is made of (a recording keeps it, to replay the run), and how many times
+  /// it was replaced (UpdatePublisher::pipeline_generation).
   ServicePipeline pipeline_setup() const;
+  std::uint64_t pipeline_generation() const;
   /// Camera `index`'s last frame through the pipeline; nullopt before its first. Any thread.
   std::optional<CameraView> camera_view(std::size_t index) const;
   /// Reads the cameras' calibration files again and runs the pipeline on them from the next
@@ -92,16 +94,21 @@ class UpdatePublisher {
   /// order, nullopt for a camera without a usable frame; only the pipeline's fusion runs here.
   std::uint64_t publish_detections(const CameraDetectionLists& detections, std::int64_t capture_ns,
                                    NavigationHub& hub);
-  /// The last world model planned again and published; nothing before the first frame set.
-  void republish(NavigationHub& hub, const ClientReports* reports = nullptr);
+  /// The last world model planned again and published: its seq; nothing (0) before the first
+  /// frame set.
+  std::uint64_t republish(NavigationHub& hub, const ClientReports* reports = nullptr);
 
-  /// The planner of the next plans (validated first; throws InputError).
+  /// The planner of the next plans (validated first; throws InputError). Another kind plans
+  /// afresh; the same kind goes on from the last route.
   void set_planner(const PlannerOptions& planner);
   PlannerOptions planner() const;
 
   std::vector<FieldCamera> cameras() const;
   /// What the pipeline of the next frame set is made of.
   ServicePipeline pipeline_setup() const;
+  /// How many times the pipeline was replaced (replace_pipeline): a recorder that sees it change
+  /// begins a file with the new setup.
+  std::uint64_t pipeline_generation() const { return generation_; }
   /// Runs the pipeline made of `pipeline` (for the same cameras) from the next frame set on. Any
   /// thread. Throws InputError for another number of cameras.
   void replace_pipeline(ServicePipeline pipeline);
@@ -125,6 +132,7 @@ class UpdatePublisher {
   mutable std::mutex pipeline_mutex_;  // guards pipeline_ and its setup (held while it runs)
   ServicePipeline setup_;
   std::unique_ptr<CourtPipeline> pipeline_;
+  std::atomic<std::uint64_t> generation_{0};
   std::mutex plan_mutex_;  // guards the planner's use, the last world, its time, the route
   PlannerOptions planner_;
   std::optional<WorldModel> last_world_;  // nullopt before the first frame set

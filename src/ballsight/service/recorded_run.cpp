@@ -32,8 +32,6 @@ RecordedRun::RecordedRun(const std::filesystem::path& path)
   for (const mcap::Metadata& m : data.metadata) {
     if (m.name != "ballsight") continue;
     if (const auto it = m.metadata.find("frames"); it != m.metadata.end()) frames_ = it->second;
-    if (const auto it = m.metadata.find("frame_every"); it != m.metadata.end())
-      frame_every_ = std::stoi(it->second);
   }
 }
 
@@ -46,17 +44,22 @@ void RecordedRun::for_each_update(
   std::optional<RecordedUpdate> open;  // the update whose messages are being read
   ClientReports reports;               // as last recorded
   std::int64_t last_capture_ns = -1;
-  const auto flush = [&] {
+  const auto flush = [&](bool last) {
     if (!open) return;
     open->reports = reports;
     open->new_frame_set = open->capture_time_ns != last_capture_ns;
+    open->cut_short = last && !cut_.empty();
     last_capture_ns = open->capture_time_ns;
-    if (!on_update(*open)) throw Stop{};
+    try {
+      if (!on_update(*open)) throw Stop{};
+    } catch (const json::exception& e) {
+      throw InputError(path_.string() + ": update " + std::to_string(open->seq) + ": " + e.what());
+    }
     open.reset();
   };
   const auto on_message = [&](const mcap::Channel& channel, const mcap::Message& message) {
     if (channel.topic == "/court") return;  // the file's, not an update's
-    if (open && open->seq != message.sequence) flush();
+    if (open && open->seq != message.sequence) flush(false);
     const std::string where = path_.string() + ": " + channel.topic + " message of update " +
                               std::to_string(message.sequence);
     try {
@@ -77,11 +80,11 @@ void RecordedRun::for_each_update(
           for (std::size_t c = 0; c < camera_names_.size(); ++c)
             open->frames.cameras.push_back({c, {}, 0, open->seq, {}});
         }
-        const PinholeParams& p = setup_.pipeline.cameras[k].camera.params();
         const json body = json::parse(message.data.bytes);
+        // Any size: a frame of another size than the calibration's goes to the pipeline, which
+        // judges it as it did live (frame_problem).
         open->frames.cameras[k].image =
-            decode_image_bgr(base64_decode(body.at("data").get<std::string>(), where), where,
-                             cv::Size(p.width, p.height));
+            decode_image_bgr(base64_decode(body.at("data").get<std::string>(), where), where);
         open->frames.cameras[k].capture_time_ns = static_cast<std::int64_t>(message.log_time);
       }
     } catch (const json::exception& e) {
@@ -90,7 +93,7 @@ void RecordedRun::for_each_update(
   };
   try {
     reader_.read(on_message);
-    flush();
+    flush(true);
   } catch (const Stop&) {
   }
 }

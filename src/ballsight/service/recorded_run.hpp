@@ -32,6 +32,8 @@ struct RecordedUpdate {
   FrameSet frames;
   /// A new frame set (its capture time differs from the previous update's).
   bool new_frame_set = false;
+  /// The last update of a file cut short (its writer killed): some of its messages may be lost.
+  bool cut_short = false;
 };
 
 class RecordedRun {
@@ -45,12 +47,13 @@ class RecordedRun {
   const std::vector<std::string>& camera_names() const { return camera_names_; }
   /// The frames' encoding as recorded ("jpeg" or "png").
   const std::string& frames() const { return frames_; }
-  int frame_every() const { return frame_every_; }
   /// Why the file ends early ("" when it was closed properly): a run that was killed.
   const std::string& cut() const { return cut_; }
 
-  /// Every update in publishing order, frames decoded; `on_update` returns false to stop. Throws
-  /// InputError naming the file and the message for a message that does not read.
+  /// Every update in publishing order, frames decoded as 8-bit BGR (of any size, which the
+  /// pipeline judges as it did live); `on_update` returns false to stop. Throws InputError
+  /// naming the file and the message for a message that does not read, and for what `on_update`
+  /// finds malformed in an update (a nlohmann::json exception).
   void for_each_update(const std::function<bool(const RecordedUpdate&)>& on_update) const;
 
  private:
@@ -59,7 +62,6 @@ class RecordedRun {
   RunSetup setup_;
   std::vector<std::string> camera_names_;
   std::string frames_ = "jpeg";
-  int frame_every_ = 1;
   std::string cut_;
 };
 

@@ -44,7 +44,8 @@ RunRecorder::RunRecorder(NavigationHub& hub, const CourtService& service, Record
     : hub_(hub),
       service_(service),
       options_(std::move(options)),
-      run_(describe_run(hub, service, options_)) {
+      run_(describe_run(hub, service, options_)),
+      generation_(service.pipeline_generation()) {
   options_.validate();
   begin_file();
   thread_ = std::thread([this] { run(); });
@@ -168,10 +169,14 @@ void RunRecorder::begin_file() {
 }
 
 void RunRecorder::write(const Job& job) {
-  // A file holds at least one update, however small the limit.
-  if (options_.max_mb > 0.0 && updates_in_file_ > 0 &&
-      static_cast<double>(file_->size()) >= options_.max_mb * 1e6) {
+  if (const std::uint64_t generation = service_.pipeline_generation(); generation != generation_) {
+    // A camera re-calibrated: the next file says so, for a replay to use its new pose.
+    generation_ = generation;
+    run_ = describe_run(hub_, service_, options_);
     begin_file();
+  } else if (options_.max_mb > 0.0 && updates_in_file_ > 0 &&
+             static_cast<double>(file_->size()) >= options_.max_mb * 1e6) {
+    begin_file();  // a file holds at least one update, however small the limit
   }
   ++updates_in_file_;
   const NavigationUpdate& u = job.update;

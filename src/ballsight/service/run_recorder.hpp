@@ -85,7 +85,10 @@ class RunRecorder {
   NavigationHub& hub_;
   const CourtService& service_;
   const RecordOptions options_;
-  const RunDescription run_;
+  // The writer thread's after the constructor: described again, and a file begun, when the
+  // service's pipeline is replaced (a camera re-calibrated).
+  RunDescription run_;
+  std::uint64_t generation_ = 0;  // the service's pipeline generation run_ describes
 
   mutable std::mutex mutex_;  // guards the queue, the counts and stopping_
   std::condition_variable wake_;

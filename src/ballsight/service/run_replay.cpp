@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "ballsight/core/closest_pairs.hpp"
-#include "ballsight/service/court_service.hpp"
 #include "ballsight/service/navigation_json.hpp"
 
 namespace ballsight {
@@ -79,6 +78,10 @@ UpdateReplayer::UpdateReplayer(UpdatePublisher& publisher, const PlannerOptions&
 std::uint64_t UpdateReplayer::feed(const RecordedUpdate& recorded, NavigationHub& hub,
                                    std::string& why) {
   why.clear();
+  if (recorded.cut_short) {
+    why = "the file is cut short in it";
+    return 0;
+  }
   const std::string kind = recorded.navigation.at("route").at("planner").get<std::string>();
   if (!fixed_planner_ && !kind.empty() && kind != planner_name(planner_.kind)) {
     if (const std::optional<PlannerKind> k = planner_from_name(kind)) {
@@ -100,8 +103,7 @@ std::uint64_t UpdateReplayer::feed(const RecordedUpdate& recorded, NavigationHub
     why = "it re-planned a world the replay has not seen";
     return 0;
   }
-  publisher_.republish(hub, &recorded.reports);
-  return hub.latest()->seq;
+  return publisher_.republish(hub, &recorded.reports);
 }
 
 ReplayReport replay_run(const RecordedRun& run, const ReplayOptions& options) {

@@ -98,7 +98,15 @@ std::vector<mcap::Attachment> run_setup_attachments(const RunSetup& setup, std::
       {"cameras", cameras},
       {"empty_court", !setup.pipeline.empty_court.empty()},
       {"planner", planner_json(setup.planner)}};
-  std::vector<mcap::Attachment> out{{t, t, kSite, "application/yaml", {site_file_text(setup.site)}},
+  // Its paths absolute: read back, they are not taken for paths beside the recording.
+  Site site = setup.site;
+  for (SiteCamera& camera : site.cameras) {
+    if (!camera.calibration_file.empty())
+      camera.calibration_file = std::filesystem::absolute(camera.calibration_file);
+    if (!camera.source.path.empty())
+      camera.source.path = std::filesystem::absolute(camera.source.path);
+  }
+  std::vector<mcap::Attachment> out{{t, t, kSite, "application/yaml", {site_file_text(site)}},
                                     {t, t, kSetup, "application/json", {description.dump(2)}}};
   for (std::size_t k = 0; k < setup.pipeline.empty_court.size(); ++k) {
     std::vector<std::uint8_t> png;
