@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ballsight/core/angle.hpp"
 #include "ballsight/core/closest_pairs.hpp"
 #include "ballsight/service/navigation_json.hpp"
 
@@ -52,9 +53,8 @@ void compare(const json& recorded, const json& replayed, ReplayedUpdate& out) {
     out.robot = "same";
     out.robot_shift_m = std::hypot(r.at("x_m").get<double>() - q.at("x_m").get<double>(),
                                    r.at("y_m").get<double>() - q.at("y_m").get<double>());
-    const double turn = std::remainder(
-        r.at("heading_deg").get<double>() - q.at("heading_deg").get<double>(), 360.0);
-    out.robot_turn_deg = std::abs(turn);
+    out.robot_turn_deg = std::abs(
+        wrap_deg_180(r.at("heading_deg").get<double>() - q.at("heading_deg").get<double>()));
   } else if (!r.is_null() || !q.is_null()) {
     out.robot = r.is_null() ? "added" : "lost";
   }
